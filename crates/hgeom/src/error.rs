@@ -1,0 +1,52 @@
+//! Typed errors for constructors that check invariants.
+
+use thiserror::Error;
+
+/// Why a geometric object could not be built.
+#[derive(Clone, Debug, Error, PartialEq)]
+pub enum GeomError {
+    /// A coordinate is NaN or infinite.
+    #[error("coordinates must be finite")]
+    NotFinite,
+    /// An h-point must lie strictly inside the unit ball.
+    #[error("point lies on or outside the absolute (|x| = {norm})")]
+    NotInBall {
+        /// Euclidean norm of the offending point.
+        norm: f64,
+    },
+    /// An ideal point must lie on the unit sphere.
+    #[error("ideal point is not on the absolute (|x| = {norm})")]
+    NotOnAbsolute {
+        /// Euclidean norm of the offending point.
+        norm: f64,
+    },
+    /// Two points that must be distinct coincide (or are numerically indistinguishable).
+    #[error("points coincide")]
+    Coincident,
+    /// Three or more points that must span a plane lie on one h-line.
+    #[error("points are collinear")]
+    Collinear,
+    /// A radius or thickness must be positive and finite.
+    #[error("radius must be positive and finite, got {0}")]
+    BadRadius(f64),
+    /// A polygon needs at least three vertices.
+    #[error("a polygon needs at least 3 vertices, got {0}")]
+    TooFewVertices(usize),
+    /// The polygon's vertices do not lie on one h-plane.
+    #[error("vertex {index} is off the polygon's plane by {offset:e}")]
+    NonPlanar {
+        /// Zero-based index of the vertex farthest from the plane.
+        index: usize,
+        /// Its (hyperboloid) offset from the plane.
+        offset: f64,
+    },
+    /// The polygon is not convex, or its vertices are not in cyclic order.
+    #[error("polygon is not convex at vertex {index}")]
+    NonConvex {
+        /// Zero-based index of the vertex where convexity fails.
+        index: usize,
+    },
+    /// A direction vector must be non-zero and finite.
+    #[error("direction must be a non-zero finite vector")]
+    BadDirection,
+}

@@ -1,0 +1,94 @@
+//! The hyperboloid (Lorentz) model: `R^{3,1}` with the time coordinate in `w`.
+//!
+//! Points of H^3 are future vectors with `<X,X> = -1`; tangent vectors at `X`
+//! satisfy `<X,V> = 0` and the form is positive definite on them, so angles,
+//! reflection and refraction in a tangent space are plain Euclidean formulas
+//! with `<.,.>`. h-planes are `{X : <X,N> = 0}` for a unit spacelike `N`.
+
+use glam::DVec4;
+
+/// The Lorentz form `<a,b> = a.x b.x + a.y b.y + a.z b.z - a.w b.w`.
+#[inline]
+pub fn dot(a: DVec4, b: DVec4) -> f64 {
+    a.x * b.x + a.y * b.y + a.z * b.z - a.w * b.w
+}
+
+/// Lorentz norm of a spacelike vector, `sqrt(<v,v>)`; 0 for non-spacelike input.
+#[inline]
+pub fn norm(v: DVec4) -> f64 {
+    dot(v, v).max(0.0).sqrt()
+}
+
+/// A vector Lorentz-orthogonal to `a`, `b` and `c` (the 4-D cross product
+/// with the time sign flipped). It is zero iff the three are linearly dependent.
+pub fn orthogonal_complement(a: DVec4, b: DVec4, c: DVec4) -> DVec4 {
+    // Euclidean generalised cross product: cofactor expansion of det[e; a; b; c].
+    let m_xy = b.x * c.y - b.y * c.x;
+    let m_xz = b.x * c.z - b.z * c.x;
+    let m_xw = b.x * c.w - b.w * c.x;
+    let m_yz = b.y * c.z - b.z * c.y;
+    let m_yw = b.y * c.w - b.w * c.y;
+    let m_zw = b.z * c.w - b.w * c.z;
+    let e = DVec4::new(
+        a.y * m_zw - a.z * m_yw + a.w * m_yz,
+        -(a.x * m_zw - a.z * m_xw + a.w * m_xz),
+        a.x * m_yw - a.y * m_xw + a.w * m_xy,
+        -(a.x * m_yz - a.y * m_xz + a.z * m_xy),
+    );
+    // Euclidean-orthogonal e becomes Lorentz-orthogonal after flipping time.
+    DVec4::new(e.x, e.y, e.z, -e.w)
+}
+
+/// Distance between two hyperboloid points. Uses `2 asinh(|X-Y|_L / 2)`, which
+/// is well conditioned for small distances where `acosh(-<X,Y>)` is not.
+#[inline]
+pub fn distance(x: DVec4, y: DVec4) -> f64 {
+    let d = x - y;
+    2.0 * (0.5 * norm(d)).asinh()
+}
+
+/// The unit tangent vector at `x` pointing along the geodesic towards `y`,
+/// with the distance between them. `None` if they coincide numerically.
+pub fn direction_towards(x: DVec4, y: DVec4) -> Option<(DVec4, f64)> {
+    // Component of y orthogonal to x: y + <x,y> x. Written via the difference
+    // d = y - x as d + <x,d> x (since <x,x> = -1), which avoids cancellation
+    // for nearby points.
+    let d = y - x;
+    let t = d + dot(x, d) * x;
+    let len = norm(t);
+    if len > 0.0 && len.is_finite() {
+        Some((t / len, distance(x, y)))
+    } else {
+        None
+    }
+}
+
+/// The point at arc length `t` along the geodesic from `x` with unit tangent `v`.
+#[inline]
+pub fn geodesic_point(x: DVec4, v: DVec4, t: f64) -> DVec4 {
+    t.cosh() * x + t.sinh() * v
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn complement_is_orthogonal_to_all_three() {
+        let a = DVec4::new(0.1, 0.2, 0.3, 1.2);
+        let b = DVec4::new(-0.4, 0.1, 0.0, 1.1);
+        let c = DVec4::new(0.3, -0.5, 0.7, 1.5);
+        let n = orthogonal_complement(a, b, c);
+        for v in [a, b, c] {
+            assert!(dot(n, v).abs() < 1e-15, "{}", dot(n, v));
+        }
+        assert!(n.length() > 0.1);
+    }
+
+    #[test]
+    fn complement_of_dependent_vectors_is_zero() {
+        let a = DVec4::new(0.1, 0.2, 0.3, 1.2);
+        let b = DVec4::new(-0.4, 0.1, 0.0, 1.1);
+        assert!(orthogonal_complement(a, b, a + b).length() < 1e-15);
+    }
+}

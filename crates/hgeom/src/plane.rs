@@ -1,0 +1,182 @@
+//! h-planes: planes through the origin, or spheres orthogonal to the absolute.
+
+use glam::{DVec3, DVec4};
+
+use crate::error::GeomError;
+use crate::lorentz;
+use crate::point::{Point, Vertex};
+
+/// An oriented h-plane.
+///
+/// Invariant: `normal` is a unit spacelike vector of `R^{3,1}`
+/// (`<N,N> = 1`); the plane is `{X : <X,N> = 0}` and `N` picks its positive
+/// side. At every point of the plane `N` is also the plane's unit normal in the
+/// tangent space, which is what makes ray hits and shading cheap.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HPlane {
+    normal: DVec4,
+}
+
+/// How an h-plane looks in the ball.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum BallShape {
+    /// A Euclidean plane through the origin with this unit normal.
+    Flat {
+        /// Unit normal.
+        normal: DVec3,
+    },
+    /// A sphere orthogonal to the absolute: `|center|^2 = 1 + radius^2`.
+    Sphere {
+        /// Euclidean centre (outside the ball).
+        center: DVec3,
+        /// Euclidean radius.
+        radius: f64,
+    },
+}
+
+impl HPlane {
+    /// A plane from a spacelike normal (normalised here).
+    pub fn from_normal(n: DVec4) -> Result<HPlane, GeomError> {
+        let len = lorentz::norm(n);
+        if !(len.is_finite() && len > 0.0) {
+            return Err(GeomError::BadDirection);
+        }
+        Ok(HPlane { normal: n / len })
+    }
+
+    /// The h-plane through three vertices (interior or ideal).
+    ///
+    /// Oriented so that, seen from the positive side, `a, b, c` run
+    /// counter-clockwise... in the sense of the 4-D orientation; callers that
+    /// need a particular side flip it with [`HPlane::flipped`].
+    pub fn through(a: &Vertex, b: &Vertex, c: &Vertex) -> Result<HPlane, GeomError> {
+        let (xa, xb, xc) = (a.to_hyperboloid(), b.to_hyperboloid(), c.to_hyperboloid());
+        // Differences are better conditioned than the raw vectors for small
+        // triangles; the determinant is unchanged.
+        let n = lorentz::orthogonal_complement(xa, xb - xa, xc - xa);
+        let scale = (xb - xa).length() * (xc - xa).length() * xa.length();
+        if !(lorentz::norm(n) > 1e-14 * scale) {
+            return Err(GeomError::Collinear);
+        }
+        HPlane::from_normal(n)
+    }
+
+    /// The plane through `start` orthogonal to the segment `start -> towards`,
+    /// oriented so `towards` is on the positive side.
+    pub fn orthogonal_at(start: &Point, towards: &Point) -> Result<HPlane, GeomError> {
+        let (v, _) = lorentz::direction_towards(start.to_hyperboloid(), towards.to_hyperboloid())
+            .ok_or(GeomError::Coincident)?;
+        // v is a unit tangent at start, hence a unit spacelike vector with <start,v> = 0.
+        HPlane::from_normal(v)
+    }
+
+    /// The perpendicular bisector plane of the segment `a b`: the points
+    /// equidistant from both; `b` is on the positive side.
+    pub fn bisector(a: &Point, b: &Point) -> Result<HPlane, GeomError> {
+        // <Y,Xa> = <Y,Xb>  <=>  <Y, Xb - Xa> = 0; <Xb - Xa, Xb - Xa> = 4 sinh^2(d/2) > 0.
+        // Orientation: <Xb, Xb - Xa> = -1 - <Xb,Xa> = cosh d - 1 > 0.
+        let n = b.to_hyperboloid() - a.to_hyperboloid();
+        HPlane::from_normal(n).map_err(|_| GeomError::Coincident)
+    }
+
+    /// The unit spacelike normal `N`.
+    #[inline]
+    pub fn normal(&self) -> DVec4 {
+        self.normal
+    }
+
+    /// The same plane with the opposite orientation.
+    pub fn flipped(&self) -> HPlane {
+        HPlane {
+            normal: -self.normal,
+        }
+    }
+
+    /// `<X,N>` for the point's hyperboloid vector `X`: zero on the plane,
+    /// `sinh` of the signed distance to the plane in general.
+    #[inline]
+    pub fn signed_sinh_distance(&self, p: &Point) -> f64 {
+        lorentz::dot(p.to_hyperboloid(), self.normal)
+    }
+
+    /// Signed hyperbolic distance from the point to the plane.
+    pub fn signed_distance(&self, p: &Point) -> f64 {
+        self.signed_sinh_distance(p).asinh()
+    }
+
+    /// The plane as a Euclidean object in the ball. With `N = (n, n_t)`:
+    /// `<X,N> = 0` becomes `|p - n/n_t|^2 = 1/n_t^2`.
+    pub fn ball_shape(&self) -> BallShape {
+        let n = self.normal.truncate();
+        let nt = self.normal.w;
+        if nt == 0.0 {
+            BallShape::Flat {
+                normal: n.normalize(),
+            }
+        } else {
+            BallShape::Sphere {
+                center: n / nt,
+                radius: 1.0 / nt.abs(),
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::distance::distance;
+
+    fn p(x: f64, y: f64, z: f64) -> Point {
+        Point::try_new(DVec3::new(x, y, z)).unwrap()
+    }
+
+    #[test]
+    fn plane_through_three_points_contains_them() {
+        let (a, b, c) = (p(0.1, 0.2, 0.3), p(-0.4, 0.1, 0.0), p(0.3, -0.5, 0.5));
+        let pl = HPlane::through(&a.into(), &b.into(), &c.into()).unwrap();
+        for q in [a, b, c] {
+            assert!(pl.signed_sinh_distance(&q).abs() < 1e-14);
+        }
+        match pl.ball_shape() {
+            BallShape::Sphere { center, radius } => {
+                assert!((center.length_squared() - 1.0 - radius * radius).abs() < 1e-12);
+                for q in [a, b, c] {
+                    assert!(((q.coords() - center).length() - radius).abs() < 1e-12);
+                }
+            }
+            BallShape::Flat { .. } => panic!("expected a sphere"),
+        }
+    }
+
+    #[test]
+    fn collinear_points_are_rejected() {
+        let (a, b, c) = (p(0.1, 0.0, 0.0), p(0.2, 0.0, 0.0), p(-0.3, 0.0, 0.0));
+        assert_eq!(
+            HPlane::through(&a.into(), &b.into(), &c.into()),
+            Err(GeomError::Collinear)
+        );
+    }
+
+    #[test]
+    fn bisector_points_are_equidistant() {
+        let (a, b) = (p(0.1, 0.2, 0.3), p(-0.4, 0.1, 0.0));
+        let bis = HPlane::bisector(&a, &b).unwrap();
+        assert!(bis.signed_distance(&b) > 0.0);
+        // The hyperbolic midpoint lies on it.
+        let mid_x = a.to_hyperboloid() + b.to_hyperboloid();
+        let mid = Point::from_hyperboloid(mid_x / lorentz::dot(mid_x, mid_x).abs().sqrt()).unwrap();
+        assert!(bis.signed_distance(&mid).abs() < 1e-14);
+        assert!((distance(&a, &mid) - distance(&b, &mid)).abs() < 1e-14);
+    }
+
+    #[test]
+    fn orthogonal_plane_contains_start() {
+        let (a, b) = (p(0.1, 0.2, 0.3), p(-0.4, 0.1, 0.0));
+        let pl = HPlane::orthogonal_at(&a, &b).unwrap();
+        assert!(pl.signed_distance(&a).abs() < 1e-15);
+        assert!(pl.signed_distance(&b) > 0.0);
+        // The distance from b to the plane equals d(a,b) since ab is orthogonal to it.
+        assert!((pl.signed_distance(&b) - distance(&a, &b)).abs() < 1e-13);
+    }
+}

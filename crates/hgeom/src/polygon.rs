@@ -1,0 +1,250 @@
+//! Convex planar h-polygons, possibly with ideal vertices.
+
+use glam::DVec4;
+
+use crate::error::GeomError;
+use crate::isometry::Isometry;
+use crate::lorentz;
+use crate::plane::HPlane;
+use crate::point::Vertex;
+use crate::ray::{Hit, Ray};
+
+/// Relative tolerance for planarity and convexity checks of user input
+/// (scene files give coordinates to about 14 digits).
+const SHAPE_TOLERANCE: f64 = 1e-9;
+
+/// A convex planar h-polygon.
+///
+/// Invariants: at least three vertices, all on one h-plane, in cyclic order,
+/// forming a convex polygon. The plane's normal follows the right-hand rule
+/// with the vertex order. `edges[i]` is the unit normal of the h-plane through
+/// edge `i -> i+1` perpendicular to the polygon, pointing inside, so a point
+/// of the polygon's plane is inside iff `<X, edges[i]> >= 0` for all `i`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ConvexPolygon {
+    vertices: Vec<Vertex>,
+    plane: HPlane,
+    edges: Vec<DVec4>,
+}
+
+impl ConvexPolygon {
+    /// Build and validate a polygon from vertices in cyclic order.
+    pub fn try_new(vertices: Vec<Vertex>) -> Result<ConvexPolygon, GeomError> {
+        let n = vertices.len();
+        if n < 3 {
+            return Err(GeomError::TooFewVertices(n));
+        }
+        let xs: Vec<DVec4> = vertices
+            .iter()
+            .map(|v| unit_time(v.to_hyperboloid()))
+            .collect();
+        let centroid = xs.iter().copied().sum::<DVec4>() / n as f64;
+        // Newell-style sum of the oriented normals of the fan (centroid, x_i, x_i+1).
+        let mut normal = DVec4::ZERO;
+        for i in 0..n {
+            let (a, b) = (xs[i], xs[(i + 1) % n]);
+            normal += lorentz::orthogonal_complement(centroid, a - centroid, b - centroid);
+        }
+        let scale: f64 = xs
+            .iter()
+            .map(|x| (*x - centroid).length())
+            .fold(0.0, f64::max);
+        if !(lorentz::norm(normal) > 1e-14 * scale * scale) {
+            return Err(GeomError::Collinear);
+        }
+        let plane = HPlane::from_normal(normal)?;
+        let nrm = plane.normal();
+        for (index, x) in xs.iter().enumerate() {
+            let offset = lorentz::dot(*x, nrm);
+            if offset.abs() > SHAPE_TOLERANCE * x.length().max(scale) {
+                return Err(GeomError::NonPlanar { index, offset });
+            }
+        }
+        let mut edges = Vec::with_capacity(n);
+        for i in 0..n {
+            let (a, b) = (xs[i], xs[(i + 1) % n]);
+            let mut e = lorentz::orthogonal_complement(a, b - a, nrm);
+            let len = lorentz::norm(e);
+            if !(len > 0.0) {
+                return Err(GeomError::Coincident);
+            }
+            e /= len;
+            if lorentz::dot(e, centroid) < 0.0 {
+                e = -e;
+            }
+            for (j, x) in xs.iter().enumerate() {
+                if j != i && j != (i + 1) % n && lorentz::dot(e, *x) < -SHAPE_TOLERANCE * x.length()
+                {
+                    return Err(GeomError::NonConvex { index: j });
+                }
+            }
+            edges.push(e);
+        }
+        // Cyclic order: the fan normals must all agree with the total.
+        for i in 0..n {
+            let (a, b) = (xs[i], xs[(i + 1) % n]);
+            let fan = lorentz::orthogonal_complement(centroid, a - centroid, b - centroid);
+            if lorentz::dot(fan, nrm) < 0.0 {
+                return Err(GeomError::NonConvex { index: (i + 1) % n });
+            }
+        }
+        Ok(ConvexPolygon {
+            vertices,
+            plane,
+            edges,
+        })
+    }
+
+    /// The vertices in order.
+    pub fn vertices(&self) -> &[Vertex] {
+        &self.vertices
+    }
+
+    /// The polygon's oriented plane.
+    pub fn plane(&self) -> HPlane {
+        self.plane
+    }
+
+    /// The image under an isometry. Orientation-reversing maps reverse the
+    /// vertex order so the normal stays the image of the old normal.
+    pub fn transformed(&self, iso: &Isometry) -> ConvexPolygon {
+        let mut vs: Vec<Vertex> = self.vertices.iter().map(|v| iso.apply_vertex(v)).collect();
+        if !iso.preserves_orientation() {
+            vs.reverse();
+        }
+        // An isometric image of a valid polygon is valid; rebuilding keeps the
+        // cached planes exact for the new position.
+        ConvexPolygon::try_new(vs.clone()).unwrap_or_else(|_| ConvexPolygon {
+            vertices: vs,
+            plane: self.plane,
+            edges: self.edges.clone(),
+        })
+    }
+
+    /// The first intersection with `t` in `(t_min, t_max)`.
+    ///
+    /// Along the ray `<X(t),N> = cosh t <X,N> + sinh t <V,N>`, so the plane is
+    /// met at `tanh t = -<X,N>/<V,N>`; a ray parallel to the plane (or meeting
+    /// it only beyond the absolute) misses. The hit's normal is the plane's.
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        let n = self.plane.normal();
+        let vn = lorentz::dot(ray.dir, n);
+        if vn == 0.0 {
+            return None;
+        }
+        let tau = -lorentz::dot(ray.origin, n) / vn;
+        if !(tau.abs() < 1.0) {
+            return None;
+        }
+        let t = tau.atanh();
+        if !(t > t_min && t < t_max) {
+            return None;
+        }
+        let cosh = 1.0 / ((1.0 - tau) * (1.0 + tau)).sqrt();
+        let point = cosh * ray.origin + (tau * cosh) * ray.dir;
+        let slack = -1e-12 * point.w;
+        if self.edges.iter().all(|e| lorentz::dot(point, *e) >= slack) {
+            Some(Hit {
+                t,
+                point,
+                normal: n,
+            })
+        } else {
+            None
+        }
+    }
+}
+
+/// Scale a future vector to time component 1 (the Klein-model representative);
+/// keeps interior and ideal vertices on a common footing.
+fn unit_time(x: DVec4) -> DVec4 {
+    x / x.w
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::point::{IdealPoint, Point};
+    use glam::DVec3;
+
+    fn v(x: f64, y: f64, z: f64) -> Vertex {
+        Point::try_new(DVec3::new(x, y, z)).unwrap().into()
+    }
+
+    fn square() -> ConvexPolygon {
+        // In the plane z = 0.2 shifted... use a plane through the origin: z = 0.
+        ConvexPolygon::try_new(vec![
+            v(0.3, 0.3, 0.0),
+            v(-0.3, 0.3, 0.0),
+            v(-0.3, -0.3, 0.0),
+            v(0.3, -0.3, 0.0),
+        ])
+        .unwrap()
+    }
+
+    #[test]
+    fn normal_follows_right_hand_rule() {
+        let sq = square();
+        let n = sq.plane().normal();
+        assert!((n - DVec4::new(0.0, 0.0, 1.0, 0.0)).length() < 1e-14);
+    }
+
+    #[test]
+    fn ray_hits_inside_and_misses_outside() {
+        let sq = square();
+        let p = Point::try_new(DVec3::new(0.1, 0.1, 0.5)).unwrap();
+        let hit = sq.intersect(&Ray::from_ball(&p, -DVec3::Z), 0.0, f64::INFINITY);
+        assert!(hit.is_some());
+        let q = Point::try_new(DVec3::new(0.5, 0.1, 0.5)).unwrap();
+        assert!(
+            sq.intersect(&Ray::from_ball(&q, -DVec3::Z), 0.0, f64::INFINITY)
+                .is_none()
+        );
+        // Parallel ray misses.
+        assert!(
+            sq.intersect(&Ray::from_ball(&p, DVec3::X), 0.0, f64::INFINITY)
+                .is_none()
+        );
+    }
+
+    #[test]
+    fn ideal_vertices_are_accepted() {
+        let ideal = |x: f64, y: f64| {
+            Vertex::Ideal(IdealPoint::try_new(DVec3::new(x, y, 0.0), 1e-12).unwrap())
+        };
+        let tri = ConvexPolygon::try_new(vec![
+            ideal(1.0, 0.0),
+            ideal(-0.5, 0.75f64.sqrt()),
+            ideal(-0.5, -(0.75f64.sqrt())),
+        ])
+        .unwrap();
+        // The ideal triangle contains the origin.
+        let p = Point::try_new(DVec3::new(0.0, 0.0, 0.5)).unwrap();
+        assert!(
+            tri.intersect(&Ray::from_ball(&p, -DVec3::Z), 0.0, f64::INFINITY)
+                .is_some()
+        );
+    }
+
+    #[test]
+    fn non_convex_and_non_planar_are_rejected() {
+        let bad = ConvexPolygon::try_new(vec![
+            v(0.3, 0.3, 0.0),
+            v(0.0, 0.0, 0.0),
+            v(-0.3, 0.3, 0.0),
+            v(0.0, -0.3, 0.0),
+        ]);
+        assert!(matches!(bad, Err(GeomError::NonConvex { .. })));
+        let tilted = ConvexPolygon::try_new(vec![
+            v(0.3, 0.3, 0.0),
+            v(-0.3, 0.3, 0.0),
+            v(-0.3, -0.3, 0.0),
+            v(0.3, -0.3, 0.1),
+        ]);
+        assert!(matches!(tilted, Err(GeomError::NonPlanar { .. })));
+        assert!(matches!(
+            ConvexPolygon::try_new(vec![v(0.0, 0.0, 0.0), v(0.1, 0.0, 0.0)]),
+            Err(GeomError::TooFewVertices(2))
+        ));
+    }
+}

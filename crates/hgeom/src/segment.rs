@@ -1,0 +1,52 @@
+//! h-segments, and the h-lines they span.
+
+use glam::DVec3;
+
+use crate::distance::distance;
+use crate::error::GeomError;
+use crate::lorentz;
+use crate::point::Point;
+
+/// A geodesic segment between two distinct h-points; its h-line is the whole
+/// geodesic through them, oriented from `start` to `end`.
+///
+/// Invariant: `start != end` (their distance is positive).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Segment {
+    start: Point,
+    end: Point,
+}
+
+impl Segment {
+    /// The segment from `start` to `end`; fails if they coincide.
+    pub fn try_new(start: Point, end: Point) -> Result<Segment, GeomError> {
+        if start.coords() == end.coords() || distance(&start, &end) == 0.0 {
+            return Err(GeomError::Coincident);
+        }
+        Ok(Segment { start, end })
+    }
+
+    /// First end point.
+    pub fn start(&self) -> Point {
+        self.start
+    }
+
+    /// Second end point.
+    pub fn end(&self) -> Point {
+        self.end
+    }
+
+    /// Hyperbolic length.
+    pub fn length(&self) -> f64 {
+        distance(&self.start, &self.end)
+    }
+
+    /// The unit tangent (in ball coordinates, a Euclidean unit vector: the
+    /// model is conformal) of the geodesic at `start`, pointing towards `end`.
+    pub fn direction_at_start(&self) -> DVec3 {
+        let x = self.start.to_hyperboloid();
+        let (v, _) = lorentz::direction_towards(x, self.end.to_hyperboloid())
+            .expect("segment end points are distinct by invariant");
+        crate::ray::ball_direction(x, v)
+    }
+}

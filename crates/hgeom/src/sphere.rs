@@ -1,0 +1,180 @@
+//! h-spheres: the points at hyperbolic distance `r` from a centre.
+
+use glam::{DVec3, DVec4};
+
+use crate::error::GeomError;
+use crate::isometry::Isometry;
+use crate::lorentz;
+use crate::point::Point;
+use crate::ray::{Hit, Ray};
+
+/// An h-sphere with hyperbolic centre and radius.
+///
+/// Invariants: `radius` is positive and finite; the cached hyperboloid centre
+/// and `cosh r` agree with them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HSphere {
+    center: Point,
+    radius: f64,
+    center_h: DVec4,
+    cosh_r: f64,
+}
+
+impl HSphere {
+    /// The sphere of hyperbolic `radius` about `center`.
+    pub fn try_new(center: Point, radius: f64) -> Result<HSphere, GeomError> {
+        if !(radius.is_finite() && radius > 0.0) {
+            return Err(GeomError::BadRadius(radius));
+        }
+        Ok(HSphere {
+            center,
+            radius,
+            center_h: center.to_hyperboloid(),
+            cosh_r: radius.cosh(),
+        })
+    }
+
+    /// Hyperbolic centre.
+    pub fn center(&self) -> Point {
+        self.center
+    }
+
+    /// Hyperbolic radius.
+    pub fn radius(&self) -> f64 {
+        self.radius
+    }
+
+    /// The Euclidean sphere in the ball: centre `c (1-T^2)/(1-a^2 T^2)` and
+    /// radius `T (1-a^2)/(1-a^2 T^2)`, with `T = tanh(r/2)` and `a = |c|`.
+    ///
+    /// Evaluated as `1 - a^2 T^2 = (1 - T^2) + T^2 (1 - a^2)`, a sum of
+    /// non-negative terms, with the accurate gap for `1 - a^2`.
+    pub fn euclidean(&self) -> (DVec3, f64) {
+        let t = (0.5 * self.radius).tanh();
+        let one_minus_t2 = 1.0 / (0.5 * self.radius).cosh().powi(2);
+        let gap = self.center.gap();
+        let denom = one_minus_t2 + t * t * gap;
+        (
+            self.center.coords() * (one_minus_t2 / denom),
+            t * gap / denom,
+        )
+    }
+
+    /// The image under an isometry (spheres map to spheres of the same radius).
+    pub fn transformed(&self, iso: &Isometry) -> HSphere {
+        HSphere {
+            center: iso.apply(&self.center),
+            radius: self.radius,
+            center_h: iso.apply(&self.center).to_hyperboloid(),
+            cosh_r: self.cosh_r,
+        }
+    }
+
+    /// True if the point is strictly inside.
+    pub fn contains(&self, x: DVec4) -> bool {
+        -lorentz::dot(x, self.center_h) < self.cosh_r
+    }
+
+    /// The first intersection with `t` in `(t_min, t_max)`.
+    ///
+    /// Along the ray `-<X(t),C> = A cosh t + B sinh t` with `A = -<X,C>`,
+    /// `B = -<V,C>`; setting it to `cosh r` and `u = e^t` gives
+    /// `(A+B) u^2 - 2 cosh(r) u + (A-B) = 0`, solved in the cancellation-free
+    /// form. `A ± B > 0` always (`X ± V` are future null vectors), so the
+    /// roots are positive and `t = ln u` is defined. A tangent ray (zero
+    /// discriminant) touches at one point; no input gives NaN.
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        let a = -lorentz::dot(ray.origin, self.center_h);
+        let b = -lorentz::dot(ray.dir, self.center_h);
+        let k = self.cosh_r;
+        let disc = k * k - (a - b) * (a + b);
+        if !(disc >= 0.0) {
+            return None;
+        }
+        let root = disc.sqrt();
+        let big = k + root;
+        let near = ((a - b) / big).ln();
+        let far = (big / (a + b)).ln();
+        let t = if near > t_min {
+            near
+        } else if far > t_min {
+            far
+        } else {
+            return None;
+        };
+        if !(t < t_max) {
+            return None;
+        }
+        let point = ray.at(t);
+        Some(Hit {
+            t,
+            point,
+            normal: self.normal_at(point),
+        })
+    }
+
+    /// Outward unit normal at a point of the sphere (a tangent vector there).
+    pub fn normal_at(&self, x: DVec4) -> DVec4 {
+        match lorentz::direction_towards(x, self.center_h) {
+            Some((towards_center, _)) => -towards_center,
+            // Only reachable for a degenerate sphere; any unit tangent will do.
+            None => DVec4::X,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::distance::distance;
+
+    #[test]
+    fn euclidean_form_matches_spec_formula() {
+        let c = Point::try_new(DVec3::new(0.3, 0.0, 0.0)).unwrap();
+        let s = HSphere::try_new(c, 0.5).unwrap();
+        let (ec, er) = s.euclidean();
+        // The two Euclidean extreme points on the diameter are at hyperbolic
+        // distance r from the centre.
+        for sign in [-1.0, 1.0] {
+            let q = Point::try_new(ec + DVec3::X * er * sign).unwrap();
+            assert!((distance(&q, &c) - 0.5).abs() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn ray_from_centre_hits_at_radius() {
+        let c = Point::try_new(DVec3::new(0.1, 0.2, -0.1)).unwrap();
+        let s = HSphere::try_new(c, 0.7).unwrap();
+        let ray = Ray::from_ball(&c, DVec3::new(0.3, -1.0, 0.2));
+        let hit = s.intersect(&ray, 1e-9, f64::INFINITY).unwrap();
+        assert!((hit.t - 0.7).abs() < 1e-13);
+        // The normal is the ray's own tangent there.
+        assert!((hit.normal - ray.tangent_at(hit.t)).length() < 1e-12);
+    }
+
+    #[test]
+    fn miss_and_tangent() {
+        let c = Point::try_new(DVec3::new(0.0, 0.0, 0.5)).unwrap();
+        let s = HSphere::try_new(c, 0.2).unwrap();
+        assert!(
+            s.intersect(&Ray::from_origin(DVec3::X), 0.0, f64::INFINITY)
+                .is_none()
+        );
+        let hit = s
+            .intersect(&Ray::from_origin(DVec3::Z), 0.0, f64::INFINITY)
+            .unwrap();
+        let expect = c.distance_from_origin() - 0.2;
+        assert!((hit.t - expect).abs() < 1e-14);
+        assert!(
+            s.intersect(&Ray::from_origin(-DVec3::Z), 0.0, f64::INFINITY)
+                .is_none()
+        );
+    }
+
+    #[test]
+    fn bad_radius_is_rejected() {
+        assert!(HSphere::try_new(Point::ORIGIN, -1.0).is_err());
+        assert!(HSphere::try_new(Point::ORIGIN, 0.0).is_err());
+        assert!(HSphere::try_new(Point::ORIGIN, f64::NAN).is_err());
+    }
+}
