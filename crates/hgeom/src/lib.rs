@@ -34,6 +34,10 @@
 //! assert!((hit.t - (c.distance_from_origin() - 0.2)).abs() < 1e-14);
 //! ```
 
+// `!(x > 0.0)` is deliberate throughout: it sends NaN down the failure path,
+// which `x <= 0.0` would not.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 pub mod accurate;
 mod distance;
 mod error;

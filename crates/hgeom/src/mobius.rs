@@ -24,7 +24,7 @@ fn denominator(u: DVec3, v: DVec3, gap_u: f64, gap_v: f64) -> f64 {
 /// exact identity `1 - |u(+)v|^2 = gap_u gap_v / D`. `v` may be ideal
 /// (`gap_v = 0`): the result is then ideal too.
 #[inline]
-pub(crate) fn add_raw(u: DVec3, gap_u: f64, v: DVec3, gap_v: f64) -> (DVec3, f64) {
+pub fn add_raw(u: DVec3, gap_u: f64, v: DVec3, gap_v: f64) -> (DVec3, f64) {
     let s = (u + v).length_squared();
     let d = s + gap_u * gap_v;
     let coords = ((s + gap_u) * u + gap_u * v) / d;

@@ -35,7 +35,7 @@ pub enum Platonic {
     Icosahedron,
 }
 
-const PHI: f64 = 1.618_033_988_749_894_8;
+const PHI: f64 = 1.618_033_988_749_895;
 
 impl Platonic {
     /// Every Platonic solid, in the order of their face counts.

@@ -1,0 +1,93 @@
+//! The canonical frame (SPEC 3.1): the isometry that puts the eye at the
+//! origin, the view direction along +z and up along +y.
+
+use hgeom::glam::{DMat3, DVec3};
+use hgeom::{Isometry, Point};
+use hscene_lang::ir::Camera;
+
+use crate::error::RenderError;
+
+/// The camera in canonical form.
+#[derive(Clone, Copy, Debug)]
+pub struct CanonicalCamera {
+    /// Maps the scene into the canonical frame.
+    pub to_canonical: Isometry,
+    /// Euclidean distance from the origin to the view plane in the canonical
+    /// frame, `tanh(d/2)` for the hyperbolic eye-target distance `d`.
+    pub view_distance: f64,
+}
+
+impl CanonicalCamera {
+    /// Build the canonical frame.
+    ///
+    /// First the transvection taking the eye to the origin; there the view
+    /// direction is the diameter towards the moved target, and up is the
+    /// direction towards the moved up point, made orthogonal to it (default:
+    /// the image of the ball's `+y` at the eye). Then the rotation taking
+    /// (right, up, view) to (x, y, z), with right = up x view. Screen x grows
+    /// to the right, y upwards, z away from the eye (the convention of the
+    /// thesis and of POV-Ray).
+    pub fn new(camera: &Camera) -> Result<CanonicalCamera, RenderError> {
+        let to_origin = Isometry::transvection_from_origin(camera.eye).inverse();
+        let target = to_origin.apply(&camera.target);
+        let view = target.coords().normalize();
+        let up_hint = match &camera.up {
+            Some(u) => to_origin.apply(u).coords(),
+            None => to_origin.apply_direction(&camera.eye, DVec3::Y),
+        };
+        let up = (up_hint - view * up_hint.dot(view)).normalize();
+        let right = up.cross(view);
+        if !(view.is_finite() && up.is_finite() && right.is_finite()) {
+            return Err(RenderError::DegenerateCamera);
+        }
+        // Rows right, up, view: maps those vectors to x, y, z.
+        let rotation = DMat3::from_cols(right, up, view).transpose();
+        let to_canonical = Isometry::orthogonal(rotation).compose(&to_origin);
+        Ok(CanonicalCamera {
+            to_canonical,
+            view_distance: target.coords().length(),
+        })
+    }
+
+    /// The view target's image, on the +z axis.
+    pub fn target_in_frame(&self, camera: &Camera) -> Point {
+        self.to_canonical.apply(&camera.target)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(x: f64, y: f64, z: f64) -> Point {
+        Point::try_new(DVec3::new(x, y, z)).unwrap()
+    }
+
+    #[test]
+    fn default_camera_is_the_identity() {
+        let cam = Camera {
+            eye: Point::ORIGIN,
+            target: p(0.0, 0.0, 0.1),
+            up: None,
+        };
+        let c = CanonicalCamera::new(&cam).unwrap();
+        let q = p(0.3, -0.2, 0.4);
+        assert!((c.to_canonical.apply(&q).coords() - q.coords()).length() < 1e-15);
+        assert!((c.view_distance - 0.1).abs() < 1e-15);
+    }
+
+    #[test]
+    fn moved_camera_sees_target_on_axis_and_up_upwards() {
+        let cam = Camera {
+            eye: p(0.2, 0.1, -0.3),
+            target: p(-0.1, 0.4, 0.2),
+            up: Some(p(0.2, 0.6, -0.3)),
+        };
+        let c = CanonicalCamera::new(&cam).unwrap();
+        assert!(c.to_canonical.apply(&cam.eye).coords().length() < 1e-15);
+        let t = c.target_in_frame(&cam).coords();
+        assert!(t.x.abs() < 1e-14 && t.y.abs() < 1e-14 && t.z > 0.0);
+        let u = c.to_canonical.apply(&cam.up.unwrap()).coords();
+        assert!(u.y > 0.0 && u.x.abs() < 1e-14);
+    }
+}

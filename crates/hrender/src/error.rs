@@ -1,0 +1,43 @@
+//! Render errors.
+
+use std::path::PathBuf;
+
+use thiserror::Error;
+
+/// Why a render or an image write failed.
+#[derive(Debug, Error)]
+pub enum RenderError {
+    /// The camera's view and up directions do not define a frame.
+    #[error("the camera's view and up directions are degenerate")]
+    DegenerateCamera,
+    /// The output extension is not one we write.
+    #[error("unsupported output format `{0}`: use .png, .tif or .tiff")]
+    UnsupportedFormat(String),
+    /// The requested sample depth does not exist for the output format.
+    #[error("{format} output does not support {depth}")]
+    UnsupportedDepth {
+        /// Output format.
+        format: &'static str,
+        /// Requested depth.
+        depth: &'static str,
+    },
+    /// Creating, writing or renaming the output failed.
+    #[error("cannot write {path}: {source}")]
+    Io {
+        /// The file being written.
+        path: PathBuf,
+        /// The underlying error.
+        source: std::io::Error,
+    },
+    /// The encoder failed.
+    #[error("cannot encode {path}: {message}")]
+    Encode {
+        /// The file being written.
+        path: PathBuf,
+        /// Encoder message.
+        message: String,
+    },
+    /// Building the worker pool failed.
+    #[error("cannot start worker threads: {0}")]
+    Threads(String),
+}

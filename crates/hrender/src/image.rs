@@ -1,0 +1,74 @@
+//! The rendered image: linear, unclamped RGB.
+
+/// A linear RGB image with unclamped (high-dynamic-range) `f32` samples,
+/// stored row-major from the top-left corner.
+///
+/// Invariant: `pixels.len() == width * height` and every sample is finite.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Image {
+    width: u32,
+    height: u32,
+    pixels: Vec<[f32; 3]>,
+}
+
+impl Image {
+    /// An image from its pixels. Panics if the size does not match (a
+    /// programming error, never input-dependent).
+    pub fn from_pixels(width: u32, height: u32, pixels: Vec<[f32; 3]>) -> Image {
+        assert_eq!(
+            pixels.len(),
+            width as usize * height as usize,
+            "pixel count must match the size"
+        );
+        Image {
+            width,
+            height,
+            pixels,
+        }
+    }
+
+    /// Columns.
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// Rows.
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// All pixels, row-major.
+    pub fn pixels(&self) -> &[[f32; 3]] {
+        &self.pixels
+    }
+
+    /// The pixel at column `x`, row `y` (row 0 is the top).
+    pub fn get(&self, x: u32, y: u32) -> [f32; 3] {
+        self.pixels[y as usize * self.width as usize + x as usize]
+    }
+
+    /// Samples clamped to `[0, 1]` and quantised to 8 bits.
+    pub fn to_rgb8(&self) -> Vec<u8> {
+        self.pixels
+            .iter()
+            .flat_map(|p| p.map(|c| quantize(c, 255.0) as u8))
+            .collect()
+    }
+
+    /// Samples clamped to `[0, 1]` and quantised to 16 bits.
+    pub fn to_rgb16(&self) -> Vec<u16> {
+        self.pixels
+            .iter()
+            .flat_map(|p| p.map(|c| quantize(c, 65535.0) as u16))
+            .collect()
+    }
+
+    /// The unclamped samples, interleaved.
+    pub fn to_rgb32f(&self) -> Vec<f32> {
+        self.pixels.iter().flatten().copied().collect()
+    }
+}
+
+fn quantize(c: f32, max: f32) -> f32 {
+    (c.clamp(0.0, 1.0) * max).round()
+}

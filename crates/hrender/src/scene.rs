@@ -1,0 +1,116 @@
+//! The scene prepared for tracing: everything moved into the canonical frame
+//! once, in f64, so near the eye every quantity is small and well conditioned.
+
+use hgeom::glam::DVec4;
+use hgeom::{ConvexPolygon, HSphere, Hit, Isometry, Polyhedron, Ray};
+use hscene_lang::ir::{self, Material, Rgb, Scene};
+
+/// A traceable shape in the canonical frame.
+#[derive(Clone, Debug)]
+pub enum Primitive {
+    /// An h-sphere.
+    Sphere(HSphere),
+    /// A convex polygon.
+    Polygon(ConvexPolygon),
+    /// A polyhedral surface.
+    Polyhedron(Polyhedron),
+}
+
+impl Primitive {
+    fn from_shape(shape: &ir::Shape, iso: &Isometry) -> Primitive {
+        match shape {
+            ir::Shape::Sphere(s) => Primitive::Sphere(s.transformed(iso)),
+            ir::Shape::Polygon(p) => Primitive::Polygon(p.transformed(iso)),
+            ir::Shape::Polyhedron(p) => Primitive::Polyhedron(p.transformed(iso)),
+        }
+    }
+
+    /// Nearest hit in `(t_min, t_max)`.
+    #[inline]
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        match self {
+            Primitive::Sphere(s) => s.intersect(ray, t_min, t_max),
+            Primitive::Polygon(p) => p.intersect(ray, t_min, t_max),
+            Primitive::Polyhedron(p) => p.intersect(ray, t_min, t_max),
+        }
+    }
+}
+
+/// An object ready for tracing.
+#[derive(Clone, Debug)]
+pub struct PreparedObject {
+    /// Geometry in the canonical frame.
+    pub primitive: Primitive,
+    /// Index into the materials.
+    pub material: usize,
+}
+
+/// A point light on the hyperboloid.
+#[derive(Clone, Copy, Debug)]
+pub struct PreparedLight {
+    /// Position.
+    pub position: DVec4,
+    /// Diffuse intensity.
+    pub diffuse: Rgb,
+    /// Specular intensity.
+    pub specular: Rgb,
+}
+
+/// The whole scene in the canonical frame.
+#[derive(Clone, Debug)]
+pub struct PreparedScene {
+    /// Objects.
+    pub objects: Vec<PreparedObject>,
+    /// Lights.
+    pub lights: Vec<PreparedLight>,
+    /// Materials.
+    pub materials: Vec<Material>,
+    /// Background colour.
+    pub background: Rgb,
+    /// Ambient light.
+    pub ambient: Rgb,
+    /// Maximum bounce depth.
+    pub max_depth: u32,
+}
+
+impl PreparedScene {
+    /// Move every object and light by `to_canonical`.
+    pub fn new(scene: &Scene, to_canonical: &Isometry) -> PreparedScene {
+        PreparedScene {
+            objects: scene
+                .objects
+                .iter()
+                .map(|o| PreparedObject {
+                    primitive: Primitive::from_shape(&o.shape, to_canonical),
+                    material: o.material.0,
+                })
+                .collect(),
+            lights: scene
+                .lights
+                .iter()
+                .map(|l| PreparedLight {
+                    position: to_canonical.apply(&l.position).to_hyperboloid(),
+                    diffuse: l.diffuse,
+                    specular: l.specular,
+                })
+                .collect(),
+            materials: scene.materials.clone(),
+            background: scene.settings.background,
+            ambient: scene.settings.ambient,
+            max_depth: scene.settings.recursion_depth,
+        }
+    }
+
+    /// The nearest hit and the index of the object hit.
+    pub fn nearest(&self, ray: &Ray, t_min: f64) -> Option<(Hit, usize)> {
+        let mut best = None;
+        let mut limit = f64::INFINITY;
+        for (i, o) in self.objects.iter().enumerate() {
+            if let Some(hit) = o.primitive.intersect(ray, t_min, limit) {
+                limit = hit.t;
+                best = Some((hit, i));
+            }
+        }
+        best
+    }
+}

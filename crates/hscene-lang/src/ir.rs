@@ -1,0 +1,215 @@
+//! The typed intermediate representation: a fully resolved scene.
+//!
+//! Everything here is hyperbolic data in ball coordinates: every reference is
+//! resolved, every transformation applied, every default filled in. The IR
+//! carries no source text and no spans; the renderer needs nothing else.
+
+use hgeom::{ConvexPolygon, HSphere, IdealPoint, Point, Polyhedron};
+
+/// A linear RGB triple.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Rgb {
+    /// Red.
+    pub r: f64,
+    /// Green.
+    pub g: f64,
+    /// Blue.
+    pub b: f64,
+}
+
+impl Rgb {
+    /// Black.
+    pub const BLACK: Rgb = Rgb::new(0.0, 0.0, 0.0);
+
+    /// A colour from its components.
+    pub const fn new(r: f64, g: f64, b: f64) -> Rgb {
+        Rgb { r, g, b }
+    }
+}
+
+/// The pixel net (SPEC 3.2), numbered as in the thesis.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Net {
+    /// Net 0: the Euclidean grid on the plane `z = f` (a pinhole camera).
+    Euclidean,
+    /// Net 1: intersections of two pencils of hyperparallel h-lines.
+    HyperparallelLines,
+    /// Net 2: a Euclidean grid on the great disk, moved onto the view plane.
+    GreatDisk,
+    /// Net 3: nodes of two families of h-equidistant curves, one per pixel.
+    Equidistant,
+    /// Net 4: net 3 nodes, shown on the great disk by interpolation.
+    EquidistantInterpolated,
+}
+
+impl Net {
+    /// All nets, by index.
+    pub const ALL: [Net; 5] = [
+        Net::Euclidean,
+        Net::HyperparallelLines,
+        Net::GreatDisk,
+        Net::Equidistant,
+        Net::EquidistantInterpolated,
+    ];
+
+    /// The thesis's index `0..=4`.
+    pub fn index(self) -> u8 {
+        match self {
+            Net::Euclidean => 0,
+            Net::HyperparallelLines => 1,
+            Net::GreatDisk => 2,
+            Net::Equidistant => 3,
+            Net::EquidistantInterpolated => 4,
+        }
+    }
+
+    /// The net with the thesis's index.
+    pub fn from_index(i: u64) -> Option<Net> {
+        Net::ALL.get(usize::try_from(i).ok()?).copied()
+    }
+}
+
+/// Image size in pixels. Invariant: both positive.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Resolution {
+    /// Columns.
+    pub width: u32,
+    /// Rows.
+    pub height: u32,
+}
+
+/// Size of the sampled window on the view plane (Euclidean units for nets 0
+/// and 2, hyperbolic lengths for nets 1, 3 and 4). Invariant: both positive.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Window {
+    /// Horizontal extent.
+    pub width: f64,
+    /// Vertical extent.
+    pub height: f64,
+}
+
+/// Global render settings.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Settings {
+    /// Maximum number of reflection/refraction bounces.
+    pub recursion_depth: u32,
+    /// Output size.
+    pub resolution: Resolution,
+    /// Window on the view plane.
+    pub window: Window,
+    /// Pixel net.
+    pub net: Net,
+    /// Colour of rays that leave the scene.
+    pub background: Rgb,
+    /// Ambient light intensity `I_a`.
+    pub ambient: Rgb,
+}
+
+/// The observer.
+///
+/// Invariants: `target != eye`, and `up` (when given) does not lie on the
+/// h-line through `eye` and `target`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Camera {
+    /// The eye point.
+    pub eye: Point,
+    /// The view target: the view h-plane passes through it, orthogonal to the
+    /// view direction.
+    pub target: Point,
+    /// A point towards which "up" points; `None` means the ball's `+y`
+    /// direction at the eye.
+    pub up: Option<Point>,
+}
+
+/// A Phong material (thesis Eq. 4/7 coefficients).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Material {
+    /// Optional name (`#glass`).
+    pub name: Option<String>,
+    /// Ambient reflectance per channel.
+    pub ambient: Rgb,
+    /// Diffuse reflectance per channel.
+    pub diffuse: Rgb,
+    /// Specular reflectance per channel.
+    pub specular: Rgb,
+    /// Mirror reflection coefficient `k_r` (the thesis's `alpha`).
+    pub reflection: f64,
+    /// Transmission coefficient `k_t` (the thesis's `trans`).
+    pub transmission: f64,
+    /// Phong exponent `n`.
+    pub shininess: f64,
+    /// Index of refraction.
+    pub refraction: f64,
+}
+
+/// Index into [`Scene::materials`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct MaterialId(pub usize);
+
+/// A point light.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Light {
+    /// Position.
+    pub position: Point,
+    /// Diffuse intensity per channel.
+    pub diffuse: Rgb,
+    /// Specular intensity per channel.
+    pub specular: Rgb,
+}
+
+/// The geometry of a scene object.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Shape {
+    /// An h-sphere.
+    Sphere(HSphere),
+    /// A convex planar h-polygon.
+    Polygon(ConvexPolygon),
+    /// A polyhedral surface (faces oriented outward).
+    Polyhedron(Polyhedron),
+}
+
+/// A renderable object.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Object {
+    /// Geometry.
+    pub shape: Shape,
+    /// Surface material.
+    pub material: MaterialId,
+}
+
+/// The final position of a declared point, for inspection (`--emit ir`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PointRecord {
+    /// 1-based number in declaration order.
+    pub number: usize,
+    /// Name, if declared with one.
+    pub name: Option<String>,
+    /// Final position after all transformations.
+    pub position: PointPosition,
+}
+
+/// An h-point or an ideal point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum PointPosition {
+    /// Inside the ball.
+    Interior(Point),
+    /// On the absolute.
+    Ideal(IdealPoint),
+}
+
+/// A fully resolved scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scene {
+    /// Global settings.
+    pub settings: Settings,
+    /// The observer.
+    pub camera: Camera,
+    /// Materials, indexed by [`MaterialId`].
+    pub materials: Vec<Material>,
+    /// Point lights.
+    pub lights: Vec<Light>,
+    /// Objects.
+    pub objects: Vec<Object>,
+    /// Every declared point with its final position.
+    pub points: Vec<PointRecord>,
+}

@@ -1,0 +1,1446 @@
+//! Semantic analysis: resolve references, validate, apply transformations,
+//! and lower the syntax tree to the [`ir`](crate::ir).
+//!
+//! Sections are processed in dependency order whatever their order in the
+//! file: `Points` and `BRDFs` first, then `Transformations` (which move
+//! points, in statement order), then `Lights`, `Objects` and `Globals`, which
+//! see the final positions. Every problem found is reported; lowering goes on
+//! past errors so one run reports as much as it can.
+
+use std::collections::HashMap;
+
+use hgeom::glam::DVec3;
+use hgeom::{
+    ConvexPolygon, GeomError, HPlane, HSphere, IdealPoint, Isometry, Platonic, Point, Polyhedron,
+    Segment, Vertex, lorentz,
+};
+
+use crate::diagnostic::{Code, Diagnostic, Span};
+use crate::ir::{
+    Camera, Light, Material, MaterialId, Net, Object, PointPosition, PointRecord, Resolution, Rgb,
+    Scene, Settings, Shape, Window,
+};
+use crate::syntax::{Clause, Ident, RefSigil, RefTarget, Reference, Section, SourceFile, Value};
+
+/// Section names, in processing order.
+const SECTIONS: [&str; 6] = [
+    "Points",
+    "BRDFs",
+    "Transformations",
+    "Lights",
+    "Objects",
+    "Globals",
+];
+
+/// How close to the absolute a typed point may come before its decimal
+/// rounding alone moves it by more than about 1e-6 in hyperbolic distance.
+const NEAR_ABSOLUTE_GAP: f64 = 1e-10;
+
+/// How far from the unit sphere a typed point may be and still count as ideal.
+const IDEAL_TOLERANCE: f64 = 1e-12;
+
+/// Largest accepted image side, to keep allocations sane.
+const MAX_RESOLUTION: u64 = 32_768;
+
+/// Default settings: the thesis's Appendix A values, at a smaller resolution.
+fn default_settings() -> Settings {
+    Settings {
+        recursion_depth: 1,
+        resolution: Resolution {
+            width: 512,
+            height: 512,
+        },
+        window: Window {
+            width: 0.15,
+            height: 0.15,
+        },
+        net: Net::Euclidean,
+        background: Rgb::BLACK,
+        ambient: Rgb::new(0.1, 0.1, 0.1),
+    }
+}
+
+/// The default view target: the thesis's `to = (0,0,0.1)`.
+const DEFAULT_TARGET: DVec3 = DVec3::new(0.0, 0.0, 0.1);
+
+struct PointEntry {
+    name: Option<String>,
+    span: Span,
+    position: Option<PointPosition>,
+    used: bool,
+}
+
+struct MaterialEntry {
+    material: Material,
+    span: Span,
+    used: bool,
+}
+
+struct Lowerer<'d> {
+    diags: &'d mut Vec<Diagnostic>,
+    points: Vec<PointEntry>,
+    point_names: HashMap<String, usize>,
+    materials: Vec<MaterialEntry>,
+    material_names: HashMap<String, usize>,
+    lines: Vec<Option<Segment>>,
+    line_names: HashMap<String, usize>,
+    planes: Vec<Option<HPlane>>,
+    plane_names: HashMap<String, usize>,
+    lights: Vec<(Light, Span)>,
+    objects: Vec<(Object, Span)>,
+    settings: Settings,
+    camera_parts: CameraParts,
+}
+
+#[derive(Default)]
+struct CameraParts {
+    eye: Option<(Point, Span)>,
+    target: Option<(Point, Span)>,
+    up: Option<(Point, Span)>,
+}
+
+/// Lower a parsed file. Returns the scene only if no error was reported
+/// (by the parser or here).
+pub(crate) fn lower(file: &SourceFile, diags: &mut Vec<Diagnostic>) -> Option<Scene> {
+    let mut lw = Lowerer {
+        diags,
+        points: Vec::new(),
+        point_names: HashMap::new(),
+        materials: Vec::new(),
+        material_names: HashMap::new(),
+        lines: Vec::new(),
+        line_names: HashMap::new(),
+        planes: Vec::new(),
+        plane_names: HashMap::new(),
+        lights: Vec::new(),
+        objects: Vec::new(),
+        settings: default_settings(),
+        camera_parts: CameraParts::default(),
+    };
+    lw.check_section_names(file);
+    for name in SECTIONS {
+        for section in file.sections.iter().filter(|s| s.name.text == name) {
+            match name {
+                "Points" => lw.points_section(section),
+                "BRDFs" => lw.brdfs_section(section),
+                "Transformations" => lw.transformations_section(section),
+                "Lights" => lw.lights_section(section),
+                "Objects" => lw.objects_section(section),
+                _ => lw.globals_section(section),
+            }
+        }
+    }
+    let camera = lw.camera();
+    if let Some(camera) = &camera {
+        lw.lint_scene(camera);
+    }
+    lw.lint_unused();
+    if lw.diags.iter().any(Diagnostic::is_error) {
+        return None;
+    }
+    Some(Scene {
+        settings: lw.settings,
+        camera: camera?,
+        materials: lw.materials.into_iter().map(|m| m.material).collect(),
+        lights: lw.lights.into_iter().map(|(l, _)| l).collect(),
+        objects: lw.objects.into_iter().map(|(o, _)| o).collect(),
+        points: lw
+            .points
+            .into_iter()
+            .enumerate()
+            .filter_map(|(i, p)| {
+                Some(PointRecord {
+                    number: i + 1,
+                    name: p.name,
+                    position: p.position?,
+                })
+            })
+            .collect(),
+    })
+}
+
+/// "1 value" / "3 values".
+fn count(n: usize, what: &str) -> String {
+    if n == 1 {
+        format!("1 {what}")
+    } else {
+        format!("{n} {what}s")
+    }
+}
+
+impl Lowerer<'_> {
+    fn report(&mut self, d: Diagnostic) {
+        self.diags.push(d);
+    }
+
+    fn error(&mut self, code: Code, span: Span, message: impl Into<String>) {
+        self.report(Diagnostic::new(code, span, message));
+    }
+
+    // ----- sections -------------------------------------------------------
+
+    fn check_section_names(&mut self, file: &SourceFile) {
+        let mut seen: HashMap<&str, Span> = HashMap::new();
+        for section in &file.sections {
+            let name = section.name.text.as_str();
+            if !SECTIONS.contains(&name) {
+                let mut d = Diagnostic::new(
+                    Code::UnknownSection,
+                    section.name.span,
+                    format!("unknown section `{name}`"),
+                );
+                d = match SECTIONS.iter().find(|s| s.eq_ignore_ascii_case(name)) {
+                    Some(s) => d.with_help(format!(
+                        "section names are case-sensitive: did you mean `{s}`?"
+                    )),
+                    None => d.with_help(format!("the sections are {}", SECTIONS.join(", "))),
+                };
+                self.report(d);
+            } else if let Some(first) = seen.get(name) {
+                let first = *first;
+                self.report(
+                    Diagnostic::new(
+                        Code::DuplicateSection,
+                        section.name.span,
+                        format!("section `{name}` appears more than once; its statements are merged in order"),
+                    )
+                    .with_help(format!("first `{name}` section starts at byte {}", first.start)),
+                );
+            } else {
+                seen.insert(name, section.name.span);
+            }
+        }
+    }
+
+    fn points_section(&mut self, section: &Section) {
+        for st in &section.statements {
+            let (name, value) = match (st.label.as_ref(), st.clauses.as_slice()) {
+                (label, [Clause::Value(v)]) => (label.cloned(), v),
+                (None, [Clause::Assign { key, value, .. }]) => (Some(key.clone()), value),
+                _ => {
+                    self.report(
+                        Diagnostic::new(
+                            Code::WrongType,
+                            st.span,
+                            "a point is written `(x, y, z);` or `name = (x, y, z);`",
+                        )
+                        .with_label("not a point declaration"),
+                    );
+                    // Keep numbering aligned with what the user counted.
+                    self.points.push(PointEntry {
+                        name: None,
+                        span: st.span,
+                        position: None,
+                        used: true,
+                    });
+                    continue;
+                }
+            };
+            let position = self
+                .point_literal(value)
+                .and_then(|(v, span)| self.classify_point(v, span));
+            if let Some(name) = &name {
+                self.declare_name(NameKind::Point, name);
+            }
+            self.points.push(PointEntry {
+                name: name.map(|n| n.text),
+                span: st.span,
+                position,
+                used: false,
+            });
+        }
+    }
+
+    fn brdfs_section(&mut self, section: &Section) {
+        for st in &section.statements {
+            let mut m = Material {
+                name: st.label.as_ref().map(|l| l.text.clone()),
+                ambient: Rgb::BLACK,
+                diffuse: Rgb::BLACK,
+                specular: Rgb::BLACK,
+                reflection: 0.0,
+                transmission: 0.0,
+                shininess: 1.0,
+                refraction: 1.0,
+            };
+            let mut seen: HashMap<String, Span> = HashMap::new();
+            for clause in &st.clauses {
+                let Clause::Assign { key, value, .. } = clause else {
+                    self.report(
+                        Diagnostic::new(Code::WrongType, clause.span(), "expected a `field = value` pair")
+                            .with_help("material fields are ambient, diffuse, specular, alpha, trans, shininess, refraction"),
+                    );
+                    continue;
+                };
+                if let Some(prev) = seen.insert(key.text.clone(), key.span) {
+                    let _ = prev;
+                    self.report(Diagnostic::new(
+                        Code::DuplicateKey,
+                        key.span,
+                        format!("`{}` is set twice; the last value wins", key.text),
+                    ));
+                }
+                match key.text.as_str() {
+                    "ambient" => m.ambient = self.rgb(value).unwrap_or(m.ambient),
+                    "diffuse" => m.diffuse = self.rgb(value).unwrap_or(m.diffuse),
+                    "specular" => m.specular = self.rgb(value).unwrap_or(m.specular),
+                    "alpha" => m.reflection = self.unit_interval(value, "alpha").unwrap_or(0.0),
+                    "trans" => m.transmission = self.unit_interval(value, "trans").unwrap_or(0.0),
+                    "shininess" => {
+                        if let Some(x) = self.number(value) {
+                            if x >= 0.0 {
+                                m.shininess = x;
+                            } else {
+                                self.error(Code::InvalidValue, value.span(), format!("shininess must be non-negative, got {x}"));
+                            }
+                        }
+                    }
+                    "refraction" => {
+                        if let Some(x) = self.number(value) {
+                            if x > 0.0 {
+                                m.refraction = x;
+                            } else {
+                                self.error(Code::InvalidValue, value.span(), format!("the index of refraction must be positive, got {x}"));
+                            }
+                        }
+                    }
+                    other => self.report(
+                        Diagnostic::new(Code::UnknownKey, key.span, format!("unknown material field `{other}`"))
+                            .with_help("material fields are ambient, diffuse, specular, alpha, trans, shininess, refraction"),
+                    ),
+                }
+            }
+            if let Some(label) = &st.label {
+                self.declare_name(NameKind::Material, label);
+            }
+            self.materials.push(MaterialEntry {
+                material: m,
+                span: st.span,
+                used: false,
+            });
+        }
+    }
+
+    fn transformations_section(&mut self, section: &Section) {
+        for st in &section.statements {
+            let [
+                Clause::Apply {
+                    target,
+                    name,
+                    arg,
+                    span,
+                },
+            ] = st.clauses.as_slice()
+            else {
+                self.report(
+                    Diagnostic::new(Code::WrongType, st.span, "expected a transformation statement")
+                        .with_help("write `hline (%A, %B);`, `hplane (%A, %B, %C);`, `%P->Rotate(L, angle);`, `%P->Translate(L);` or `%P->Reflect(S);`"),
+                );
+                continue;
+            };
+            match (target, name.text.as_str()) {
+                (None, "hline") => self.declare_line(st.label.as_ref(), name, arg.as_ref(), *span),
+                (None, "hplane") => {
+                    self.declare_plane(st.label.as_ref(), name, arg.as_ref(), *span)
+                }
+                (Some(target), "Rotate" | "Translate" | "Reflect") => {
+                    if let Some(iso) = self.transformation(name, arg.as_ref(), *span) {
+                        self.move_point(target, &iso);
+                    } else {
+                        // Still mark the target as used so errors don't cascade into lints.
+                        let _ = self.resolve_point(target);
+                    }
+                }
+                (None, "Rotate" | "Translate" | "Reflect") => self.report(
+                    Diagnostic::new(
+                        Code::WrongType,
+                        name.span,
+                        format!("`{}` needs a point to act on", name.text),
+                    )
+                    .with_help(format!("write `%P->{}(...)`", name.text)),
+                ),
+                (_, other) => self.report(
+                    Diagnostic::new(
+                        Code::UnknownTransformation,
+                        name.span,
+                        format!("unknown transformation `{other}`"),
+                    )
+                    .with_help("transformations are hline, hplane, Rotate, Translate and Reflect"),
+                ),
+            }
+        }
+    }
+
+    fn lights_section(&mut self, section: &Section) {
+        for st in &section.statements {
+            let values: Vec<&Value> = st
+                .clauses
+                .iter()
+                .filter_map(|c| match c {
+                    Clause::Value(v) => Some(v),
+                    _ => None,
+                })
+                .collect();
+            if values.len() != st.clauses.len() || values.len() != 3 {
+                self.report(
+                    Diagnostic::new(
+                        Code::WrongArity,
+                        st.span,
+                        format!("a light takes 3 values, got {}", st.clauses.len()),
+                    )
+                    .with_help("write `%P, (diffuse r, g, b), (specular r, g, b);`"),
+                );
+                continue;
+            }
+            let position = self.point_arg(values[0], "a light");
+            let diffuse = self.rgb(values[1]);
+            let specular = self.rgb(values[2]);
+            if let (Some(position), Some(diffuse), Some(specular)) = (position, diffuse, specular) {
+                self.lights.push((
+                    Light {
+                        position,
+                        diffuse,
+                        specular,
+                    },
+                    st.span,
+                ));
+            }
+        }
+    }
+
+    fn objects_section(&mut self, section: &Section) {
+        for st in &section.statements {
+            let Some((
+                Clause::Apply {
+                    target: None,
+                    name,
+                    arg,
+                    ..
+                },
+                rest,
+            )) = st.clauses.split_first()
+            else {
+                self.report(
+                    Diagnostic::new(
+                        Code::WrongType,
+                        st.span,
+                        "expected an object, e.g. `Sphere %1, 0.05, #1;`",
+                    )
+                    .with_help(format!("objects are {}", OBJECT_NAMES.join(", "))),
+                );
+                continue;
+            };
+            let rest: Vec<&Value> = rest
+                .iter()
+                .filter_map(|c| match c {
+                    Clause::Value(v) => Some(v),
+                    _ => None,
+                })
+                .collect();
+            if rest.len() != st.clauses.len() - 1 {
+                self.error(
+                    Code::WrongType,
+                    st.span,
+                    "object arguments must be values separated by `,`",
+                );
+                continue;
+            }
+            let shape = match name.text.as_str() {
+                "Sphere" => self.sphere(name, arg.as_ref(), &rest, st.span),
+                "Polygon" => self.polygon(name, arg.as_ref(), &rest, st.span),
+                other => match platonic_by_name(other) {
+                    Some(kind) => self.platonic(kind, name, arg.as_ref(), &rest, st.span),
+                    None => {
+                        let mut d = Diagnostic::new(
+                            Code::UnknownObject,
+                            name.span,
+                            format!("unknown object `{other}`"),
+                        );
+                        d = match OBJECT_NAMES.iter().find(|s| s.eq_ignore_ascii_case(other)) {
+                            Some(s) => d.with_help(format!(
+                                "object names are case-sensitive: did you mean `{s}`?"
+                            )),
+                            None => d.with_help(format!("objects are {}", OBJECT_NAMES.join(", "))),
+                        };
+                        self.report(d);
+                        continue;
+                    }
+                },
+            };
+            if let Some((shape, material)) = shape {
+                self.objects.push((Object { shape, material }, st.span));
+            }
+        }
+    }
+
+    fn globals_section(&mut self, section: &Section) {
+        let mut seen: HashMap<String, Span> = HashMap::new();
+        for st in &section.statements {
+            for clause in &st.clauses {
+                let Clause::Assign { key, value, .. } = clause else {
+                    self.report(
+                        Diagnostic::new(Code::WrongType, clause.span(), "expected `key = value`")
+                            .with_help(GLOBAL_KEYS_HELP),
+                    );
+                    continue;
+                };
+                if seen.insert(key.text.clone(), key.span).is_some() {
+                    self.report(Diagnostic::new(
+                        Code::DuplicateKey,
+                        key.span,
+                        format!("`{}` is set twice; the last value wins", key.text),
+                    ));
+                }
+                self.global(key, value);
+            }
+        }
+    }
+
+    fn global(&mut self, key: &Ident, value: &Value) {
+        match key.text.as_str() {
+            "recursion_depth" => {
+                if let Some(n) = self.integer(value, 0, 64, "recursion_depth") {
+                    self.settings.recursion_depth = n as u32;
+                }
+            }
+            "resolution" => {
+                if let Some(v) = self.tuple_of_numbers(value, 2, "resolution = (width, height)") {
+                    if v.contains(&0.0) {
+                        self.report(
+                            Diagnostic::new(
+                                Code::ZeroResolution,
+                                value.span(),
+                                "the resolution must be at least 1x1 pixel",
+                            )
+                            .with_help("for example `resolution = (800, 600);`"),
+                        );
+                    } else if let (Some(w), Some(h)) = (
+                        self.integer_value(v[0], 1, MAX_RESOLUTION, value.span(), "width"),
+                        self.integer_value(v[1], 1, MAX_RESOLUTION, value.span(), "height"),
+                    ) {
+                        self.settings.resolution = Resolution {
+                            width: w as u32,
+                            height: h as u32,
+                        };
+                    }
+                }
+            }
+            "window_size" => {
+                if let Some(v) = self.tuple_of_numbers(value, 2, "window_size = (width, height)") {
+                    if v.iter().all(|x| *x > 0.0) {
+                        self.settings.window = Window {
+                            width: v[0],
+                            height: v[1],
+                        };
+                    } else {
+                        self.error(
+                            Code::InvalidValue,
+                            value.span(),
+                            "the window size must be positive",
+                        );
+                    }
+                }
+            }
+            "net_type" => {
+                if let Some(x) = self.number(value) {
+                    match (x.fract() == 0.0 && x >= 0.0).then(|| Net::from_index(x as u64)).flatten() {
+                        Some(net) => self.settings.net = net,
+                        None => self.report(
+                            Diagnostic::new(Code::UnknownNetType, value.span(), format!("unknown net type {x}"))
+                                .with_help("net_type is 0 (Euclidean), 1 (hyperparallel h-lines), 2 (great disk), 3 (h-equidistants) or 4 (h-equidistants, interpolated)"),
+                        ),
+                    }
+                }
+            }
+            "background" => {
+                self.settings.background = self.rgb(value).unwrap_or(self.settings.background)
+            }
+            "ambient" => self.settings.ambient = self.rgb(value).unwrap_or(self.settings.ambient),
+            "from" | "eye" => {
+                self.camera_parts.eye = self.point_arg(value, "the eye").map(|p| (p, value.span()))
+            }
+            "to" => {
+                self.camera_parts.target = self
+                    .point_arg(value, "the view target")
+                    .map(|p| (p, value.span()))
+            }
+            "up" => {
+                self.camera_parts.up = self
+                    .point_arg(value, "the up point")
+                    .map(|p| (p, value.span()))
+            }
+            other => self.report(
+                Diagnostic::new(
+                    Code::UnknownKey,
+                    key.span,
+                    format!("unknown global `{other}`"),
+                )
+                .with_help(GLOBAL_KEYS_HELP),
+            ),
+        }
+    }
+
+    // ----- objects ----------------------------------------------------------
+
+    fn material_arg(&mut self, value: &Value) -> Option<MaterialId> {
+        match value {
+            Value::Reference(r) if r.sigil == RefSigil::Hash => self.resolve_material(r),
+            other => {
+                self.report(
+                    Diagnostic::new(
+                        Code::WrongType,
+                        other.span(),
+                        format!(
+                            "expected a material reference like `#1`, found {}",
+                            other.describe()
+                        ),
+                    )
+                    .with_label("expected `#N` or `#name`"),
+                );
+                None
+            }
+        }
+    }
+
+    fn sphere(
+        &mut self,
+        name: &Ident,
+        arg: Option<&Value>,
+        rest: &[&Value],
+        span: Span,
+    ) -> Option<(Shape, MaterialId)> {
+        let (Some(center), [radius, material]) = (arg, rest) else {
+            self.report(
+                Diagnostic::new(
+                    Code::WrongArity,
+                    span,
+                    "`Sphere` takes a centre, a radius and a material",
+                )
+                .with_help("write `Sphere %P, radius, #M;` (radius is hyperbolic)"),
+            );
+            return None;
+        };
+        let _ = name;
+        let c = self.point_arg(center, "a sphere centre");
+        let r = self.positive(radius, "the sphere radius");
+        let m = self.material_arg(material);
+        let sphere = HSphere::try_new(c?, r?).ok()?;
+        Some((Shape::Sphere(sphere), m?))
+    }
+
+    fn platonic(
+        &mut self,
+        kind: Platonic,
+        name: &Ident,
+        arg: Option<&Value>,
+        rest: &[&Value],
+        span: Span,
+    ) -> Option<(Shape, MaterialId)> {
+        let (Some(size), [material]) = (arg, rest) else {
+            self.report(
+                Diagnostic::new(
+                    Code::WrongArity,
+                    span,
+                    format!("`{}` takes a size and a material", name.text),
+                )
+                .with_help(format!(
+                    "write `{} size, #M;` (size: hyperbolic circumradius)",
+                    name.text
+                )),
+            );
+            return None;
+        };
+        let r = self.positive(size, "the size");
+        let m = self.material_arg(material);
+        match Polyhedron::platonic(kind, r?) {
+            Ok(p) => Some((Shape::Polyhedron(p), m?)),
+            Err(e) => {
+                self.error(
+                    Code::NumericFailure,
+                    size.span(),
+                    format!("cannot build this polyhedron: {e}"),
+                );
+                None
+            }
+        }
+    }
+
+    fn polygon(
+        &mut self,
+        name: &Ident,
+        arg: Option<&Value>,
+        rest: &[&Value],
+        span: Span,
+    ) -> Option<(Shape, MaterialId)> {
+        let (
+            Some(Value::Tuple {
+                items,
+                span: list_span,
+            }),
+            [material],
+        ) = (arg, rest)
+        else {
+            self.report(
+                Diagnostic::new(
+                    Code::WrongArity,
+                    span,
+                    "`Polygon` takes a vertex list and a material",
+                )
+                .with_help("write `Polygon (%1, %2, %3), #M;`"),
+            );
+            return None;
+        };
+        let _ = name;
+        let mut vertices = Vec::with_capacity(items.len());
+        let mut ok = true;
+        for item in items {
+            match self.vertex_arg(item) {
+                Some(v) => vertices.push(v),
+                None => ok = false,
+            }
+        }
+        let m = self.material_arg(material);
+        if !ok {
+            return None;
+        }
+        match ConvexPolygon::try_new(vertices) {
+            Ok(p) => Some((Shape::Polygon(p), m?)),
+            Err(e) => {
+                let (code, msg, item_span) = match e {
+                    GeomError::TooFewVertices(n) => (
+                        Code::WrongArity,
+                        format!("a polygon needs at least 3 vertices, got {n}"),
+                        *list_span,
+                    ),
+                    GeomError::NonPlanar { index, .. } => (
+                        Code::NonPlanarPolygon,
+                        format!("vertex {} is not on the h-plane of the others", index + 1),
+                        items[index].span(),
+                    ),
+                    GeomError::NonConvex { index } => (
+                        Code::NonConvexPolygon,
+                        format!(
+                            "the polygon is not convex at vertex {} (or its vertices are not in cyclic order)",
+                            index + 1
+                        ),
+                        items[index].span(),
+                    ),
+                    other => (
+                        Code::NonConvexPolygon,
+                        format!("degenerate polygon: {other}"),
+                        *list_span,
+                    ),
+                };
+                self.report(Diagnostic::new(code, item_span, msg).with_help("list the vertices of a convex planar polygon in order around it; split other polygons into convex pieces"));
+                None
+            }
+        }
+    }
+
+    // ----- transformations --------------------------------------------------
+
+    fn declare_line(
+        &mut self,
+        label: Option<&Ident>,
+        name: &Ident,
+        arg: Option<&Value>,
+        span: Span,
+    ) {
+        let segment = match arg {
+            Some(Value::Tuple { items, .. }) if items.len() == 2 => {
+                let a = self.point_arg(&items[0], "an h-line end");
+                let b = self.point_arg(&items[1], "an h-line end");
+                match (a, b) {
+                    (Some(a), Some(b)) => match Segment::try_new(a, b) {
+                        Ok(s) => Some(s),
+                        Err(_) => {
+                            self.report(
+                                Diagnostic::new(
+                                    Code::DegenerateLine,
+                                    span,
+                                    "the two points of this h-line coincide",
+                                )
+                                .with_help("an h-line needs two distinct points"),
+                            );
+                            None
+                        }
+                    },
+                    _ => None,
+                }
+            }
+            _ => {
+                self.report(
+                    Diagnostic::new(
+                        Code::WrongArity,
+                        span,
+                        format!("`{}` takes two points", name.text),
+                    )
+                    .with_help("write `hline (%A, %B);`"),
+                );
+                None
+            }
+        };
+        if let Some(label) = label {
+            self.declare_name(NameKind::Line, label);
+        }
+        self.lines.push(segment);
+    }
+
+    fn declare_plane(
+        &mut self,
+        label: Option<&Ident>,
+        name: &Ident,
+        arg: Option<&Value>,
+        span: Span,
+    ) {
+        let plane = match arg {
+            Some(Value::Tuple { items, .. }) if items.len() == 3 => {
+                let vs: Vec<Option<Vertex>> = items.iter().map(|v| self.vertex_arg(v)).collect();
+                match (vs[0], vs[1], vs[2]) {
+                    (Some(a), Some(b), Some(c)) => match HPlane::through(&a, &b, &c) {
+                        Ok(p) => Some(p),
+                        Err(_) => {
+                            self.report(Diagnostic::new(Code::DegenerateLine, span, "these three points lie on one h-line, so they do not fix an h-plane"));
+                            None
+                        }
+                    },
+                    _ => None,
+                }
+            }
+            _ => {
+                self.report(
+                    Diagnostic::new(
+                        Code::WrongArity,
+                        span,
+                        format!("`{}` takes three points", name.text),
+                    )
+                    .with_help("write `hplane (%A, %B, %C);`"),
+                );
+                None
+            }
+        };
+        if let Some(label) = label {
+            self.declare_name(NameKind::Plane, label);
+        }
+        self.planes.push(plane);
+    }
+
+    fn transformation(
+        &mut self,
+        name: &Ident,
+        arg: Option<&Value>,
+        span: Span,
+    ) -> Option<Isometry> {
+        let items: Vec<&Value> = match arg {
+            Some(Value::Tuple { items, .. }) => items.iter().collect(),
+            Some(v) => vec![v],
+            None => Vec::new(),
+        };
+        match (name.text.as_str(), items.as_slice()) {
+            ("Rotate", [line, angle]) => {
+                let line = self.resolve_line(line);
+                let angle = self.number(angle);
+                Some(Isometry::rotation(&line?, angle?))
+            }
+            ("Translate", [line]) => {
+                let line = self.resolve_line(line)?;
+                match Isometry::translation(&line) {
+                    Ok(t) => Some(t),
+                    Err(e) => {
+                        self.error(
+                            Code::NumericFailure,
+                            span,
+                            format!("cannot build this translation: {e}"),
+                        );
+                        None
+                    }
+                }
+            }
+            ("Reflect", [plane]) => Some(Isometry::reflection(&self.resolve_plane(plane)?)),
+            (n, _) => {
+                let usage = match n {
+                    "Rotate" => "`%P->Rotate(L, angle);` (L: an h-line number, angle in radians)",
+                    "Translate" => {
+                        "`%P->Translate(L);` (along h-line L, from its first point to its second)"
+                    }
+                    _ => "`%P->Reflect(S);` (S: an h-plane number)",
+                };
+                self.report(
+                    Diagnostic::new(
+                        Code::WrongArity,
+                        span,
+                        format!("wrong number of arguments to `{n}`"),
+                    )
+                    .with_help(format!("write {usage}")),
+                );
+                None
+            }
+        }
+    }
+
+    fn move_point(&mut self, target: &Reference, iso: &Isometry) {
+        let Some(i) = self.resolve_point(target) else {
+            return;
+        };
+        let entry = &mut self.points[i];
+        entry.position = entry.position.map(|p| match p {
+            PointPosition::Interior(q) => PointPosition::Interior(iso.apply(&q)),
+            PointPosition::Ideal(q) => PointPosition::Ideal(iso.apply_ideal(&q)),
+        });
+    }
+
+    fn resolve_line(&mut self, value: &Value) -> Option<Segment> {
+        let index = self.resolve_indexed(value, NameKind::Line)?;
+        self.lines[index]
+    }
+
+    fn resolve_plane(&mut self, value: &Value) -> Option<HPlane> {
+        let index = self.resolve_indexed(value, NameKind::Plane)?;
+        self.planes[index]
+    }
+
+    /// Resolve `%N` / `%name` against the line or plane tables.
+    fn resolve_indexed(&mut self, value: &Value, kind: NameKind) -> Option<usize> {
+        let (len, what, code) = match kind {
+            NameKind::Line => (self.lines.len(), "h-line", Code::UndefinedLine),
+            _ => (self.planes.len(), "h-plane", Code::UndefinedLine),
+        };
+        let Value::Reference(
+            r @ Reference {
+                sigil: RefSigil::Percent,
+                ..
+            },
+        ) = value
+        else {
+            self.report(Diagnostic::new(
+                Code::WrongType,
+                value.span(),
+                format!(
+                    "expected an {what} reference like `%1`, found {}",
+                    value.describe()
+                ),
+            ));
+            return None;
+        };
+        let names = if kind == NameKind::Line {
+            &self.line_names
+        } else {
+            &self.plane_names
+        };
+        let found = match &r.target {
+            RefTarget::Index(n) => (*n >= 1 && (*n as usize) <= len).then(|| *n as usize - 1),
+            RefTarget::Name(name) => names.get(name).copied(),
+        };
+        if found.is_none() {
+            let declared = if len == 0 {
+                format!("no {what}s are declared yet")
+            } else {
+                format!("{} declared so far", count(len, what))
+            };
+            self.report(
+                Diagnostic::new(
+                    code,
+                    r.span,
+                    format!("undefined {what} `{}`", reference_text(r)),
+                )
+                .with_help(format!(
+                    "{declared}; declare one with `{}` before using it",
+                    if kind == NameKind::Line {
+                        "hline (%A, %B);"
+                    } else {
+                        "hplane (%A, %B, %C);"
+                    }
+                )),
+            );
+        }
+        found
+    }
+
+    // ----- points -----------------------------------------------------------
+
+    fn point_literal(&mut self, value: &Value) -> Option<(DVec3, Span)> {
+        let v = self.tuple_of_numbers(value, 3, "a point `(x, y, z)`")?;
+        Some((DVec3::new(v[0], v[1], v[2]), value.span()))
+    }
+
+    fn classify_point(&mut self, v: DVec3, span: Span) -> Option<PointPosition> {
+        let norm = v.length();
+        if let Ok(p) = Point::try_new(v) {
+            if p.gap() < NEAR_ABSOLUTE_GAP {
+                self.report(
+                    Diagnostic::new(Code::PointNearAbsolute, span, format!("this point is within {:.1e} of the absolute; decimal rounding alone moves it noticeably", 1.0 - norm))
+                        .with_help("positions this close to the absolute are not reproducible in f64; move it inward or place it with transformations"),
+                );
+            }
+            return Some(PointPosition::Interior(p));
+        }
+        if let Ok(ideal) = IdealPoint::try_new(v, IDEAL_TOLERANCE) {
+            return Some(PointPosition::Ideal(ideal));
+        }
+        self.report(
+            Diagnostic::new(Code::PointOutsideAbsolute, span, format!("point lies outside the absolute: |x| = {norm}"))
+                .with_label("outside the unit ball")
+                .with_help("h-points need |x| < 1 (ideal points |x| = 1); scale the coordinates into the unit ball"),
+        );
+        None
+    }
+
+    fn resolve_point(&mut self, r: &Reference) -> Option<usize> {
+        if r.sigil != RefSigil::Percent {
+            self.report(Diagnostic::new(
+                Code::WrongType,
+                r.span,
+                format!(
+                    "expected a point reference like `%1`, found the material reference `{}`",
+                    reference_text(r)
+                ),
+            ));
+            return None;
+        }
+        let found = match &r.target {
+            RefTarget::Index(n) => {
+                (*n >= 1 && (*n as usize) <= self.points.len()).then(|| *n as usize - 1)
+            }
+            RefTarget::Name(name) => self.point_names.get(name).copied(),
+        };
+        match found {
+            Some(i) => {
+                self.points[i].used = true;
+                Some(i)
+            }
+            None => {
+                let help = match (&r.target, self.points.len()) {
+                    (RefTarget::Index(0), _) => "points are numbered from %1".to_string(),
+                    (_, 0) => {
+                        "no points are declared: add them to the `Points` section".to_string()
+                    }
+                    (RefTarget::Index(_), n) => {
+                        format!("{} declared (%1 to %{n})", count(n, "point"))
+                    }
+                    (RefTarget::Name(_), _) => {
+                        "declare it in `Points` as `name = (x, y, z);`".to_string()
+                    }
+                };
+                self.report(
+                    Diagnostic::new(
+                        Code::UndefinedPoint,
+                        r.span,
+                        format!("undefined point `{}`", reference_text(r)),
+                    )
+                    .with_help(help),
+                );
+                None
+            }
+        }
+    }
+
+    /// An interior point given as a reference or a literal.
+    fn point_arg(&mut self, value: &Value, role: &str) -> Option<Point> {
+        let (pos, span) = match value {
+            Value::Reference(r) => {
+                let i = self.resolve_point(r)?;
+                (self.points[i].position?, r.span)
+            }
+            Value::Tuple { .. } => {
+                let (v, span) = self.point_literal(value)?;
+                (self.classify_point(v, span)?, span)
+            }
+            other => {
+                self.report(Diagnostic::new(
+                    Code::WrongType,
+                    other.span(),
+                    format!("expected a point for {role}, found {}", other.describe()),
+                ));
+                return None;
+            }
+        };
+        match pos {
+            PointPosition::Interior(p) => Some(p),
+            PointPosition::Ideal(_) => {
+                self.report(
+                    Diagnostic::new(
+                        Code::IdealPointNotAllowed,
+                        span,
+                        format!(
+                            "{role} must be inside the ball, but this point is on the absolute"
+                        ),
+                    )
+                    .with_help(
+                        "ideal points are allowed only as polygon vertices and h-plane points",
+                    ),
+                );
+                None
+            }
+        }
+    }
+
+    /// A point that may be ideal.
+    fn vertex_arg(&mut self, value: &Value) -> Option<Vertex> {
+        let pos = match value {
+            Value::Reference(r) => {
+                let i = self.resolve_point(r)?;
+                self.points[i].position?
+            }
+            Value::Tuple { .. } => {
+                let (v, span) = self.point_literal(value)?;
+                self.classify_point(v, span)?
+            }
+            other => {
+                self.report(Diagnostic::new(
+                    Code::WrongType,
+                    other.span(),
+                    format!("expected a point, found {}", other.describe()),
+                ));
+                return None;
+            }
+        };
+        Some(match pos {
+            PointPosition::Interior(p) => Vertex::Interior(p),
+            PointPosition::Ideal(p) => Vertex::Ideal(p),
+        })
+    }
+
+    fn resolve_material(&mut self, r: &Reference) -> Option<MaterialId> {
+        let found = match &r.target {
+            RefTarget::Index(n) => {
+                (*n >= 1 && (*n as usize) <= self.materials.len()).then(|| *n as usize - 1)
+            }
+            RefTarget::Name(name) => self.material_names.get(name).copied(),
+        };
+        match found {
+            Some(i) => {
+                self.materials[i].used = true;
+                Some(MaterialId(i))
+            }
+            None => {
+                let help = match self.materials.len() {
+                    0 => "no materials are declared: add one to the `BRDFs` section".to_string(),
+                    n => format!("{} declared (#1 to #{n})", count(n, "material")),
+                };
+                self.report(
+                    Diagnostic::new(
+                        Code::UndefinedMaterial,
+                        r.span,
+                        format!("undefined material `{}`", reference_text(r)),
+                    )
+                    .with_help(help),
+                );
+                None
+            }
+        }
+    }
+
+    fn declare_name(&mut self, kind: NameKind, name: &Ident) {
+        let (table, index) = match kind {
+            NameKind::Point => (&mut self.point_names, self.points.len()),
+            NameKind::Material => (&mut self.material_names, self.materials.len()),
+            NameKind::Line => (&mut self.line_names, self.lines.len()),
+            NameKind::Plane => (&mut self.plane_names, self.planes.len()),
+        };
+        if table.contains_key(&name.text) {
+            self.diags.push(
+                Diagnostic::new(
+                    Code::DuplicateName,
+                    name.span,
+                    format!("`{}` is already declared", name.text),
+                )
+                .with_help("give each point, material, line and plane a distinct name"),
+            );
+        } else {
+            table.insert(name.text.clone(), index);
+        }
+    }
+
+    // ----- values -----------------------------------------------------------
+
+    fn number(&mut self, value: &Value) -> Option<f64> {
+        match value {
+            // An overflowing literal was already reported by the parser.
+            Value::Number { value, .. } if !value.is_finite() => None,
+            Value::Number { value, .. } => Some(*value),
+            other => {
+                self.report(Diagnostic::new(
+                    Code::WrongType,
+                    other.span(),
+                    format!("expected a number, found {}", other.describe()),
+                ));
+                None
+            }
+        }
+    }
+
+    fn positive(&mut self, value: &Value, what: &str) -> Option<f64> {
+        let x = self.number(value)?;
+        if x > 0.0 {
+            Some(x)
+        } else {
+            self.report(
+                Diagnostic::new(
+                    Code::NonPositiveRadius,
+                    value.span(),
+                    format!("{what} must be positive, got {x}"),
+                )
+                .with_help("lengths are hyperbolic and must be greater than 0"),
+            );
+            None
+        }
+    }
+
+    fn unit_interval(&mut self, value: &Value, what: &str) -> Option<f64> {
+        let x = self.number(value)?;
+        if (0.0..=1.0).contains(&x) {
+            Some(x)
+        } else {
+            self.report(Diagnostic::new(
+                Code::InvalidValue,
+                value.span(),
+                format!("`{what}` must be between 0 and 1, got {x}"),
+            ));
+            None
+        }
+    }
+
+    fn integer(&mut self, value: &Value, min: u64, max: u64, what: &str) -> Option<u64> {
+        let x = self.number(value)?;
+        self.integer_value(x, min, max, value.span(), what)
+    }
+
+    fn integer_value(&mut self, x: f64, min: u64, max: u64, span: Span, what: &str) -> Option<u64> {
+        if x.fract() == 0.0 && x >= min as f64 && x <= max as f64 {
+            Some(x as u64)
+        } else {
+            self.report(Diagnostic::new(
+                Code::InvalidValue,
+                span,
+                format!("{what} must be a whole number from {min} to {max}, got {x}"),
+            ));
+            None
+        }
+    }
+
+    fn tuple_of_numbers(&mut self, value: &Value, n: usize, what: &str) -> Option<Vec<f64>> {
+        let Value::Tuple { items, span } = value else {
+            self.report(Diagnostic::new(
+                Code::WrongType,
+                value.span(),
+                format!("expected {what}, found {}", value.describe()),
+            ));
+            return None;
+        };
+        if items.len() != n {
+            self.report(Diagnostic::new(
+                Code::WrongArity,
+                *span,
+                format!(
+                    "expected {what} with {}, found {}",
+                    count(n, "value"),
+                    items.len()
+                ),
+            ));
+            return None;
+        }
+        let mut out = Vec::with_capacity(n);
+        for item in items {
+            out.push(self.number(item)?);
+        }
+        Some(out)
+    }
+
+    fn rgb(&mut self, value: &Value) -> Option<Rgb> {
+        let v = self.tuple_of_numbers(value, 3, "a colour `(r, g, b)`")?;
+        if v.iter().any(|c| *c < 0.0) {
+            self.report(Diagnostic::new(
+                Code::InvalidValue,
+                value.span(),
+                "colour components must be non-negative",
+            ));
+            return None;
+        }
+        Some(Rgb::new(v[0], v[1], v[2]))
+    }
+
+    // ----- camera and lints -----------------------------------------------------
+
+    fn camera(&mut self) -> Option<Camera> {
+        let eye = self
+            .camera_parts
+            .eye
+            .map(|(p, _)| p)
+            .unwrap_or(Point::ORIGIN);
+        let (target, target_span) = match self.camera_parts.target {
+            Some(t) => t,
+            None => (Point::try_new(DEFAULT_TARGET).ok()?, Span::default()),
+        };
+        if Segment::try_new(eye, target).is_err() {
+            self.report(
+                Diagnostic::new(
+                    Code::DegenerateCamera,
+                    target_span,
+                    "the view target coincides with the eye",
+                )
+                .with_help("`to` must differ from `from` (the eye defaults to the origin)"),
+            );
+            return None;
+        }
+        let up = self.camera_parts.up.map(|(p, _)| p);
+        if let Some((u, span)) = self.camera_parts.up {
+            let collinear = HPlane::through(&eye.into(), &target.into(), &u.into()).is_err();
+            if collinear {
+                self.report(Diagnostic::new(Code::DegenerateCamera, span, "the up point lies on the line of sight, so it does not fix an up direction").with_help("choose an up point off the h-line through the eye and the target"));
+                return None;
+            }
+        }
+        Some(Camera { eye, target, up })
+    }
+
+    fn lint_scene(&mut self, camera: &Camera) {
+        let eye = camera.eye.to_hyperboloid();
+        // The plane through the eye orthogonal to the view direction; objects
+        // entirely on its far side can't be seen.
+        let behind = HPlane::orthogonal_at(&camera.eye, &camera.target).ok();
+        let mut found = Vec::new();
+        for (object, span) in &self.objects {
+            if contains(&object.shape, eye) {
+                found.push(
+                    Diagnostic::new(
+                        Code::EyeInsideObject,
+                        *span,
+                        "the eye is inside this object, so every view ray starts inside it",
+                    )
+                    .with_help("move the eye (`from`) or the object if this is not intended"),
+                );
+            } else if behind
+                .as_ref()
+                .is_some_and(|plane| entirely_behind(&object.shape, plane))
+            {
+                found.push(Diagnostic::new(
+                    Code::ObjectBehindEye,
+                    *span,
+                    "this object is entirely behind the eye and cannot be seen",
+                ));
+            }
+        }
+        for (light, span) in &self.lights {
+            let x = light.position.to_hyperboloid();
+            for (object, _) in &self.objects {
+                let opaque = self
+                    .materials
+                    .get(object.material.0)
+                    .is_some_and(|m| m.material.transmission == 0.0);
+                if opaque && contains(&object.shape, x) {
+                    found.push(Diagnostic::new(
+                        Code::LightInsideOpaqueObject,
+                        *span,
+                        "this light is inside an opaque object, so it lights nothing outside it",
+                    ));
+                    break;
+                }
+            }
+        }
+        self.diags.extend(found);
+    }
+
+    fn lint_unused(&mut self) {
+        let mut found = Vec::new();
+        for (i, p) in self.points.iter().enumerate() {
+            if !p.used && p.position.is_some() {
+                let name = p
+                    .name
+                    .as_ref()
+                    .map(|n| format!("%{n}"))
+                    .unwrap_or_else(|| format!("%{}", i + 1));
+                found.push(Diagnostic::new(
+                    Code::UnusedPoint,
+                    p.span,
+                    format!("point {name} is never used"),
+                ));
+            }
+        }
+        for (i, m) in self.materials.iter().enumerate() {
+            if !m.used {
+                let name = m
+                    .material
+                    .name
+                    .as_ref()
+                    .map(|n| format!("#{n}"))
+                    .unwrap_or_else(|| format!("#{}", i + 1));
+                found.push(Diagnostic::new(
+                    Code::UnusedMaterial,
+                    m.span,
+                    format!("material {name} is never used"),
+                ));
+            }
+        }
+        self.diags.extend(found);
+    }
+}
+
+/// True if the hyperboloid point is strictly inside a closed object.
+fn contains(shape: &Shape, x: hgeom::glam::DVec4) -> bool {
+    match shape {
+        Shape::Sphere(s) => s.contains(x),
+        Shape::Polygon(_) => false,
+        Shape::Polyhedron(p) => {
+            // Only meaningful for convex closed surfaces such as the Platonic solids.
+            !p.faces().is_empty()
+                && p.faces()
+                    .iter()
+                    .all(|f| lorentz::dot(x, f.plane().normal()) < 0.0)
+        }
+    }
+}
+
+fn entirely_behind(shape: &Shape, plane: &HPlane) -> bool {
+    let vertex_behind = |v: &Vertex| lorentz::dot(v.to_hyperboloid(), plane.normal()) < 0.0;
+    match shape {
+        Shape::Sphere(s) => plane.signed_distance(&s.center()) < -s.radius(),
+        Shape::Polygon(p) => p.vertices().iter().all(vertex_behind),
+        Shape::Polyhedron(p) => p
+            .faces()
+            .iter()
+            .all(|f| f.vertices().iter().all(vertex_behind)),
+    }
+}
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum NameKind {
+    Point,
+    Material,
+    Line,
+    Plane,
+}
+
+const OBJECT_NAMES: [&str; 8] = [
+    "Sphere",
+    "Polygon",
+    "Tetrahedron",
+    "Cube",
+    "Hexahedron",
+    "Octahedron",
+    "Dodecahedron",
+    "Icosahedron",
+];
+
+const GLOBAL_KEYS_HELP: &str = "globals are recursion_depth, resolution, window_size, net_type, from, to, up, background, ambient";
+
+fn platonic_by_name(name: &str) -> Option<Platonic> {
+    Some(match name {
+        "Tetrahedron" => Platonic::Tetrahedron,
+        "Cube" | "Hexahedron" => Platonic::Cube,
+        "Octahedron" => Platonic::Octahedron,
+        "Dodecahedron" => Platonic::Dodecahedron,
+        "Icosahedron" => Platonic::Icosahedron,
+        _ => return None,
+    })
+}
+
+fn reference_text(r: &Reference) -> String {
+    let sigil = match r.sigil {
+        RefSigil::Percent => '%',
+        RefSigil::Hash => '#',
+    };
+    match &r.target {
+        RefTarget::Index(n) => format!("{sigil}{n}"),
+        RefTarget::Name(s) => format!("{sigil}{s}"),
+    }
+}
