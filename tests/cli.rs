@@ -26,7 +26,15 @@ fn renders_the_appendix_scene_without_nan() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("appendix.tif");
     hscene()
-        .args(["render", "scenes/thesis-appendix-a.hsc", "--resolution", "48x48", "--depth", "32f", "-o"])
+        .args([
+            "render",
+            "scenes/thesis-appendix-a.hsc",
+            "--resolution",
+            "48x48",
+            "--depth",
+            "32f",
+            "-o",
+        ])
         .arg(&out)
         .assert()
         .success();
@@ -34,7 +42,10 @@ fn renders_the_appendix_scene_without_nan() {
     assert_eq!((w, h), (48, 48));
     assert!(samples.iter().all(|s| s.is_finite() && *s >= 0.0));
     // The view is through the dodecahedron around the eye: nothing is pure background.
-    let lit = samples.chunks(3).filter(|p| p.iter().any(|c| *c > 0.01)).count();
+    let lit = samples
+        .chunks(3)
+        .filter(|p| p.iter().any(|c| *c > 0.01))
+        .count();
     assert_eq!(lit, 48 * 48);
 }
 
@@ -42,9 +53,19 @@ fn renders_the_appendix_scene_without_nan() {
 fn renders_png_at_the_scene_resolution_by_default() {
     let dir = tempfile::tempdir().unwrap();
     let scene = dir.path().join("small.hsc");
-    fs::write(&scene, APPENDIX.replace("resolution = (1200,1200);", "resolution = (40,30);")).unwrap();
+    fs::write(
+        &scene,
+        APPENDIX.replace("resolution = (1200,1200);", "resolution = (40,30);"),
+    )
+    .unwrap();
     let out = dir.path().join("small.png");
-    hscene().arg("render").arg(&scene).arg("-o").arg(&out).assert().success();
+    hscene()
+        .arg("render")
+        .arg(&scene)
+        .arg("-o")
+        .arg(&out)
+        .assert()
+        .success();
     let bytes = fs::read(&out).unwrap();
     assert_eq!(&bytes[1..4], b"PNG");
     // IHDR width and height, big-endian, at byte 16.
@@ -67,14 +88,20 @@ fn check_points_at_a_point_outside_the_absolute() {
     let dir = tempfile::tempdir().unwrap();
     let scene = dir.path().join("bad.hsc");
     fs::write(&scene, APPENDIX.replace("(0,0,0.16);", "(0,0,1.2);")).unwrap();
-    let line = APPENDIX.lines().position(|l| l.contains("(0,0,0.16);")).unwrap() + 1;
+    let line = APPENDIX
+        .lines()
+        .position(|l| l.contains("(0,0,0.16);"))
+        .unwrap()
+        + 1;
     let col = APPENDIX.lines().nth(line - 1).unwrap().find('(').unwrap() + 1;
     hscene()
         .args(["check", "--format", "short"])
         .arg(&scene)
         .assert()
         .code(1)
-        .stdout(predicate::str::contains(format!("bad.hsc:{line}:{col}: error: point lies outside the absolute")))
+        .stdout(predicate::str::contains(format!(
+            "bad.hsc:{line}:{col}: error: point lies outside the absolute"
+        )))
         .stdout(predicate::str::contains("[HSC0301]"));
 }
 
@@ -83,10 +110,27 @@ fn check_json_has_the_documented_fields() {
     let dir = tempfile::tempdir().unwrap();
     let scene = dir.path().join("bad.hsc");
     fs::write(&scene, "Objects { Sphere %1, 0.1, #1; }").unwrap();
-    let out = hscene().args(["check", "--format", "json"]).arg(&scene).assert().code(1).get_output().stdout.clone();
+    let out = hscene()
+        .args(["check", "--format", "json"])
+        .arg(&scene)
+        .assert()
+        .code(1)
+        .get_output()
+        .stdout
+        .clone();
     let text = String::from_utf8(out).unwrap();
     let first: serde_json::Value = serde_json::from_str(text.lines().next().unwrap()).unwrap();
-    for key in ["file", "line", "column", "end_line", "end_column", "severity", "code", "message", "help"] {
+    for key in [
+        "file",
+        "line",
+        "column",
+        "end_line",
+        "end_column",
+        "severity",
+        "code",
+        "message",
+        "help",
+    ] {
         assert!(first.get(key).is_some(), "missing {key} in {first}");
     }
     assert_eq!(first["code"], "HSC0201");
@@ -110,8 +154,14 @@ fn human_format_names_the_code_and_the_source() {
 
 #[test]
 fn usage_and_io_errors_exit_2() {
-    hscene().args(["check", "no/such/file.hsc"]).assert().code(2);
-    hscene().args(["render", "no/such/file.hsc", "-o", "x.png"]).assert().code(2);
+    hscene()
+        .args(["check", "no/such/file.hsc"])
+        .assert()
+        .code(2);
+    hscene()
+        .args(["render", "no/such/file.hsc", "-o", "x.png"])
+        .assert()
+        .code(2);
     hscene().arg("frobnicate").assert().code(2);
     let dir = tempfile::tempdir().unwrap();
     hscene()
@@ -130,10 +180,24 @@ fn a_failed_render_leaves_the_old_image_untouched() {
     fs::write(&out, b"previous image").unwrap();
     let scene = dir.path().join("bad.hsc");
     fs::write(&scene, "Objects { Sphere %9, 0.1, #1; }").unwrap();
-    hscene().arg("render").arg(&scene).arg("-o").arg(&out).assert().code(1);
+    hscene()
+        .arg("render")
+        .arg(&scene)
+        .arg("-o")
+        .arg(&out)
+        .assert()
+        .code(1);
     // A format that cannot hold the requested depth fails after rendering, before writing.
     hscene()
-        .args(["render", "scenes/thesis-appendix-a.hsc", "--resolution", "8x8", "--depth", "32f", "-o"])
+        .args([
+            "render",
+            "scenes/thesis-appendix-a.hsc",
+            "--resolution",
+            "8x8",
+            "--depth",
+            "32f",
+            "-o",
+        ])
         .arg(&out)
         .assert()
         .code(2);
@@ -147,7 +211,15 @@ fn every_net_renders() {
     for net in 0..=4 {
         let out = dir.path().join(format!("net{net}.tif"));
         hscene()
-            .args(["render", "scenes/thesis-appendix-a.hsc", "--resolution", "24x24", "--depth", "32f", "--net"])
+            .args([
+                "render",
+                "scenes/thesis-appendix-a.hsc",
+                "--resolution",
+                "24x24",
+                "--depth",
+                "32f",
+                "--net",
+            ])
             .arg(net.to_string())
             .arg("-o")
             .arg(&out)
