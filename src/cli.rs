@@ -3,6 +3,7 @@
 use std::path::PathBuf;
 
 use clap::{Parser, Subcommand, ValueEnum};
+use hscene_lang::MAX_PIXELS;
 
 /// Ray tracing in the Poincaré ball model of hyperbolic space.
 #[derive(Debug, Parser)]
@@ -79,6 +80,9 @@ fn parse_resolution(s: &str) -> Result<(u32, u32), String> {
     let h: u32 = h.trim().parse().map_err(|_| format!("bad height `{h}`"))?;
     if w == 0 || h == 0 || w > 32_768 || h > 32_768 {
         return Err("each side must be from 1 to 32768 pixels".into());
+    }
+    if u64::from(w) * u64::from(h) > MAX_PIXELS {
+        return Err(format!("at most {MAX_PIXELS} pixels in all"));
     }
     Ok((w, h))
 }

@@ -134,7 +134,16 @@ fn render(args: &RenderArgs) -> ExitCode {
         Ok(r) => r,
         Err(e) => {
             eprintln!("error: {e}");
-            return ExitCode::from(EXIT_USAGE_OR_IO);
+            // Geometry the renderer cannot represent is a problem of the scene.
+            let scene_problem = matches!(
+                e,
+                hrender::RenderError::OutOfRange { .. } | hrender::RenderError::DegenerateCamera
+            );
+            return ExitCode::from(if scene_problem {
+                EXIT_SCENE_ERRORS
+            } else {
+                EXIT_USAGE_OR_IO
+            });
         }
     };
     if let Some(bar) = &bar {

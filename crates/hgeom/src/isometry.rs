@@ -116,6 +116,19 @@ impl Isometry {
         Point::from_parts(c, g)
     }
 
+    /// Apply to an h-point, failing if the image is too close to the absolute
+    /// for f64 to represent (its gap underflows; distance beyond about 37).
+    pub fn try_apply(&self, p: &Point) -> Result<Point, GeomError> {
+        let q = self.apply(p);
+        if q.is_representable() {
+            Ok(q)
+        } else {
+            Err(GeomError::NotInBall {
+                norm: q.coords().length(),
+            })
+        }
+    }
+
     /// Apply to an ideal point.
     pub fn apply_ideal(&self, p: &IdealPoint) -> IdealPoint {
         let rotated = IdealPoint::from_direction(self.q * p.coords()).unwrap_or(*p);

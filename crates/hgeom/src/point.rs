@@ -50,10 +50,23 @@ impl Point {
 
     /// Build from coordinates and a gap the caller has computed accurately
     /// (for example by an exact identity). The caller guarantees the invariants.
+    ///
+    /// Hot paths use this unchecked; a result whose gap underflowed to 0
+    /// (a point pushed past distance ~37, beyond what f64 can hold) is then
+    /// caught by [`Point::is_representable`] where it matters.
     #[inline]
     pub(crate) fn from_parts(coords: DVec3, gap: f64) -> Point {
-        debug_assert!(gap > 0.0 && coords.is_finite(), "{coords:?} {gap}");
         Point { coords, gap }
+    }
+
+    /// True if the coordinates are finite and the gap is positive: the point
+    /// is strictly inside the ball as f64 can represent it.
+    #[inline]
+    pub fn is_representable(&self) -> bool {
+        // The gap can stay positive past the point where the coordinates
+        // themselves round onto the absolute (distance ~37); such a point no
+        // longer has usable ball coordinates.
+        self.coords.is_finite() && self.gap > 0.0 && one_minus_norm_sq(self.coords) > 0.0
     }
 
     /// Ball coordinates.

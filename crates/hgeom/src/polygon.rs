@@ -39,25 +39,48 @@ impl ConvexPolygon {
             .map(|v| unit_time(v.to_hyperboloid()))
             .collect();
         let centroid = xs.iter().copied().sum::<DVec4>() / n as f64;
-        // Newell-style sum of the oriented normals of the fan (centroid, x_i, x_i+1).
-        let mut normal = DVec4::ZERO;
-        for i in 0..n {
-            let (a, b) = (xs[i], xs[(i + 1) % n]);
-            normal += lorentz::orthogonal_complement(centroid, a - centroid, b - centroid);
-        }
         let scale: f64 = xs
             .iter()
             .map(|x| (*x - centroid).length())
             .fold(0.0, f64::max);
-        if !(lorentz::norm(normal) > 1e-14 * scale * scale) {
-            return Err(GeomError::Collinear);
-        }
+        // The plane of the first three vertices that are not collinear; for a
+        // convex polygon its orientation is the polygon's (right-hand rule),
+        // and fitting it to a prefix lets errors name the vertex that is off.
+        let normal = (2..n)
+            .map(|k| lorentz::orthogonal_complement(xs[0], xs[1] - xs[0], xs[k] - xs[0]))
+            .find(|c| lorentz::norm(*c) > 1e-12 * scale * scale)
+            .ok_or(GeomError::Collinear)?;
+        // Orient it by the polygon's total turning (a Newell sum over the fan
+        // from the centroid), so a reflex first corner does not flip it.
+        let newell: DVec4 = (0..n)
+            .map(|i| {
+                lorentz::orthogonal_complement(
+                    centroid,
+                    xs[i] - centroid,
+                    xs[(i + 1) % n] - centroid,
+                )
+            })
+            .sum();
+        let normal = if lorentz::dot(newell, normal) < 0.0 {
+            -normal
+        } else {
+            normal
+        };
         let plane = HPlane::from_normal(normal)?;
         let nrm = plane.normal();
         for (index, x) in xs.iter().enumerate() {
             let offset = lorentz::dot(*x, nrm);
             if offset.abs() > SHAPE_TOLERANCE * x.length().max(scale) {
                 return Err(GeomError::NonPlanar { index, offset });
+            }
+        }
+        // Convexity, vertex by vertex: each corner must turn the same way as
+        // the polygon (a reflex corner turns against the normal).
+        for i in 0..n {
+            let (prev, here, next) = (xs[(i + n - 1) % n], xs[i], xs[(i + 1) % n]);
+            let corner = lorentz::orthogonal_complement(prev, here - prev, next - prev);
+            if lorentz::dot(corner, nrm) < -SHAPE_TOLERANCE * scale * scale {
+                return Err(GeomError::NonConvex { index: i });
             }
         }
         let mut edges = Vec::with_capacity(n);
@@ -72,6 +95,8 @@ impl ConvexPolygon {
             if lorentz::dot(e, centroid) < 0.0 {
                 e = -e;
             }
+            // Every corner may turn the right way while the boundary still
+            // winds twice (a pentagram): some vertex is then outside an edge.
             for (j, x) in xs.iter().enumerate() {
                 if j != i && j != (i + 1) % n && lorentz::dot(e, *x) < -SHAPE_TOLERANCE * x.length()
                 {
@@ -79,14 +104,6 @@ impl ConvexPolygon {
                 }
             }
             edges.push(e);
-        }
-        // Cyclic order: the fan normals must all agree with the total.
-        for i in 0..n {
-            let (a, b) = (xs[i], xs[(i + 1) % n]);
-            let fan = lorentz::orthogonal_complement(centroid, a - centroid, b - centroid);
-            if lorentz::dot(fan, nrm) < 0.0 {
-                return Err(GeomError::NonConvex { index: (i + 1) % n });
-            }
         }
         Ok(ConvexPolygon {
             vertices,
@@ -234,14 +251,32 @@ mod tests {
             v(-0.3, 0.3, 0.0),
             v(0.0, -0.3, 0.0),
         ]);
-        assert!(matches!(bad, Err(GeomError::NonConvex { .. })));
+        assert_eq!(bad, Err(GeomError::NonConvex { index: 1 }));
+        // Crossed order of a square: a reflex corner is named.
+        let bowtie = ConvexPolygon::try_new(vec![
+            v(0.3, 0.3, 0.0),
+            v(-0.3, -0.3, 0.0),
+            v(-0.3, 0.3, 0.0),
+            v(0.3, -0.3, 0.0),
+        ]);
+        assert!(matches!(bowtie, Err(GeomError::NonConvex { .. })));
+        let star: Vec<Vertex> = (0..5)
+            .map(|k| {
+                let a = std::f64::consts::TAU * (2 * k) as f64 / 5.0;
+                v(0.3 * a.cos(), 0.3 * a.sin(), 0.0)
+            })
+            .collect();
+        assert!(matches!(
+            ConvexPolygon::try_new(star),
+            Err(GeomError::NonConvex { .. })
+        ));
         let tilted = ConvexPolygon::try_new(vec![
             v(0.3, 0.3, 0.0),
             v(-0.3, 0.3, 0.0),
             v(-0.3, -0.3, 0.0),
             v(0.3, -0.3, 0.1),
         ]);
-        assert!(matches!(tilted, Err(GeomError::NonPlanar { .. })));
+        assert!(matches!(tilted, Err(GeomError::NonPlanar { index: 3, .. })));
         assert!(matches!(
             ConvexPolygon::try_new(vec![v(0.0, 0.0, 0.0), v(0.1, 0.0, 0.0)]),
             Err(GeomError::TooFewVertices(2))

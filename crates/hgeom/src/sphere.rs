@@ -23,8 +23,14 @@ pub struct HSphere {
 impl HSphere {
     /// The sphere of hyperbolic `radius` about `center`.
     pub fn try_new(center: Point, radius: f64) -> Result<HSphere, GeomError> {
-        if !(radius.is_finite() && radius > 0.0) {
+        // cosh r must be finite too: radii past ~710 overflow it.
+        if !(radius > 0.0 && radius.cosh().is_finite()) {
             return Err(GeomError::BadRadius(radius));
+        }
+        if !center.is_representable() {
+            return Err(GeomError::NotInBall {
+                norm: center.coords().length(),
+            });
         }
         Ok(HSphere {
             center,

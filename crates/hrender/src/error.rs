@@ -10,6 +10,12 @@ pub enum RenderError {
     /// The camera's view and up directions do not define a frame.
     #[error("the camera's view and up directions are degenerate")]
     DegenerateCamera,
+    /// Something is too far from the eye for f64 to represent in its frame.
+    #[error("{what} is too far from the eye (beyond distance ~37) to be represented in f64")]
+    OutOfRange {
+        /// Which object or light.
+        what: String,
+    },
     /// The output extension is not one we write.
     #[error("unsupported output format `{0}`: use .png, .tif or .tiff")]
     UnsupportedFormat(String),

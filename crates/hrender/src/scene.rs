@@ -2,8 +2,10 @@
 //! once, in f64, so near the eye every quantity is small and well conditioned.
 
 use hgeom::glam::DVec4;
-use hgeom::{ConvexPolygon, HSphere, Hit, Isometry, Polyhedron, Ray};
+use hgeom::{ConvexPolygon, HSphere, Hit, Isometry, Polyhedron, Ray, Vertex};
 use hscene_lang::ir::{self, Material, Rgb, Scene};
+
+use crate::error::RenderError;
 
 /// A traceable shape in the canonical frame.
 #[derive(Clone, Debug)]
@@ -22,6 +24,21 @@ impl Primitive {
             ir::Shape::Sphere(s) => Primitive::Sphere(s.transformed(iso)),
             ir::Shape::Polygon(p) => Primitive::Polygon(p.transformed(iso)),
             ir::Shape::Polyhedron(p) => Primitive::Polyhedron(p.transformed(iso)),
+        }
+    }
+
+    /// True if every defining point is representable in f64 in this frame.
+    fn is_representable(&self) -> bool {
+        let vertex_ok = |v: &Vertex| match v {
+            Vertex::Interior(p) => p.is_representable(),
+            Vertex::Ideal(_) => true,
+        };
+        match self {
+            Primitive::Sphere(s) => s.center().is_representable(),
+            Primitive::Polygon(p) => p.vertices().iter().all(vertex_ok),
+            Primitive::Polyhedron(p) => {
+                p.faces().iter().all(|f| f.vertices().iter().all(vertex_ok))
+            }
         }
     }
 
@@ -75,30 +92,45 @@ pub struct PreparedScene {
 
 impl PreparedScene {
     /// Move every object and light by `to_canonical`.
-    pub fn new(scene: &Scene, to_canonical: &Isometry) -> PreparedScene {
-        PreparedScene {
-            objects: scene
-                .objects
-                .iter()
-                .map(|o| PreparedObject {
-                    primitive: Primitive::from_shape(&o.shape, to_canonical),
-                    material: o.material.0,
-                })
-                .collect(),
-            lights: scene
-                .lights
-                .iter()
-                .map(|l| PreparedLight {
-                    position: to_canonical.apply(&l.position).to_hyperboloid(),
-                    diffuse: l.diffuse,
-                    specular: l.specular,
-                })
-                .collect(),
+    ///
+    /// Fails if something lies so far from the eye (beyond distance ~37)
+    /// that f64 cannot represent it in the eye's frame: that is reported,
+    /// not silently dropped.
+    pub fn new(scene: &Scene, to_canonical: &Isometry) -> Result<PreparedScene, RenderError> {
+        let mut objects = Vec::with_capacity(scene.objects.len());
+        for (index, o) in scene.objects.iter().enumerate() {
+            let primitive = Primitive::from_shape(&o.shape, to_canonical);
+            if !primitive.is_representable() {
+                return Err(RenderError::OutOfRange {
+                    what: format!("object {}", index + 1),
+                });
+            }
+            objects.push(PreparedObject {
+                primitive,
+                material: o.material.0,
+            });
+        }
+        let mut lights = Vec::with_capacity(scene.lights.len());
+        for (index, l) in scene.lights.iter().enumerate() {
+            let p = to_canonical
+                .try_apply(&l.position)
+                .map_err(|_| RenderError::OutOfRange {
+                    what: format!("light {}", index + 1),
+                })?;
+            lights.push(PreparedLight {
+                position: p.to_hyperboloid(),
+                diffuse: l.diffuse,
+                specular: l.specular,
+            });
+        }
+        Ok(PreparedScene {
+            objects,
+            lights,
             materials: scene.materials.clone(),
             background: scene.settings.background,
             ambient: scene.settings.ambient,
             max_depth: scene.settings.recursion_depth,
-        }
+        })
     }
 
     /// The nearest hit and the index of the object hit.

@@ -42,6 +42,9 @@ const IDEAL_TOLERANCE: f64 = 1e-12;
 /// Largest accepted image side, to keep allocations sane.
 const MAX_RESOLUTION: u64 = 32_768;
 
+/// Largest accepted pixel count (about 1.6 GB of HDR samples).
+pub const MAX_PIXELS: u64 = 1 << 27;
+
 /// Default settings: the thesis's Appendix A values, at a smaller resolution.
 fn default_settings() -> Settings {
     Settings {
@@ -97,6 +100,9 @@ struct CameraParts {
     eye: Option<(Point, Span)>,
     target: Option<(Point, Span)>,
     up: Option<(Point, Span)>,
+    /// A camera key was given but did not resolve (already reported), so
+    /// camera checks would only cascade.
+    failed: bool,
 }
 
 /// Lower a parsed file. Returns the scene only if no error was reported
@@ -381,12 +387,26 @@ impl Lowerer<'_> {
                     _ => None,
                 })
                 .collect();
-            if values.len() != st.clauses.len() || values.len() != 3 {
+            if let Some(bad) = st.clauses.iter().find(|c| !matches!(c, Clause::Value(_))) {
+                self.report(
+                    Diagnostic::new(
+                        Code::WrongType,
+                        bad.span(),
+                        "a light's parts are plain values, not `key = value` or names",
+                    )
+                    .with_help("write `%P, (diffuse r, g, b), (specular r, g, b);`"),
+                );
+                continue;
+            }
+            if values.len() != 3 {
                 self.report(
                     Diagnostic::new(
                         Code::WrongArity,
                         st.span,
-                        format!("a light takes 3 values, got {}", st.clauses.len()),
+                        format!(
+                            "a light takes 3 values (a point and two colours), got {}",
+                            values.len()
+                        ),
                     )
                     .with_help("write `%P, (diffuse r, g, b), (specular r, g, b);`"),
                 );
@@ -518,6 +538,14 @@ impl Lowerer<'_> {
                         self.integer_value(v[0], 1, MAX_RESOLUTION, value.span(), "width"),
                         self.integer_value(v[1], 1, MAX_RESOLUTION, value.span(), "height"),
                     ) {
+                        if w * h > MAX_PIXELS {
+                            self.error(
+                                Code::InvalidValue,
+                                value.span(),
+                                format!("{w}x{h} is more than {MAX_PIXELS} pixels"),
+                            );
+                            return;
+                        }
                         self.settings.resolution = Resolution {
                             width: w as u32,
                             height: h as u32,
@@ -556,18 +584,19 @@ impl Lowerer<'_> {
                 self.settings.background = self.rgb(value).unwrap_or(self.settings.background)
             }
             "ambient" => self.settings.ambient = self.rgb(value).unwrap_or(self.settings.ambient),
-            "from" | "eye" => {
-                self.camera_parts.eye = self.point_arg(value, "the eye").map(|p| (p, value.span()))
-            }
-            "to" => {
-                self.camera_parts.target = self
-                    .point_arg(value, "the view target")
-                    .map(|p| (p, value.span()))
-            }
-            "up" => {
-                self.camera_parts.up = self
-                    .point_arg(value, "the up point")
-                    .map(|p| (p, value.span()))
+            "from" | "eye" | "to" | "up" => {
+                let role = match key.text.as_str() {
+                    "to" => "the view target",
+                    "up" => "the up point",
+                    _ => "the eye",
+                };
+                let point = self.point_arg(value, role).map(|p| (p, value.span()));
+                self.camera_parts.failed |= point.is_none();
+                match key.text.as_str() {
+                    "to" => self.camera_parts.target = point,
+                    "up" => self.camera_parts.up = point,
+                    _ => self.camera_parts.eye = point,
+                }
             }
             other => self.report(
                 Diagnostic::new(
@@ -882,11 +911,28 @@ impl Lowerer<'_> {
         let Some(i) = self.resolve_point(target) else {
             return;
         };
-        let entry = &mut self.points[i];
-        entry.position = entry.position.map(|p| match p {
-            PointPosition::Interior(q) => PointPosition::Interior(iso.apply(&q)),
-            PointPosition::Ideal(q) => PointPosition::Ideal(iso.apply_ideal(&q)),
-        });
+        let moved = match self.points[i].position {
+            Some(PointPosition::Interior(q)) => match iso.try_apply(&q) {
+                Ok(p) => Some(PointPosition::Interior(p)),
+                Err(_) => {
+                    self.report(
+                        Diagnostic::new(
+                            Code::NumericFailure,
+                            target.span,
+                            format!(
+                                "this moves `{}` so close to the absolute that f64 cannot represent it",
+                                reference_text(target)
+                            ),
+                        )
+                        .with_help("f64 holds ball points out to about distance 37 from the origin; move it less far"),
+                    );
+                    None
+                }
+            },
+            Some(PointPosition::Ideal(q)) => Some(PointPosition::Ideal(iso.apply_ideal(&q))),
+            None => None,
+        };
+        self.points[i].position = moved;
     }
 
     fn resolve_line(&mut self, value: &Value) -> Option<Segment> {
@@ -965,17 +1011,20 @@ impl Lowerer<'_> {
 
     fn classify_point(&mut self, v: DVec3, span: Span) -> Option<PointPosition> {
         let norm = v.length();
+        // Ideal first: a point typed on the unit sphere whose f64 norm happens
+        // to round just below 1 must not become a far interior point.
+        if let Ok(ideal) = IdealPoint::try_new(v, IDEAL_TOLERANCE) {
+            return Some(PointPosition::Ideal(ideal));
+        }
         if let Ok(p) = Point::try_new(v) {
             if p.gap() < NEAR_ABSOLUTE_GAP {
+                // gap = 1 - |x|^2 = (1 - |x|)(1 + |x|), about twice 1 - |x| here.
                 self.report(
-                    Diagnostic::new(Code::PointNearAbsolute, span, format!("this point is within {:.1e} of the absolute; decimal rounding alone moves it noticeably", 1.0 - norm))
+                    Diagnostic::new(Code::PointNearAbsolute, span, format!("this point is within {:.1e} of the absolute; decimal rounding alone moves it noticeably", 0.5 * p.gap()))
                         .with_help("positions this close to the absolute are not reproducible in f64; move it inward or place it with transformations"),
                 );
             }
             return Some(PointPosition::Interior(p));
-        }
-        if let Ok(ideal) = IdealPoint::try_new(v, IDEAL_TOLERANCE) {
-            return Some(PointPosition::Ideal(ideal));
         }
         self.report(
             Diagnostic::new(Code::PointOutsideAbsolute, span, format!("point lies outside the absolute: |x| = {norm}"))
@@ -1262,14 +1311,17 @@ impl Lowerer<'_> {
     // ----- camera and lints -----------------------------------------------------
 
     fn camera(&mut self) -> Option<Camera> {
-        let eye = self
+        if self.camera_parts.failed {
+            return None;
+        }
+        let (eye, eye_span) = self
             .camera_parts
             .eye
-            .map(|(p, _)| p)
-            .unwrap_or(Point::ORIGIN);
+            .unwrap_or((Point::ORIGIN, Span::default()));
         let (target, target_span) = match self.camera_parts.target {
             Some(t) => t,
-            None => (Point::try_new(DEFAULT_TARGET).ok()?, Span::default()),
+            // The default target can only meet an explicit eye.
+            None => (Point::try_new(DEFAULT_TARGET).ok()?, eye_span),
         };
         if Segment::try_new(eye, target).is_err() {
             self.report(
@@ -1344,11 +1396,11 @@ impl Lowerer<'_> {
         let mut found = Vec::new();
         for (i, p) in self.points.iter().enumerate() {
             if !p.used && p.position.is_some() {
-                let name = p
-                    .name
-                    .as_ref()
-                    .map(|n| format!("%{n}"))
-                    .unwrap_or_else(|| format!("%{}", i + 1));
+                // The number always identifies it, even when a name is duplicated.
+                let name = match &p.name {
+                    Some(n) => format!("%{} (`{n}`)", i + 1),
+                    None => format!("%{}", i + 1),
+                };
                 found.push(Diagnostic::new(
                     Code::UnusedPoint,
                     p.span,
@@ -1358,12 +1410,10 @@ impl Lowerer<'_> {
         }
         for (i, m) in self.materials.iter().enumerate() {
             if !m.used {
-                let name = m
-                    .material
-                    .name
-                    .as_ref()
-                    .map(|n| format!("#{n}"))
-                    .unwrap_or_else(|| format!("#{}", i + 1));
+                let name = match &m.material.name {
+                    Some(n) => format!("#{} (`{n}`)", i + 1),
+                    None => format!("#{}", i + 1),
+                };
                 found.push(Diagnostic::new(
                     Code::UnusedMaterial,
                     m.span,
