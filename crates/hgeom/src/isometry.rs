@@ -72,9 +72,30 @@ impl Isometry {
     }
 
     /// The translation along the segment's h-line that maps its start to its
-    /// end: the reflection in the plane orthogonal to the segment at its start,
-    /// followed by the reflection in the segment's bisector plane.
+    /// end.
+    ///
+    /// SPEC 2.2 defines it as the reflection in the plane orthogonal to the
+    /// segment at its start followed by the reflection in its bisector plane
+    /// (see [`Isometry::translation_by_reflections`]). We evaluate the same map
+    /// as `tau_a tau_w tau_(-a)` with `w = (-a) (+) b`: a transvection
+    /// conjugated to the segment's line. Möbius addition keeps exact gaps,
+    /// where the bisector's normal `X_b - X_a` cancels for short segments.
     pub fn translation(segment: &Segment) -> Result<Isometry, GeomError> {
+        let a = segment.start();
+        let to_origin = Isometry::transvection_from_origin(a).inverse();
+        let w = to_origin.apply(&segment.end());
+        if w.coords() == DVec3::ZERO {
+            return Err(GeomError::Coincident);
+        }
+        Ok(to_origin
+            .inverse()
+            .compose(&Isometry::transvection_from_origin(w))
+            .compose(&to_origin))
+    }
+
+    /// The translation built literally as SPEC 2.2 defines it, from two
+    /// reflections. Equal to [`Isometry::translation`]; kept as its reference.
+    pub fn translation_by_reflections(segment: &Segment) -> Result<Isometry, GeomError> {
         let first = HPlane::orthogonal_at(&segment.start(), &segment.end())?;
         let second = HPlane::bisector(&segment.start(), &segment.end())?;
         Ok(Isometry::reflection(&second).compose(&Isometry::reflection(&first)))

@@ -6,16 +6,9 @@
 //! non-commutative and non-associative; the defect is a rotation, the
 //! *gyration* `gyr[u,v]`, with `u (+) (v (+) w) = (u (+) v) (+) gyr[u,v] w`.
 
-use glam::{DMat3, DVec3};
+use glam::{DMat3, DQuat, DVec3};
 
 use crate::point::{IdealPoint, Point};
-
-/// The denominator `1 + 2u.v + |u|^2|v|^2`, written as the cancellation-free
-/// sum `|u+v|^2 + gap_u gap_v` (both terms non-negative).
-#[inline]
-fn denominator(u: DVec3, v: DVec3, gap_u: f64, gap_v: f64) -> f64 {
-    (u + v).length_squared() + gap_u * gap_v
-}
 
 /// `u (+) v` on raw coordinates with their gaps; returns the sum and its gap.
 ///
@@ -49,23 +42,23 @@ pub fn add_ideal(u: &Point, v: &IdealPoint) -> IdealPoint {
 
 /// The gyration `gyr[u,v]` as a rotation matrix (an element of SO(3)).
 ///
-/// Closed form (Ungar): `gyr[u,v] w = w + 2 (A u + B v) / D` with
-/// `A = -(u.w)|v|^2 + (v.w) + 2(u.v)(v.w)`, `B = -(v.w)|u|^2 - (u.w)`,
-/// `D = 1 + 2u.v + |u|^2|v|^2`. Linear in `w`, so it is the matrix
-/// `I + (2/D)(u a^T + v b^T)` with `a = -|v|^2 u + (1 + 2u.v) v`, `b = -|u|^2 v - u`.
+/// In the plane of `u` and `v` Möbius addition is complex: `u (+) v =
+/// (u+v)/(1 + conj(u) v)`, so `gyr[u,v] = conj(z)/z` with `z = 1 + conj(u) v`,
+/// a rotation by `-2 arg z` about `u x v`. As a quaternion that is
+/// `(1 + u.v, -(u x v))`, normalised. With `2(1 + u.v) = |u+v|^2 + gap_u + gap_v`
+/// (a sum of non-negative terms) this stays accurate where Ungar's matrix form
+/// `I + (2/D)(u a^T + v b^T)` cancels catastrophically (far, nearly opposite
+/// `u` and `v`), and the result is orthogonal by construction.
 pub fn gyration(u: DVec3, gap_u: f64, v: DVec3, gap_v: f64) -> DMat3 {
-    let d = denominator(u, v, gap_u, gap_v);
-    let uv = u.dot(v);
-    let a = -v.length_squared() * u + (1.0 + 2.0 * uv) * v;
-    let b = -u.length_squared() * v - u;
-    let k = 2.0 / d;
-    DMat3::IDENTITY + outer(u * k, a) + outer(v * k, b)
-}
-
-/// `x y^T` as a glam column-major matrix.
-#[inline]
-fn outer(x: DVec3, y: DVec3) -> DMat3 {
-    DMat3::from_cols(x * y.x, x * y.y, x * y.z)
+    let w = 0.5 * ((u + v).length_squared() + gap_u + gap_v);
+    let c = u.cross(v);
+    let q = DQuat::from_xyzw(-c.x, -c.y, -c.z, w);
+    let len = q.length();
+    if len > 0.0 && len.is_finite() {
+        DMat3::from_quat(q / len)
+    } else {
+        DMat3::IDENTITY
+    }
 }
 
 #[cfg(test)]

@@ -9,10 +9,12 @@ use crate::lorentz;
 /// A point of hyperbolic 3-space in the Poincaré ball.
 ///
 /// Invariants: the coordinates are finite, `|x| < 1`, and the cached `gap`
-/// equals `1 - |x|^2 > 0` to a few ulps *of the gap itself* (computed with
-/// compensated arithmetic, or propagated exactly through isometries). The gap
-/// is what carries precision near the absolute: distances are computed from
-/// it, never from a naive `1 - |x|^2`.
+/// is `1 - |x|^2 > 0` of the represented point, correct to a few ulps *of the
+/// gap itself* (computed with compensated arithmetic, or propagated exactly
+/// through isometries). Far out (distance above ~18) the gap is more precise
+/// than the rounded coordinates can express: it is the point's extra
+/// precision, like the low word of a double-double, and distances are
+/// computed from it, never from a naive `1 - |x|^2`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Point {
     coords: DVec3,
@@ -66,7 +68,11 @@ impl Point {
         // The gap can stay positive past the point where the coordinates
         // themselves round onto the absolute (distance ~37); such a point no
         // longer has usable ball coordinates.
-        self.coords.is_finite() && self.gap > 0.0 && one_minus_norm_sq(self.coords) > 0.0
+        // Ball coordinates reach distance ~37.4 at most (1 - |x| = 2^-53, gap
+        // ~2^-52); a smaller gap belongs to a point f64 cannot place.
+        self.coords.is_finite()
+            && self.gap >= 0.5 * f64::EPSILON
+            && one_minus_norm_sq(self.coords) > 0.0
     }
 
     /// Ball coordinates.

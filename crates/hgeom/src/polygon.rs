@@ -159,8 +159,15 @@ impl ConvexPolygon {
         }
         let cosh = 1.0 / ((1.0 - tau) * (1.0 + tau)).sqrt();
         let point = cosh * ray.origin + (tau * cosh) * ray.dir;
-        let slack = -1e-12 * point.w;
-        if self.edges.iter().all(|e| lorentz::dot(point, *e) >= slack) {
+        // Rounding in <P,E> scales with |P||E| (both grow like cosh of the
+        // distance from the origin); a slack of that size keeps shared edges
+        // watertight, so rays through an edge of a solid hit one of its faces.
+        let slack = -1e-10 * point.length();
+        if self
+            .edges
+            .iter()
+            .all(|e| lorentz::dot(point, *e) >= slack * e.length())
+        {
             Some(Hit {
                 t,
                 point,

@@ -98,13 +98,16 @@ pub fn refract(d: DVec4, n: DVec4, n1: f64, n2: f64) -> Option<DVec4> {
 /// The unit hyperboloid tangent at `p` for a ball direction `w` at `p`.
 ///
 /// The differential of `p -> ((1+|p|^2), 2p)/(1-|p|^2)` maps `w` to
-/// `(2 g w + 4 (p.w) p, 4 p.w) / g^2` with `g = 1 - |p|^2`; we normalise it.
+/// `(2 g w + 4 (p.w) p, 4 p.w) / g^2` with `g = 1 - |p|^2`, of Lorentz length
+/// `2|w|/g` (the conformal factor). Dividing by that exact length, rather
+/// than by a computed Lorentz norm that cancels far from the origin, keeps
+/// the result a unit tangent to rounding.
 pub fn hyperboloid_direction(p: &Point, w: DVec3) -> DVec4 {
     let c = p.coords();
     let g = p.gap();
     let pw = c.dot(w);
     let v = (2.0 * g * w + 4.0 * pw * c).extend(4.0 * pw);
-    v / lorentz::norm(v)
+    v / (2.0 * g * w.length())
 }
 
 /// The unit ball direction at `x`'s ball point for the hyperboloid tangent `v`.
