@@ -798,21 +798,26 @@ impl Lowerer<'_> {
                 }
             }
             _ => {
-                self.report(
-                    Diagnostic::new(
-                        Code::WrongArity,
-                        span,
-                        format!("`{}` takes two points", name.text),
-                    )
-                    .with_help("write `hline (%A, %B);`"),
+                self.wrong_arity(
+                    span,
+                    format!("`{}` takes two points", name.text),
+                    "write `hline (%A, %B);`",
                 );
                 None
             }
         };
-        if let Some(label) = label {
-            self.declare_name(NameKind::Line, label);
-        }
+        self.declare_label(NameKind::Line, label);
         self.lines.push(segment);
+    }
+
+    fn wrong_arity(&mut self, span: Span, message: String, usage: &str) {
+        self.report(Diagnostic::new(Code::WrongArity, span, message).with_help(usage));
+    }
+
+    fn declare_label(&mut self, kind: NameKind, label: Option<&Ident>) {
+        if let Some(label) = label {
+            self.declare_name(kind, label);
+        }
     }
 
     fn declare_plane(
@@ -837,20 +842,15 @@ impl Lowerer<'_> {
                 }
             }
             _ => {
-                self.report(
-                    Diagnostic::new(
-                        Code::WrongArity,
-                        span,
-                        format!("`{}` takes three points", name.text),
-                    )
-                    .with_help("write `hplane (%A, %B, %C);`"),
+                self.wrong_arity(
+                    span,
+                    format!("`{}` takes three points", name.text),
+                    "write `hplane (%A, %B, %C);`",
                 );
                 None
             }
         };
-        if let Some(label) = label {
-            self.declare_name(NameKind::Plane, label);
-        }
+        self.declare_label(NameKind::Plane, label);
         self.planes.push(plane);
     }
 
