@@ -4,7 +4,7 @@ use glam::DVec3;
 
 use crate::distance::distance;
 use crate::error::GeomError;
-use crate::lorentz;
+use crate::mobius::add_raw;
 use crate::point::Point;
 
 /// A geodesic segment between two distinct h-points; its h-line is the whole
@@ -43,10 +43,22 @@ impl Segment {
 
     /// The unit tangent (in ball coordinates, a Euclidean unit vector: the
     /// model is conformal) of the geodesic at `start`, pointing towards `end`.
+    ///
+    /// The transvection `x -> start (+) x` carries the diameter towards
+    /// `w = (-start) (+) end` onto this segment, and its differential at the
+    /// origin is a positive multiple of the identity, so the direction is
+    /// exactly `w / |w|`; Möbius addition keeps it accurate far out, where
+    /// the hyperboloid form cancels.
     pub fn direction_at_start(&self) -> DVec3 {
-        let x = self.start.to_hyperboloid();
-        let (v, _) = lorentz::direction_towards(x, self.end.to_hyperboloid())
-            .expect("segment end points are distinct by invariant");
-        crate::ray::ball_direction(x, v)
+        let a = self.start;
+        let (w, _) = add_raw(-a.coords(), a.gap(), self.end.coords(), self.end.gap());
+        let len = w.length();
+        if len > 0.0 && len.is_finite() {
+            w / len
+        } else {
+            // Only for points a few ulps apart, where the chord is the tangent
+            // to rounding.
+            (self.end.coords() - a.coords()).normalize()
+        }
     }
 }
