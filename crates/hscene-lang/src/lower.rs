@@ -399,16 +399,13 @@ impl Lowerer<'_> {
                 continue;
             }
             if values.len() != 3 {
-                self.report(
-                    Diagnostic::new(
-                        Code::WrongArity,
-                        st.span,
-                        format!(
-                            "a light takes 3 values (a point and two colours), got {}",
-                            values.len()
-                        ),
-                    )
-                    .with_help("write `%P, (diffuse r, g, b), (specular r, g, b);`"),
+                self.wrong_arity(
+                    st.span,
+                    format!(
+                        "a light takes 3 values (a point and two colours), got {}",
+                        values.len()
+                    ),
+                    "write `%P, (diffuse r, g, b), (specular r, g, b);`",
                 );
                 continue;
             }
@@ -639,13 +636,10 @@ impl Lowerer<'_> {
         span: Span,
     ) -> Option<(Shape, MaterialId)> {
         let (Some(center), [radius, material]) = (arg, rest) else {
-            self.report(
-                Diagnostic::new(
-                    Code::WrongArity,
-                    span,
-                    "`Sphere` takes a centre, a radius and a material",
-                )
-                .with_help("write `Sphere %P, radius, #M;` (radius is hyperbolic)"),
+            self.wrong_arity(
+                span,
+                "`Sphere` takes a centre, a radius and a material",
+                "write `Sphere %P, radius, #M;` (radius is hyperbolic)",
             );
             return None;
         };
@@ -666,16 +660,13 @@ impl Lowerer<'_> {
         span: Span,
     ) -> Option<(Shape, MaterialId)> {
         let (Some(size), [material]) = (arg, rest) else {
-            self.report(
-                Diagnostic::new(
-                    Code::WrongArity,
-                    span,
-                    format!("`{}` takes a size and a material", name.text),
-                )
-                .with_help(format!(
+            self.wrong_arity(
+                span,
+                format!("`{}` takes a size and a material", name.text),
+                format!(
                     "write `{} size, #M;` (size: hyperbolic circumradius)",
                     name.text
-                )),
+                ),
             );
             return None;
         };
@@ -709,13 +700,10 @@ impl Lowerer<'_> {
             [material],
         ) = (arg, rest)
         else {
-            self.report(
-                Diagnostic::new(
-                    Code::WrongArity,
-                    span,
-                    "`Polygon` takes a vertex list and a material",
-                )
-                .with_help("write `Polygon (%1, %2, %3), #M;`"),
+            self.wrong_arity(
+                span,
+                "`Polygon` takes a vertex list and a material",
+                "write `Polygon (%1, %2, %3), #M;`",
             );
             return None;
         };
@@ -810,7 +798,7 @@ impl Lowerer<'_> {
         self.lines.push(segment);
     }
 
-    fn wrong_arity(&mut self, span: Span, message: String, usage: &str) {
+    fn wrong_arity(&mut self, span: Span, message: impl Into<String>, usage: impl Into<String>) {
         self.report(Diagnostic::new(Code::WrongArity, span, message).with_help(usage));
     }
 
@@ -894,13 +882,10 @@ impl Lowerer<'_> {
                     }
                     _ => "`%P->Reflect(S);` (S: an h-plane number)",
                 };
-                self.report(
-                    Diagnostic::new(
-                        Code::WrongArity,
-                        span,
-                        format!("wrong number of arguments to `{n}`"),
-                    )
-                    .with_help(format!("write {usage}")),
+                self.wrong_arity(
+                    span,
+                    format!("wrong number of arguments to `{n}`"),
+                    format!("write {usage}"),
                 );
                 None
             }
