@@ -39,9 +39,12 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod accurate;
+mod cylinder;
 mod distance;
 mod error;
+mod horosphere;
 mod isometry;
+mod line;
 pub mod lorentz;
 pub mod mobius;
 mod plane;
@@ -49,17 +52,23 @@ mod point;
 mod polygon;
 mod polyhedron;
 pub mod ray;
+mod rod;
+mod roots;
 mod segment;
 mod sphere;
 
+pub use cylinder::HCylinder;
 pub use distance::distance;
 pub use error::GeomError;
+pub use horosphere::Horosphere;
 pub use isometry::Isometry;
+pub use line::HLine;
 pub use plane::{BallShape, HPlane};
 pub use point::{IdealPoint, Point, Vertex};
 pub use polygon::ConvexPolygon;
 pub use polyhedron::{Platonic, Polyhedron};
 pub use ray::{Hit, Ray};
+pub use rod::Rod;
 pub use segment::Segment;
 pub use sphere::HSphere;
 

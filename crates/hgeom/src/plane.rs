@@ -3,8 +3,10 @@
 use glam::{DVec3, DVec4};
 
 use crate::error::GeomError;
+use crate::isometry::Isometry;
 use crate::lorentz;
 use crate::point::{Point, Vertex};
+use crate::ray::{Hit, Ray};
 
 /// An oriented h-plane.
 ///
@@ -102,6 +104,54 @@ impl HPlane {
     /// Signed hyperbolic distance from the point to the plane.
     pub fn signed_distance(&self, p: &Point) -> f64 {
         self.signed_sinh_distance(p).asinh()
+    }
+
+    /// The image under an isometry (the normal is carried by its Lorentz matrix).
+    pub fn transformed(&self, iso: &Isometry) -> HPlane {
+        let n = iso.to_lorentz() * self.normal;
+        // Lorentz maps preserve <N,N> = 1; renormalising only removes rounding.
+        HPlane {
+            normal: n / lorentz::norm(n).max(f64::MIN_POSITIVE),
+        }
+    }
+
+    /// The first intersection with `t` in `(t_min, t_max)`; the hit normal is
+    /// the plane's own `N` (on its positive side).
+    ///
+    /// Along the ray `<X(t),N> = o cosh t + d sinh t` with `o = <X,N>`,
+    /// `d = <V,N>`, so the plane is met at `tanh t = -o/d`. Near the ray's
+    /// origin `t = atanh(-o/d)`; once `|tanh t| > 1/2` the same root is taken
+    /// as `t = ln((d-o)/(d+o))/2` with `d -+ o = <V -+ X, N>` formed directly,
+    /// so `1 - tanh t` is never computed by cancellation. A ray parallel to
+    /// the plane, or meeting it only beyond the absolute, misses.
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        let t = self.crossing(ray)?;
+        if !(t > t_min && t < t_max) {
+            return None;
+        }
+        Some(Hit {
+            t,
+            point: ray.at(t),
+            normal: self.normal,
+        })
+    }
+
+    /// The arc length at which the ray's geodesic crosses the plane (of
+    /// either sign), if it does.
+    pub fn crossing(&self, ray: &Ray) -> Option<f64> {
+        let o = lorentz::dot(ray.origin, self.normal);
+        let d = lorentz::dot(ray.dir, self.normal);
+        let tau = -o / d;
+        if !(tau.abs() < 1.0) {
+            return None;
+        }
+        if tau.abs() <= 0.5 {
+            return Some(tau.atanh());
+        }
+        let minus = lorentz::dot(ray.dir - ray.origin, self.normal);
+        let plus = lorentz::dot(ray.dir + ray.origin, self.normal);
+        let t = 0.5 * (minus / plus).ln();
+        t.is_finite().then_some(t)
     }
 
     /// The plane as a Euclidean object in the ball. With `N = (n, n_t)`:

@@ -174,6 +174,13 @@ impl IdealPoint {
         Ok(IdealPoint { dir: coords / norm })
     }
 
+    /// An ideal point from a vector the caller guarantees to be a unit vector
+    /// (to rounding). For hot paths and constants; nothing is checked.
+    #[inline]
+    pub const fn from_unit_unchecked(dir: DVec3) -> IdealPoint {
+        IdealPoint { dir }
+    }
+
     /// The ideal point at the end of the ray from the origin in direction `dir`.
     pub fn from_direction(dir: DVec3) -> Result<IdealPoint, GeomError> {
         let len = dir.length();

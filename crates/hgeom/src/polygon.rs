@@ -144,38 +144,16 @@ impl ConvexPolygon {
     /// met at `tanh t = -<X,N>/<V,N>`; a ray parallel to the plane (or meeting
     /// it only beyond the absolute) misses. The hit's normal is the plane's.
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        let n = self.plane.normal();
-        let vn = lorentz::dot(ray.dir, n);
-        if vn == 0.0 {
-            return None;
-        }
-        let tau = -lorentz::dot(ray.origin, n) / vn;
-        if !(tau.abs() < 1.0) {
-            return None;
-        }
-        let t = tau.atanh();
-        if !(t > t_min && t < t_max) {
-            return None;
-        }
-        let cosh = 1.0 / ((1.0 - tau) * (1.0 + tau)).sqrt();
-        let point = cosh * ray.origin + (tau * cosh) * ray.dir;
+        let hit = self.plane.intersect(ray, t_min, t_max)?;
+        let point = hit.point;
         // Rounding in <P,E> scales with |P||E| (both grow like cosh of the
         // distance from the origin); a slack of that size keeps shared edges
         // watertight, so rays through an edge of a solid hit one of its faces.
         let slack = -1e-10 * point.length();
-        if self
-            .edges
+        self.edges
             .iter()
             .all(|e| lorentz::dot(point, *e) >= slack * e.length())
-        {
-            Some(Hit {
-                t,
-                point,
-                normal: n,
-            })
-        } else {
-            None
-        }
+            .then_some(hit)
     }
 }
 

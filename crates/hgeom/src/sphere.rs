@@ -7,6 +7,7 @@ use crate::isometry::Isometry;
 use crate::lorentz;
 use crate::point::Point;
 use crate::ray::{Hit, Ray};
+use crate::roots::{exp_roots, first_in_range};
 
 /// An h-sphere with hyperbolic centre and radius.
 ///
@@ -90,33 +91,22 @@ impl HSphere {
     /// roots are positive and `t = ln u` is defined. A tangent ray (zero
     /// discriminant) touches at one point; no input gives NaN.
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        let a = -lorentz::dot(ray.origin, self.center_h);
-        let b = -lorentz::dot(ray.dir, self.center_h);
-        let k = self.cosh_r;
-        let disc = k * k - (a - b) * (a + b);
-        if !(disc >= 0.0) {
-            return None;
-        }
-        let root = disc.sqrt();
-        let big = k + root;
-        let near = ((a - b) / big).ln();
-        let far = (big / (a + b)).ln();
-        let t = if near > t_min {
-            near
-        } else if far > t_min {
-            far
-        } else {
-            return None;
-        };
-        if !(t < t_max) {
-            return None;
-        }
+        let (near, far) = self.roots(ray)?;
+        let t = first_in_range(near, far, t_min, t_max)?;
         let point = ray.at(t);
         Some(Hit {
             t,
             point,
             normal: self.normal_at(point),
         })
+    }
+
+    /// Both arc lengths (possibly negative or infinite, never NaN) at which
+    /// the ray's geodesic meets the sphere, nearest first; `None` if it misses.
+    pub fn roots(&self, ray: &Ray) -> Option<(f64, f64)> {
+        let a = -lorentz::dot(ray.origin, self.center_h);
+        let b = -lorentz::dot(ray.dir, self.center_h);
+        exp_roots(a + b, self.cosh_r, a - b)
     }
 
     /// Outward unit normal at a point of the sphere (a tangent vector there).

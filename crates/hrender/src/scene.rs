@@ -2,7 +2,10 @@
 //! once, in f64, so near the eye every quantity is small and well conditioned.
 
 use hgeom::glam::DVec4;
-use hgeom::{ConvexPolygon, HSphere, Hit, Isometry, Polyhedron, Ray, Vertex};
+use hgeom::{
+    ConvexPolygon, HCylinder, HPlane, HSphere, Hit, Horosphere, Isometry, Polyhedron, Ray, Rod,
+    Vertex,
+};
 use hscene_lang::ir::{self, Material, Rgb, Scene};
 
 use crate::error::RenderError;
@@ -16,6 +19,16 @@ pub enum Primitive {
     Polygon(ConvexPolygon),
     /// A polyhedral surface.
     Polyhedron(Polyhedron),
+    /// A whole h-plane.
+    Plane(HPlane),
+    /// A rod about a segment.
+    Rod(Rod),
+    /// An h-cylinder about a whole line.
+    Cylinder(HCylinder),
+    /// A horosphere.
+    Horosphere(Horosphere),
+    /// A set of rods.
+    Wireframe(Vec<Rod>),
 }
 
 impl Primitive {
@@ -24,6 +37,13 @@ impl Primitive {
             ir::Shape::Sphere(s) => Primitive::Sphere(s.transformed(iso)),
             ir::Shape::Polygon(p) => Primitive::Polygon(p.transformed(iso)),
             ir::Shape::Polyhedron(p) => Primitive::Polyhedron(p.transformed(iso)),
+            ir::Shape::Plane(p) => Primitive::Plane(p.transformed(iso)),
+            ir::Shape::Rod(r) => Primitive::Rod(r.transformed(iso)),
+            ir::Shape::Cylinder(c) => Primitive::Cylinder(c.transformed(iso)),
+            ir::Shape::Horosphere(h) => Primitive::Horosphere(h.transformed(iso)),
+            ir::Shape::Wireframe(rods) => {
+                Primitive::Wireframe(rods.iter().map(|r| r.transformed(iso)).collect())
+            }
         }
     }
 
@@ -39,6 +59,13 @@ impl Primitive {
             Primitive::Polyhedron(p) => {
                 p.faces().iter().all(|f| f.vertices().iter().all(vertex_ok))
             }
+            Primitive::Plane(p) => p.normal().is_finite(),
+            Primitive::Rod(r) => vertex_ok(&r.start()) && vertex_ok(&r.end()),
+            Primitive::Cylinder(c) => c.line().base().is_representable(),
+            Primitive::Horosphere(h) => h.euclidean().1.is_finite(),
+            Primitive::Wireframe(rods) => rods
+                .iter()
+                .all(|r| vertex_ok(&r.start()) && vertex_ok(&r.end())),
         }
     }
 
@@ -49,6 +76,21 @@ impl Primitive {
             Primitive::Sphere(s) => s.intersect(ray, t_min, t_max),
             Primitive::Polygon(p) => p.intersect(ray, t_min, t_max),
             Primitive::Polyhedron(p) => p.intersect(ray, t_min, t_max),
+            Primitive::Plane(p) => p.intersect(ray, t_min, t_max),
+            Primitive::Rod(r) => r.intersect(ray, t_min, t_max),
+            Primitive::Cylinder(c) => c.intersect(ray, t_min, t_max),
+            Primitive::Horosphere(h) => h.intersect(ray, t_min, t_max),
+            Primitive::Wireframe(rods) => {
+                let mut best: Option<Hit> = None;
+                let mut limit = t_max;
+                for r in rods {
+                    if let Some(hit) = r.intersect(ray, t_min, limit) {
+                        limit = hit.t;
+                        best = Some(hit);
+                    }
+                }
+                best
+            }
         }
     }
 }

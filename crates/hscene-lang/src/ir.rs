@@ -4,7 +4,9 @@
 //! resolved, every transformation applied, every default filled in. The IR
 //! carries no source text and no spans; the renderer needs nothing else.
 
-use hgeom::{ConvexPolygon, HSphere, IdealPoint, Point, Polyhedron};
+use hgeom::{
+    ConvexPolygon, HCylinder, HPlane, HSphere, Horosphere, IdealPoint, Point, Polyhedron, Rod,
+};
 
 /// A linear RGB triple.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -166,6 +168,16 @@ pub enum Shape {
     Polygon(ConvexPolygon),
     /// A polyhedral surface (faces oriented outward).
     Polyhedron(Polyhedron),
+    /// A whole h-plane (its normal side is the outside).
+    Plane(HPlane),
+    /// The points within a distance of an h-segment.
+    Rod(Rod),
+    /// The points at a distance from a whole h-line.
+    Cylinder(HCylinder),
+    /// A horosphere (the outside is away from its ideal centre).
+    Horosphere(Horosphere),
+    /// A wireframe: the edges of a polygon or polyhedron as rods.
+    Wireframe(Vec<Rod>),
 }
 
 /// A renderable object.

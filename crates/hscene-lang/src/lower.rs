@@ -12,7 +12,7 @@ use std::collections::HashMap;
 use hgeom::glam::DVec3;
 use hgeom::{
     ConvexPolygon, GeomError, HPlane, HSphere, IdealPoint, Isometry, Platonic, Point, Polyhedron,
-    Segment, Vertex, lorentz,
+    Rod, Segment, Vertex, lorentz,
 };
 
 use crate::diagnostic::{Code, Diagnostic, Span};
@@ -1422,6 +1422,12 @@ fn contains(shape: &Shape, x: hgeom::glam::DVec4) -> bool {
                     .iter()
                     .all(|f| lorentz::dot(x, f.plane().normal()) < 0.0)
         }
+        // A plane bounds a half-space, not an object one can be inside of.
+        Shape::Plane(_) => false,
+        Shape::Rod(r) => r.contains(x),
+        Shape::Cylinder(c) => c.contains(x),
+        Shape::Horosphere(h) => h.contains(x),
+        Shape::Wireframe(rods) => rods.iter().any(|r| r.contains(x)),
     }
 }
 
@@ -1434,7 +1440,23 @@ fn entirely_behind(shape: &Shape, plane: &HPlane) -> bool {
             .faces()
             .iter()
             .all(|f| f.vertices().iter().all(vertex_behind)),
+        // Unbounded surfaces always reach in front of the eye's plane.
+        Shape::Plane(_) | Shape::Cylinder(_) | Shape::Horosphere(_) => false,
+        Shape::Rod(r) => rod_behind(r, plane),
+        Shape::Wireframe(rods) => rods.iter().all(|r| rod_behind(r, plane)),
     }
+}
+
+/// A rod is behind the plane when both ends are, by more than its radius
+/// (the rod lies within its radius of the segment, which is behind if its
+/// ends are: half-spaces are convex).
+fn rod_behind(rod: &Rod, plane: &HPlane) -> bool {
+    let end_behind = |v: Vertex| match v {
+        Vertex::Interior(p) => plane.signed_distance(&p) < -rod.radius(),
+        // An ideal end: the rod's tube reaches the absolute there.
+        Vertex::Ideal(_) => false,
+    };
+    end_behind(rod.start()) && end_behind(rod.end())
 }
 
 #[derive(Clone, Copy, PartialEq, Eq)]

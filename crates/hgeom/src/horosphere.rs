@@ -1,0 +1,172 @@
+//! Horospheres: limits of h-spheres whose centre runs off to an ideal point.
+
+use glam::{DVec3, DVec4};
+
+use crate::error::GeomError;
+use crate::isometry::Isometry;
+use crate::lorentz;
+use crate::point::{IdealPoint, Point};
+use crate::ray::{Hit, Ray};
+use crate::roots::{exp_roots, first_in_range};
+
+/// A horosphere centred at an ideal point.
+///
+/// With `L = (xi, 1)` the null vector of the centre `xi`, the horosphere is
+/// `{X : -<X,L> = k}` and its horoball (the inside, towards `xi`) is
+/// `-<X,L> < k`. In the ball it is a Euclidean sphere tangent to the
+/// absolute at `xi`.
+///
+/// Invariants: `center` is a unit vector; `k > 0` and finite.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Horosphere {
+    center: IdealPoint,
+    null: DVec4,
+    k: f64,
+}
+
+impl Horosphere {
+    /// The horosphere centred at `center` passing through `through`.
+    pub fn try_new(center: IdealPoint, through: &Point) -> Result<Horosphere, GeomError> {
+        if !through.is_representable() {
+            return Err(GeomError::NotInBall {
+                norm: through.coords().length(),
+            });
+        }
+        let null = center.to_hyperboloid();
+        // -<X,L> for X = ((1+|p|^2), 2p)/g and L = (xi, 1) is
+        // ((1+|p|^2) - 2 p.xi)/g = (|p - xi|^2)/g: a sum of squares, no cancellation.
+        let k = (through.coords() - center.coords()).length_squared() / through.gap();
+        if !(k > 0.0 && k.is_finite()) {
+            return Err(GeomError::Coincident);
+        }
+        Ok(Horosphere { center, null, k })
+    }
+
+    /// The ideal centre.
+    pub fn center(&self) -> IdealPoint {
+        self.center
+    }
+
+    /// The horosphere as a Euclidean sphere in the ball: tangent to the
+    /// absolute at the centre `xi`, with centre `xi/(1+k)` and radius `k/(1+k)`.
+    ///
+    /// (It meets the diameter towards `xi` at `s xi` with `k = (1-s)/(1+s)`,
+    /// so its Euclidean diameter is `1 - s = 2k/(1+k)`.)
+    pub fn euclidean(&self) -> (DVec3, f64) {
+        let inv = 1.0 / (1.0 + self.k);
+        (self.center.coords() * inv, self.k * inv)
+    }
+
+    /// The image under an isometry.
+    pub fn transformed(&self, iso: &Isometry) -> Horosphere {
+        // Isometries map horospheres to horospheres; the level k changes
+        // because L is only defined up to scale: carry the null vector along
+        // and rescale it to time component 1.
+        let l = iso.to_lorentz() * self.null;
+        let center = iso.apply_ideal(&self.center);
+        let scale = center.to_hyperboloid().w / l.w;
+        Horosphere {
+            center,
+            null: center.to_hyperboloid(),
+            k: self.k * scale,
+        }
+    }
+
+    /// True if the hyperboloid point is strictly inside the horoball.
+    pub fn contains(&self, x: DVec4) -> bool {
+        -lorentz::dot(x, self.null) < self.k
+    }
+
+    /// The first intersection with `t` in `(t_min, t_max)`; the normal points
+    /// out of the horoball.
+    ///
+    /// Along the ray `-<X(t),L> = a cosh t + b sinh t` with `a = -<X,L>`,
+    /// `b = -<V,L>`; in `u = e^t`, `(a+b) u^2 - 2k u + (a-b) = 0`, where
+    /// `a +- b = -<X +- V, L> >= 0` (two future null/causal vectors).
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        let a = -lorentz::dot(ray.origin, self.null);
+        let b = -lorentz::dot(ray.dir, self.null);
+        let (near, far) = exp_roots(a + b, self.k, a - b)?;
+        let t = first_in_range(near, far, t_min, t_max)?;
+        let point = ray.at(t);
+        Some(Hit {
+            t,
+            point,
+            normal: self.normal_at(point),
+        })
+    }
+
+    /// Unit normal out of the horoball at a point of the horosphere: the
+    /// tangent projection `-(L + cX)` of the gradient of `-<X,L>`, with
+    /// `c = <X,L>`; its Lorentz length is exactly `|c|`.
+    pub fn normal_at(&self, x: DVec4) -> DVec4 {
+        let c = lorentz::dot(x, self.null);
+        let n = self.null + c * x;
+        if c < 0.0 && c.is_finite() {
+            n / c
+        } else {
+            // <X,L> < 0 for every point of the hyperboloid; unreachable in exact
+            // arithmetic, but keep a unit tangent rather than NaN.
+            DVec4::X
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::point::Point;
+
+    #[test]
+    fn through_point_is_on_it_and_euclidean_form_is_tangent() {
+        let xi = IdealPoint::from_direction(DVec3::new(0.0, 0.0, 1.0)).unwrap();
+        let q = Point::try_new(DVec3::new(0.0, 0.0, 0.2)).unwrap();
+        let h = Horosphere::try_new(xi, &q).unwrap();
+        let (c, r) = h.euclidean();
+        assert!(((q.coords() - c).length() - r).abs() < 1e-15);
+        assert!(((xi.coords() - c).length() - r).abs() < 1e-15);
+    }
+
+    #[test]
+    fn ray_towards_the_centre_hits_at_the_through_point() {
+        let xi = IdealPoint::from_direction(DVec3::new(1.0, 1.0, 0.0)).unwrap();
+        let q = Point::at_distance_from_origin(DVec3::new(1.0, 1.0, 0.0), 1.5).unwrap();
+        let h = Horosphere::try_new(xi, &q).unwrap();
+        let hit = h
+            .intersect(
+                &Ray::from_origin(DVec3::new(1.0, 1.0, 0.0)),
+                0.0,
+                f64::INFINITY,
+            )
+            .unwrap();
+        assert!((hit.t - 1.5).abs() < 1e-14);
+        // Outward normal points back towards the origin: against the ray.
+        assert!(
+            lorentz::dot(
+                hit.normal,
+                Ray::from_origin(DVec3::new(1.0, 1.0, 0.0)).tangent_at(hit.t)
+            ) < -0.999
+        );
+        // A ray away from the centre misses.
+        assert!(
+            h.intersect(
+                &Ray::from_origin(DVec3::new(-1.0, -1.0, 0.0)),
+                0.0,
+                f64::INFINITY
+            )
+            .is_none()
+        );
+    }
+
+    #[test]
+    fn transformed_horosphere_contains_the_image_point() {
+        let xi = IdealPoint::from_direction(DVec3::new(0.0, 1.0, 0.0)).unwrap();
+        let q = Point::try_new(DVec3::new(0.1, 0.3, -0.2)).unwrap();
+        let h = Horosphere::try_new(xi, &q).unwrap();
+        let iso =
+            Isometry::transvection_from_origin(Point::try_new(DVec3::new(0.4, -0.2, 0.1)).unwrap());
+        let h2 = h.transformed(&iso);
+        let q2 = iso.apply(&q).to_hyperboloid();
+        assert!((-lorentz::dot(q2, h2.null) - h2.k).abs() < 1e-14 * h2.k.max(1.0));
+    }
+}

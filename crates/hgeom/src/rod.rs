@@ -1,0 +1,277 @@
+//! Rods (the thesis's "h-valjak"): the points within distance `r` of an
+//! h-segment. Wireframe polygons and polyhedra draw their edges with them.
+
+use glam::DVec4;
+
+use crate::cylinder::HCylinder;
+use crate::distance::distance;
+use crate::error::GeomError;
+use crate::isometry::Isometry;
+use crate::line::HLine;
+use crate::lorentz;
+use crate::point::Vertex;
+use crate::ray::{Hit, Ray};
+use crate::sphere::HSphere;
+
+/// The solid of points within hyperbolic distance `radius` of the geodesic
+/// segment from `start` to `end`.
+///
+/// Its boundary is the part of the h-cylinder about the segment's line that
+/// lies between the two h-planes orthogonal to the line at the end points,
+/// closed by two hemispherical caps (halves of the h-spheres of radius `r`
+/// about the end points). An ideal end point makes the rod run out to the
+/// absolute on that side, with no cap: a rod between two ideal points is a
+/// whole h-cylinder.
+///
+/// Invariants: `start != end`; `radius > 0`; each cap exists exactly when its
+/// end point is an h-point, and the end planes' normals `U_start`, `U_end`
+/// are the unit tangents of the line at those points, pointing from `start`
+/// towards `end`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Rod {
+    start: Vertex,
+    end: Vertex,
+    tube: HCylinder,
+    start_cap: Option<Cap>,
+    end_cap: Option<Cap>,
+}
+
+/// A hemispherical end of a rod: the sphere about the end point, and the
+/// unit tangent of the axis there (the normal of the end plane).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Cap {
+    sphere: HSphere,
+    axis: DVec4,
+}
+
+impl Rod {
+    /// The rod of hyperbolic `radius` about the segment `start -> end`.
+    pub fn try_new(start: Vertex, end: Vertex, radius: f64) -> Result<Rod, GeomError> {
+        let line = HLine::through(&start, &end)?;
+        let tube = HCylinder::try_new(line, radius)?;
+        let frame = line.frame();
+        let (p, u) = (frame.w_axis, frame.z_axis);
+        // HLine::through puts the base point at `start` when it is an h-point,
+        // else at `end` when that one is: the tangent there is U itself.
+        let (start_cap, end_cap) = match (start, end) {
+            (Vertex::Interior(a), Vertex::Interior(b)) => {
+                let len = distance(&a, &b);
+                let at_end = len.sinh() * p + len.cosh() * u;
+                (
+                    Some(Cap {
+                        sphere: HSphere::try_new(a, radius)?,
+                        axis: u,
+                    }),
+                    Some(Cap {
+                        sphere: HSphere::try_new(b, radius)?,
+                        axis: at_end,
+                    }),
+                )
+            }
+            (Vertex::Interior(a), Vertex::Ideal(_)) => (
+                Some(Cap {
+                    sphere: HSphere::try_new(a, radius)?,
+                    axis: u,
+                }),
+                None,
+            ),
+            (Vertex::Ideal(_), Vertex::Interior(b)) => (
+                None,
+                Some(Cap {
+                    sphere: HSphere::try_new(b, radius)?,
+                    axis: u,
+                }),
+            ),
+            (Vertex::Ideal(_), Vertex::Ideal(_)) => (None, None),
+        };
+        Ok(Rod {
+            start,
+            end,
+            tube,
+            start_cap,
+            end_cap,
+        })
+    }
+
+    /// First end point.
+    pub fn start(&self) -> Vertex {
+        self.start
+    }
+
+    /// Second end point.
+    pub fn end(&self) -> Vertex {
+        self.end
+    }
+
+    /// Hyperbolic radius.
+    pub fn radius(&self) -> f64 {
+        self.tube.radius()
+    }
+
+    /// The h-cylinder the rod's side lies on.
+    pub fn tube(&self) -> HCylinder {
+        self.tube
+    }
+
+    /// The image under an isometry. Exact and infallible: the tube, the caps
+    /// and the end-plane normals are carried over, not rebuilt.
+    pub fn transformed(&self, iso: &Isometry) -> Rod {
+        let l = iso.to_lorentz();
+        let cap = |c: &Cap| Cap {
+            sphere: c.sphere.transformed(iso),
+            axis: l * c.axis,
+        };
+        Rod {
+            start: iso.apply_vertex(&self.start),
+            end: iso.apply_vertex(&self.end),
+            tube: self.tube.transformed(iso),
+            start_cap: self.start_cap.as_ref().map(cap),
+            end_cap: self.end_cap.as_ref().map(cap),
+        }
+    }
+
+    /// Which part of the boundary a point of the tube or a cap sphere belongs to.
+    #[inline]
+    fn beyond_start(&self, x: DVec4) -> bool {
+        self.start_cap
+            .as_ref()
+            .is_some_and(|c| lorentz::dot(x, c.axis) < 0.0)
+    }
+
+    #[inline]
+    fn beyond_end(&self, x: DVec4) -> bool {
+        self.end_cap
+            .as_ref()
+            .is_some_and(|c| lorentz::dot(x, c.axis) > 0.0)
+    }
+
+    /// True if the hyperboloid point is strictly within `radius` of the segment.
+    pub fn contains(&self, x: DVec4) -> bool {
+        if self.beyond_start(x) {
+            self.start_cap
+                .as_ref()
+                .is_some_and(|c| c.sphere.contains(x))
+        } else if self.beyond_end(x) {
+            self.end_cap.as_ref().is_some_and(|c| c.sphere.contains(x))
+        } else {
+            self.tube.contains(x)
+        }
+    }
+
+    /// The first intersection with `t` in `(t_min, t_max)`, with the outward
+    /// normal.
+    ///
+    /// Every boundary point is either on the tube between the end planes or
+    /// on a cap sphere beyond its end plane; the nearest such candidate among
+    /// the (at most six) roots is the hit. Rays grazing the seam between tube
+    /// and cap meet both pieces at the same point, so the seam is watertight.
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        let mut best: Option<(f64, Piece)> = None;
+        let mut consider = |t: f64, piece: Piece| {
+            if t > t_min && t < t_max && best.is_none_or(|(bt, _)| t < bt) {
+                best = Some((t, piece));
+            }
+        };
+        if let Some((near, far)) = self.tube.roots(ray) {
+            for t in [near, far] {
+                if t.is_finite() {
+                    let x = ray.at(t);
+                    if !self.beyond_start(x) && !self.beyond_end(x) {
+                        consider(t, Piece::Tube);
+                    }
+                }
+            }
+        }
+        for (cap, piece) in [
+            (self.start_cap.as_ref(), Piece::StartCap),
+            (self.end_cap.as_ref(), Piece::EndCap),
+        ] {
+            let Some(cap) = cap else { continue };
+            if let Some((near, far)) = cap.sphere.roots(ray) {
+                for t in [near, far] {
+                    if t.is_finite() {
+                        let side = lorentz::dot(ray.at(t), cap.axis);
+                        let outside = match piece {
+                            Piece::StartCap => side <= 0.0,
+                            _ => side >= 0.0,
+                        };
+                        if outside {
+                            consider(t, piece);
+                        }
+                    }
+                }
+            }
+        }
+        let (t, piece) = best?;
+        let point = ray.at(t);
+        let normal = match piece {
+            Piece::Tube => self.tube.normal_at(point),
+            Piece::StartCap => self.start_cap.as_ref()?.sphere.normal_at(point),
+            Piece::EndCap => self.end_cap.as_ref()?.sphere.normal_at(point),
+        };
+        Some(Hit { t, point, normal })
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Piece {
+    Tube,
+    StartCap,
+    EndCap,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::point::{IdealPoint, Point};
+    use glam::DVec3;
+
+    fn p(x: f64, y: f64, z: f64) -> Point {
+        Point::try_new(DVec3::new(x, y, z)).unwrap()
+    }
+
+    #[test]
+    fn side_and_cap_hits() {
+        // Rod along the x axis from -0.3 to 0.3, radius 0.05; eye on the z axis.
+        let rod = Rod::try_new(p(-0.3, 0.0, 0.0).into(), p(0.3, 0.0, 0.0).into(), 0.05).unwrap();
+        let eye = p(0.0, 0.0, -0.5);
+        let side = rod
+            .intersect(&Ray::from_ball(&eye, DVec3::Z), 0.0, f64::INFINITY)
+            .unwrap();
+        // Along the z axis the rod's side is at distance 0.05 from the origin.
+        assert!((side.t - (eye.distance_from_origin() - 0.05)).abs() < 1e-13);
+        // Looking along the axis from beyond the end meets the cap first.
+        let beyond = p(0.8, 0.0, 0.0);
+        let cap = rod
+            .intersect(&Ray::from_ball(&beyond, -DVec3::X), 0.0, f64::INFINITY)
+            .unwrap();
+        let want = distance(&beyond, &p(0.3, 0.0, 0.0)) - 0.05;
+        assert!((cap.t - want).abs() < 1e-13);
+        // A ray passing beyond the end, outside the cap, misses.
+        let miss = Ray::from_ball(&p(0.45, 0.0, -0.5), DVec3::Z);
+        assert!(rod.intersect(&miss, 0.0, f64::INFINITY).is_none());
+    }
+
+    #[test]
+    fn from_inside_the_hit_is_the_exit() {
+        let rod = Rod::try_new(p(-0.3, 0.0, 0.0).into(), p(0.3, 0.0, 0.0).into(), 0.05).unwrap();
+        let inside = p(0.1, 0.0, 0.0);
+        assert!(rod.contains(inside.to_hyperboloid()));
+        let hit = rod
+            .intersect(&Ray::from_ball(&inside, DVec3::Y), 1e-9, f64::INFINITY)
+            .unwrap();
+        assert!((hit.t - 0.05).abs() < 1e-13);
+    }
+
+    #[test]
+    fn ideal_end_has_no_cap() {
+        let e = IdealPoint::from_direction(DVec3::X).unwrap();
+        let rod = Rod::try_new(p(-0.3, 0.0, 0.0).into(), e.into(), 0.05).unwrap();
+        // Far out towards the ideal end the tube is still there.
+        let eye = p(0.9, 0.0, -0.09);
+        assert!(
+            rod.intersect(&Ray::from_ball(&eye, DVec3::Z), 0.0, f64::INFINITY)
+                .is_some()
+        );
+    }
+}

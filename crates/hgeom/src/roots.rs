@@ -1,0 +1,64 @@
+//! The quadratic behind every curved surface: along a ray, `-<X(t),C>` for a
+//! fixed vector `C` is `a cosh t + b sinh t`, so a level set becomes a
+//! quadratic in `u = e^t` (or in `e^{2t}` for the equidistant surface).
+
+/// The roots `u_near <= u_far` of `alpha u^2 - 2 k u + beta = 0`, returned as
+/// `(ln u_near, ln u_far)`, for `alpha, beta >= 0` and `k > 0`.
+///
+/// Uses the cancellation-free pair `u_near = beta / (k + sqrt(disc))`,
+/// `u_far = (k + sqrt(disc)) / alpha`; `alpha = 0` (the ray heads for an
+/// ideal point of the surface) gives `u_far = inf` and `beta = 0` gives
+/// `u_near = 0`, so the logs are `+-inf`, never NaN. A zero discriminant
+/// (a tangent ray) gives the double root; a negative one, `None`.
+#[inline]
+pub(crate) fn exp_roots(alpha: f64, k: f64, beta: f64) -> Option<(f64, f64)> {
+    let disc = k * k - alpha * beta;
+    if !(disc >= 0.0) {
+        return None;
+    }
+    let big = k + disc.sqrt();
+    if !(big > 0.0) {
+        return None;
+    }
+    Some(((beta / big).ln(), (big / alpha).ln()))
+}
+
+/// The first of the two roots strictly inside `(t_min, t_max)`.
+#[inline]
+pub(crate) fn first_in_range(near: f64, far: f64, t_min: f64, t_max: f64) -> Option<f64> {
+    let t = if near > t_min {
+        near
+    } else if far > t_min {
+        far
+    } else {
+        return None;
+    };
+    (t < t_max).then_some(t)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn roots_solve_the_quadratic() {
+        let (alpha, k, beta) = (2.0, 3.0, 1.5);
+        let (n, f) = exp_roots(alpha, k, beta).unwrap();
+        for t in [n, f] {
+            let u = t.exp();
+            assert!((alpha * u * u - 2.0 * k * u + beta).abs() < 1e-14);
+        }
+        assert!(n < f);
+    }
+
+    #[test]
+    fn degenerate_coefficients_give_infinities_not_nan() {
+        let (n, f) = exp_roots(0.0, 1.0, 1.0).unwrap();
+        assert_eq!(f, f64::INFINITY);
+        assert!((n - 0.5f64.ln()).abs() < 1e-15);
+        let (n, _) = exp_roots(1.0, 1.0, 0.0).unwrap();
+        assert_eq!(n, f64::NEG_INFINITY);
+        assert!(exp_roots(1.0, 0.5, 1.0).is_none());
+        assert!(exp_roots(f64::NAN, 1.0, 1.0).is_none());
+    }
+}
