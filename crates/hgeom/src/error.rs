@@ -49,4 +49,30 @@ pub enum GeomError {
     /// A direction vector must be non-zero and finite.
     #[error("direction must be a non-zero finite vector")]
     BadDirection,
+    /// A predefined figure was asked for with a vertex count it does not support.
+    #[error("vertex count {got} is outside {min}..={max}")]
+    VertexCountOutOfRange {
+        /// The requested count.
+        got: usize,
+        /// Smallest supported count.
+        min: usize,
+        /// Largest supported count.
+        max: usize,
+    },
+    /// A Lambert quadrilateral with sides `a`, `b` at its right-angled vertex
+    /// closes only when `sinh a sinh b < 1`.
+    #[error("no Lambert quadrilateral: sinh a sinh b = {sinh_product} >= 1")]
+    LambertOpen {
+        /// `sinh a * sinh b`.
+        sinh_product: f64,
+    },
+    /// An angle outside the range a construction admits.
+    #[error("angle {0} rad is outside the admissible range")]
+    BadAngle(f64),
+    /// A tessellation would exceed the cell budget.
+    #[error("tessellation exceeds {limit} cells")]
+    TooManyCells {
+        /// The cell budget.
+        limit: usize,
+    },
 }

@@ -42,6 +42,7 @@ pub mod accurate;
 mod cylinder;
 mod distance;
 mod error;
+mod honeycomb;
 mod horosphere;
 mod isometry;
 mod line;
@@ -50,6 +51,7 @@ pub mod mobius;
 mod plane;
 mod point;
 mod polygon;
+mod polygons;
 mod polyhedron;
 pub mod ray;
 mod rod;
@@ -60,13 +62,21 @@ mod sphere;
 pub use cylinder::HCylinder;
 pub use distance::distance;
 pub use error::GeomError;
+pub use honeycomb::{
+    CUBE_435_DIHEDRAL, HoneycombCell, MAX_TESSELLATION_CELLS, SAME_CELL_DISTANCE, cube_435,
+    cube_435_circumradius, honeycomb_435, tessellate,
+};
 pub use horosphere::Horosphere;
 pub use isometry::Isometry;
 pub use line::HLine;
 pub use plane::{BallShape, HPlane};
 pub use point::{IdealPoint, Point, Vertex};
 pub use polygon::ConvexPolygon;
-pub use polyhedron::{Platonic, Polyhedron};
+pub use polygons::{
+    REGULAR_POLYGON_VERTICES, ideal_regular_polygon, lambert_quadrilateral, regular_polygon,
+    regular_polygon_with_side, saccheri_quadrilateral,
+};
+pub use polyhedron::{Platonic, Polyhedron, unique_edges};
 pub use ray::{Hit, Ray};
 pub use rod::Rod;
 pub use segment::Segment;

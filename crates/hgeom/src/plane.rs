@@ -52,6 +52,29 @@ impl HPlane {
     /// counter-clockwise... in the sense of the 4-D orientation; callers that
     /// need a particular side flip it with [`HPlane::flipped`].
     pub fn through(a: &Vertex, b: &Vertex, c: &Vertex) -> Result<HPlane, GeomError> {
+        // Far from the origin the hyperboloid vectors are huge (~e^d) and the
+        // 4-D cross product of their differences loses ~e^{2d} ulps. Moving
+        // an interior vertex to the origin first (Möbius addition is exact to
+        // rounding) and carrying the normal back with the Lorentz matrix keeps
+        // the normal's components correct to a few ulps each.
+        let anchor = [a, b, c].into_iter().find_map(|v| match v {
+            Vertex::Interior(p) if p.coords() != DVec3::ZERO => Some(*p),
+            _ => None,
+        });
+        let Some(anchor) = anchor else {
+            return HPlane::through_near_origin(a, b, c);
+        };
+        let to_anchor = Isometry::transvection_from_origin(anchor);
+        let back = to_anchor.inverse();
+        let local = HPlane::through_near_origin(
+            &back.apply_vertex(a),
+            &back.apply_vertex(b),
+            &back.apply_vertex(c),
+        )?;
+        HPlane::from_normal(to_anchor.to_lorentz() * local.normal)
+    }
+
+    fn through_near_origin(a: &Vertex, b: &Vertex, c: &Vertex) -> Result<HPlane, GeomError> {
         let (xa, xb, xc) = (a.to_hyperboloid(), b.to_hyperboloid(), c.to_hyperboloid());
         // Differences are better conditioned than the raw vectors for small
         // triangles; the determinant is unchanged.
@@ -139,6 +162,9 @@ impl HPlane {
     /// The arc length at which the ray's geodesic crosses the plane (of
     /// either sign), if it does.
     pub fn crossing(&self, ray: &Ray) -> Option<f64> {
+        if ray.origin == DVec4::W {
+            return self.crossing_from_origin(ray.dir.truncate());
+        }
         let o = lorentz::dot(ray.origin, self.normal);
         let d = lorentz::dot(ray.dir, self.normal);
         let tau = -o / d;
@@ -151,6 +177,43 @@ impl HPlane {
         let minus = lorentz::dot(ray.dir - ray.origin, self.normal);
         let plus = lorentz::dot(ray.dir + ray.origin, self.normal);
         let t = 0.5 * (minus / plus).ln();
+        t.is_finite().then_some(t)
+    }
+
+    /// [`HPlane::crossing`] for a ray from the origin along the unit vector
+    /// `dir` (every primary ray of the renderer).
+    ///
+    /// With `N = (n, w)`, `|n| = sqrt(1 + w^2)` and `c = dir . n/|n|`, the two
+    /// factors are `<V -+ X, N> = |n| c +- w`. For a far plane one of them is
+    /// tiny, and forming it as a difference of two large numbers would lose
+    /// about `e^{2 d}` ulps (`d` the plane's distance from the origin). It is
+    /// rewritten without cancellation as
+    /// `|n| |c| - |w| = |c| / (|n| + |w|) - |w| (1 - |c|)`, with
+    /// `1 - |c| = |dir -+ n/|n||^2 / 2` from a chord.
+    fn crossing_from_origin(&self, dir: DVec3) -> Option<f64> {
+        let n = self.normal.truncate();
+        let w = self.normal.w;
+        let len = (1.0 + w * w).sqrt();
+        let unit = n / n.length();
+        let c = dir.dot(unit);
+        let chord = if c >= 0.0 { dir - unit } else { dir + unit };
+        let one_minus_abs_c = 0.5 * chord.length_squared();
+        // |n||c| - |w|, the factor that would cancel.
+        let small = c.abs() / (len + w.abs()) - w.abs() * one_minus_abs_c;
+        let large = len * c.abs() + w.abs();
+        // minus = <V - X, N> = |n| c + w and plus = <V + X, N> = |n| c - w;
+        // the one whose terms have opposite signs is sign(c) * small.
+        let sc = if c >= 0.0 { 1.0 } else { -1.0 };
+        let (minus, plus) = if (c >= 0.0) == (w >= 0.0) {
+            (sc * large, sc * small)
+        } else {
+            (sc * small, sc * large)
+        };
+        let ratio = minus / plus;
+        if !(ratio > 0.0) {
+            return None;
+        }
+        let t = 0.5 * ratio.ln();
         t.is_finite().then_some(t)
     }
 

@@ -1,12 +1,15 @@
 //! Polyhedral surfaces, and the regular (Platonic) h-polyhedra.
 
+use std::collections::{HashMap, HashSet};
+
 use glam::{DVec3, DVec4};
 
 use crate::error::GeomError;
 use crate::isometry::Isometry;
 use crate::lorentz;
-use crate::point::{Point, Vertex};
+use crate::point::{IdealPoint, Point, Vertex};
 use crate::polygon::ConvexPolygon;
+use crate::polygons::from_hyperboloid_checked;
 use crate::ray::{Hit, Ray};
 
 /// A polyhedral surface: a union of convex polygons (it may self-intersect
@@ -106,24 +109,99 @@ impl Platonic {
     /// counter-clockwise order seen from outside.
     pub fn combinatorics(self) -> (Vec<DVec3>, Vec<Vec<usize>>) {
         let verts: Vec<DVec3> = self.template().into_iter().map(DVec3::normalize).collect();
-        let mut faces = Vec::new();
-        for dir in self.face_directions() {
-            let n = dir.normalize();
-            let best = verts.iter().map(|v| v.dot(n)).fold(f64::MIN, f64::max);
-            let mut face: Vec<usize> = (0..verts.len())
-                .filter(|&i| verts[i].dot(n) > best - 1e-9)
-                .collect();
-            let u = (verts[face[0]] - n * verts[face[0]].dot(n)).normalize();
-            let w = n.cross(u);
-            face.sort_by(|&i, &j| {
-                let ai = verts[i].dot(w).atan2(verts[i].dot(u));
-                let aj = verts[j].dot(w).atan2(verts[j].dot(u));
-                ai.total_cmp(&aj)
-            });
-            faces.push(face);
-        }
+        let faces = supporting_faces(&verts, &self.face_directions());
         (verts, faces)
     }
+
+    /// Cosine of the Euclidean solid's dihedral angle (exact constants).
+    fn euclidean_dihedral_cos(self) -> f64 {
+        match self {
+            Platonic::Tetrahedron => 1.0 / 3.0,
+            Platonic::Cube => 0.0,
+            Platonic::Octahedron => -1.0 / 3.0,
+            Platonic::Dodecahedron => -(5f64.sqrt()).recip(),
+            Platonic::Icosahedron => -(5f64.sqrt()) / 3.0,
+        }
+    }
+
+    /// The hyperbolic circumradius of the regular h-polyhedron of this kind
+    /// whose dihedral angles all equal `dihedral` (radians).
+    ///
+    /// Derivation (Klein model, where h-planes are flat): put the faces at
+    /// Klein distance `h` from the origin along the unit face directions
+    /// `n_i`. Face `i` is `x·n_i = h w`, i.e. `<X, N_i> = 0` with outward
+    /// normal `N_i = (n_i, h)` (time in `w`), `<N_i,N_i> = 1 - h²` and, for
+    /// adjacent faces, `<N_i,N_j> = n_i·n_j - h² = -cos θ_E - h²` where `θ_E`
+    /// is the Euclidean solid's dihedral angle. The interior dihedral angle
+    /// `θ` has `cos θ = -<N_i,N_j>/(1 - h²) = (h² + cos θ_E)/(1 - h²)`, so
+    /// `h² = (cos θ - cos θ_E)/(1 + cos θ)`. The vertices sit at Klein radius
+    /// `ρ = h R_E/r_E` (the Euclidean circumradius over inradius,
+    /// `tan(π/p) tan(π/q)` for `{p,q}`), and the hyperbolic circumradius is
+    /// `artanh ρ`. For the cube at `θ = 2π/5` this gives `h² = √5 - 2` and
+    /// `cosh R = φ²/√2` (see [`crate::cube_435_circumradius`]).
+    ///
+    /// Admissible angles: `θ_ideal < θ < θ_E`, where `θ_E` is the Euclidean
+    /// angle (a vanishing solid) and `θ_ideal` the ideal solid's angle
+    /// (`ρ = 1`: the angle `π(1 - 2/q)` of the Euclidean vertex figure, 60°
+    /// for the tetrahedron, cube and dodecahedron, 90° for the octahedron,
+    /// 108° for the icosahedron).
+    /// Outside that range: [`GeomError::BadAngle`]. Accuracy: a few ulps of
+    /// `ρ`; `artanh` amplifies that by `1/(1 - ρ²)` near the ideal limit.
+    pub fn circumradius_for_dihedral(self, dihedral: f64) -> Result<f64, GeomError> {
+        if !(dihedral.is_finite() && dihedral > 0.0 && dihedral < std::f64::consts::PI) {
+            return Err(GeomError::BadAngle(dihedral));
+        }
+        let c = dihedral.cos();
+        let h2 = (c - self.euclidean_dihedral_cos()) / (1.0 + c);
+        let rho = h2.sqrt() * self.euclidean_radius_ratio();
+        if !(h2 > 0.0 && rho < 1.0) {
+            return Err(GeomError::BadAngle(dihedral));
+        }
+        Ok(rho.atanh())
+    }
+
+    /// Circumradius over inradius of the Euclidean solid (exact constants).
+    fn euclidean_radius_ratio(self) -> f64 {
+        match self {
+            Platonic::Tetrahedron => 3.0,
+            Platonic::Cube | Platonic::Octahedron => 3f64.sqrt(),
+            // R/r = tan(pi/p) tan(pi/q) for {p,q}; both are {5,3} / {3,5}.
+            Platonic::Dodecahedron | Platonic::Icosahedron => {
+                (std::f64::consts::PI / 5.0).tan() * 3f64.sqrt()
+            }
+        }
+    }
+}
+
+/// For each face direction (any length), the vertices (unit vectors) that
+/// maximise the dot product with it, sorted counter-clockwise seen from
+/// outside (right-hand rule gives the outward normal).
+fn supporting_faces(verts: &[DVec3], directions: &[DVec3]) -> Vec<Vec<usize>> {
+    let mut faces = Vec::new();
+    for dir in directions {
+        let n = dir.normalize();
+        let best = verts.iter().map(|v| v.dot(n)).fold(f64::MIN, f64::max);
+        let face: Vec<usize> = (0..verts.len())
+            .filter(|&i| verts[i].dot(n) > best - 1e-9)
+            .collect();
+        faces.push(counter_clockwise(verts, face, n));
+    }
+    faces
+}
+
+/// The indexed points sorted counter-clockwise about the unit axis `n`.
+fn counter_clockwise(verts: &[DVec3], mut idx: Vec<usize>, n: DVec3) -> Vec<usize> {
+    let Some(&first) = idx.first() else {
+        return idx;
+    };
+    let u = (verts[first] - n * verts[first].dot(n)).normalize();
+    let w = n.cross(u);
+    idx.sort_by(|&i, &j| {
+        let ai = verts[i].dot(w).atan2(verts[i].dot(u));
+        let aj = verts[j].dot(w).atan2(verts[j].dot(u));
+        ai.total_cmp(&aj)
+    });
+    idx
 }
 
 fn signs3() -> Vec<DVec3> {
@@ -151,6 +229,79 @@ fn golden(a: f64, b: f64) -> Vec<DVec3> {
 
 fn cyclic(v: DVec3) -> [DVec3; 3] {
     [v, DVec3::new(v.z, v.x, v.y), DVec3::new(v.y, v.z, v.x)]
+}
+
+fn check_radius(r: f64) -> Result<(), GeomError> {
+    if r.is_finite() && r > 0.0 {
+        Ok(())
+    } else {
+        Err(GeomError::BadRadius(r))
+    }
+}
+
+fn representable(p: Point) -> Result<Point, GeomError> {
+    if p.is_representable() {
+        Ok(p)
+    } else {
+        Err(GeomError::NotInBall {
+            norm: p.coords().length(),
+        })
+    }
+}
+
+/// The polygons with the given vertex index lists.
+fn polygons(verts: &[Vertex], faces: &[Vec<usize>]) -> Result<Vec<ConvexPolygon>, GeomError> {
+    faces
+        .iter()
+        .map(|f| ConvexPolygon::try_new(f.iter().map(|&i| verts[i]).collect()))
+        .collect()
+}
+
+/// The solid with vertices on the rays `dirs` at hyperbolic distance
+/// `circumradius` and the given faces, centred at the origin.
+fn solid(dirs: &[DVec3], faces: &[Vec<usize>], circumradius: f64) -> Result<Polyhedron, GeomError> {
+    check_radius(circumradius)?;
+    let verts = dirs
+        .iter()
+        .map(|d| {
+            Point::at_distance_from_origin(*d, circumradius)
+                .and_then(representable)
+                .map(Vertex::Interior)
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(Polyhedron::new(polygons(&verts, faces)?, Point::ORIGIN))
+}
+
+/// The unique undirected edges of a set of polygons (one polygon, or the
+/// faces of a polyhedral surface), as pairs of vertices in the order they are
+/// first met walking the faces; what a wireframe of rods is built from.
+///
+/// Two vertices are the same when they are of the same kind and their ball
+/// coordinates are equal as f64 values (`-0.0 == 0.0`). Faces built from
+/// shared points, and their images under one isometry, share vertices exactly
+/// in this sense; vertices that only agree to rounding are kept apart, which
+/// draws a duplicate (coincident) rod rather than a wrong one.
+pub fn unique_edges(faces: &[ConvexPolygon]) -> Vec<(Vertex, Vertex)> {
+    let mut ids: HashMap<(bool, [u64; 3]), usize> = HashMap::new();
+    let mut id = |v: &Vertex| {
+        let c = v.coords() + DVec3::ZERO;
+        let key = (v.is_ideal(), [c.x.to_bits(), c.y.to_bits(), c.z.to_bits()]);
+        let next = ids.len();
+        *ids.entry(key).or_insert(next)
+    };
+    let mut seen = HashSet::new();
+    let mut out = Vec::new();
+    for face in faces {
+        let vs = face.vertices();
+        for (i, a) in vs.iter().enumerate() {
+            let b = &vs[(i + 1) % vs.len()];
+            let (ia, ib) = (id(a), id(b));
+            if ia != ib && seen.insert((ia.min(ib), ia.max(ib))) {
+                out.push((*a, *b));
+            }
+        }
+    }
+    out
 }
 
 impl Polyhedron {
@@ -181,21 +332,184 @@ impl Polyhedron {
     /// fixes the origin, so it acts by hyperbolic isometries, and each face's
     /// vertices are concyclic, hence lie on one h-plane.
     pub fn platonic(kind: Platonic, circumradius: f64) -> Result<Polyhedron, GeomError> {
-        if !(circumradius.is_finite() && circumradius > 0.0) {
-            return Err(GeomError::BadRadius(circumradius));
-        }
         let (dirs, faces) = kind.combinatorics();
-        let points = dirs
+        solid(&dirs, &faces, circumradius)
+    }
+
+    /// The regular h-polyhedron of the given kind, centred at the origin, all
+    /// of whose dihedral angles equal `dihedral` (radians); see
+    /// [`Platonic::circumradius_for_dihedral`] for the derivation and the
+    /// admissible range. The {4,3,5} honeycomb cell is
+    /// `platonic_with_dihedral(Platonic::Cube, 2π/5)`.
+    pub fn platonic_with_dihedral(kind: Platonic, dihedral: f64) -> Result<Polyhedron, GeomError> {
+        Polyhedron::platonic(kind, kind.circumradius_for_dihedral(dihedral)?)
+    }
+
+    /// The ideal regular polyhedron: the vertices of the Euclidean solid
+    /// centred at the origin, pushed onto the absolute. Every dihedral angle
+    /// is `π(1 - 2/q)` for `{p,q}`, the lower end of
+    /// [`Platonic::circumradius_for_dihedral`]'s range.
+    pub fn ideal_platonic(kind: Platonic) -> Result<Polyhedron, GeomError> {
+        let (dirs, faces) = kind.combinatorics();
+        let verts = dirs
             .iter()
-            .map(|d| Point::at_distance_from_origin(*d, circumradius))
+            .map(|d| IdealPoint::from_direction(*d).map(Vertex::Ideal))
             .collect::<Result<Vec<_>, _>>()?;
-        let polys = faces
+        Ok(Polyhedron::new(polygons(&verts, &faces)?, Point::ORIGIN))
+    }
+
+    /// The cuboctahedron (Wythoff symbol `2 | 3 4`: 12 vertices, 8 triangles,
+    /// 6 squares, two triangles and two squares alternating at each vertex),
+    /// centred at the origin with its vertices at hyperbolic distance
+    /// `circumradius`, on the rays through `(±1, ±1, 0)` and their cyclic
+    /// permutations.
+    ///
+    /// Exact for the same reason as [`Polyhedron::platonic`]: the octahedral
+    /// group fixes the origin, so it acts by hyperbolic isometries and is
+    /// transitive on vertices and edges (all edges equal); the vertices of a
+    /// Euclidean face lie on a plane, and pushing equal-norm points radially
+    /// keeps them coplanar in the Klein model, hence on one h-plane.
+    pub fn cuboctahedron(circumradius: f64) -> Result<Polyhedron, GeomError> {
+        let mut dirs = Vec::new();
+        for s1 in [-1.0, 1.0] {
+            for s2 in [-1.0, 1.0] {
+                dirs.extend(cyclic(DVec3::new(s1, s2, 0.0)));
+            }
+        }
+        let dirs: Vec<DVec3> = dirs.into_iter().map(DVec3::normalize).collect();
+        let mut face_dirs = signs3();
+        face_dirs.extend(Platonic::Octahedron.template());
+        let faces = supporting_faces(&dirs, &face_dirs);
+        solid(&dirs, &faces, circumradius)
+    }
+
+    /// The small stellated dodecahedron `{5/2, 5}` as the union of its 60
+    /// visible spike triangles (12 spikes of 5), centred at the origin, with
+    /// its 12 tips at hyperbolic distance `circumradius`.
+    ///
+    /// Derivation (Klein model, where h-lines and h-planes are straight, so
+    /// the stellation is the Euclidean one): the tips are an icosahedron's
+    /// vertices; the 5 neighbours `p_0..p_4` of a tip `w` span a regular
+    /// pentagon whose plane carries one pentagram face. The spike triangle at
+    /// `p_i` has base the middle part of the diagonal `p_(i-1) p_(i+1)`, cut by
+    /// the pentagram edges `p_i p_(i±2)` at fractions `1/φ²` and `1 - 1/φ²`
+    /// (a pentagon diagonal is divided as `1/φ² : 1/φ³ : 1/φ²`). Klein-affine
+    /// combinations of points with the same time coordinate are the same
+    /// linear combinations of their hyperboloid vectors; each is renormalised
+    /// with `-<Y,Y> = (1-t)² + t² + 2t(1-t) cosh d` (no cancellation), so
+    /// vertices are accurate to a few ulps. Faces point away from the centre;
+    /// the surface self-intersects only along the spikes' shared edges.
+    pub fn small_stellated_dodecahedron(circumradius: f64) -> Result<Polyhedron, GeomError> {
+        check_radius(circumradius)?;
+        let tips: Vec<DVec3> = Platonic::Icosahedron
+            .template()
+            .into_iter()
+            .map(DVec3::normalize)
+            .collect();
+        let (sh, ch) = (circumradius.sinh(), circumradius.cosh());
+        let tip_points = tips
             .iter()
-            .map(|f| {
-                ConvexPolygon::try_new(f.iter().map(|&i| Vertex::Interior(points[i])).collect())
-            })
+            .map(|d| Point::at_distance_from_origin(*d, circumradius).and_then(representable))
             .collect::<Result<Vec<_>, _>>()?;
-        Ok(Polyhedron::new(polys, Point::ORIGIN))
+        // The point at Klein-affine parameter t from tip a towards tip b.
+        let between = |a: DVec3, b: DVec3, t: f64| {
+            let y = (1.0 - t) * (a * sh).extend(ch) + t * (b * sh).extend(ch);
+            let cosh_d = 1.0 + sh * sh * 0.5 * (a - b).length_squared();
+            let n2 = (1.0 - t) * (1.0 - t) + t * t + 2.0 * t * (1.0 - t) * cosh_d;
+            from_hyperboloid_checked(y / n2.sqrt())
+        };
+        let t = 1.0 / (PHI + 1.0);
+        let neighbour_dot = 5f64.sqrt().recip();
+        // Each of the 20 core vertices is met from several diagonals; keep the
+        // first evaluation so that shared vertices are identical and
+        // `edges()` sees the spikes' shared edges as one.
+        let mut core: Vec<Point> = Vec::with_capacity(20);
+        let mut canonical = |p: Point| {
+            let dir = p.coords().normalize();
+            match core
+                .iter()
+                .find(|q| q.coords().normalize().dot(dir) > 1.0 - 1e-9)
+            {
+                Some(q) => *q,
+                None => {
+                    core.push(p);
+                    p
+                }
+            }
+        };
+        let mut faces = Vec::with_capacity(60);
+        for w in &tips {
+            let ring: Vec<usize> = (0..tips.len())
+                .filter(|&i| (tips[i].dot(*w) - neighbour_dot).abs() < 1e-9)
+                .collect();
+            let ring = counter_clockwise(&tips, ring, *w);
+            let m = ring.len();
+            for i in 0..m {
+                let (prev, tip, next) = (ring[(i + m - 1) % m], ring[i], ring[(i + 1) % m]);
+                let near_next = canonical(between(tips[next], tips[prev], t)?);
+                let near_prev = canonical(between(tips[prev], tips[next], t)?);
+                faces.push(ConvexPolygon::try_new(vec![
+                    Vertex::Interior(tip_points[tip]),
+                    Vertex::Interior(near_next),
+                    Vertex::Interior(near_prev),
+                ])?);
+            }
+        }
+        Ok(Polyhedron::new(faces, Point::ORIGIN))
+    }
+
+    /// The three golden rectangles of the icosahedron of hyperbolic
+    /// circumradius `circumradius` centred at the origin: the quadrilaterals
+    /// with vertices `(0, ±1, ±φ)`, `(±φ, 0, ±1)` and `(±1, ±φ, 0)` (directions),
+    /// lying in the mutually orthogonal h-planes `x = 0`, `y = 0`, `z = 0`.
+    ///
+    /// In H³ they are not rectangles: each has two pairs of equal opposite
+    /// sides and four equal acute angles (its symmetry group, the reflections
+    /// in two coordinate planes, is transitive on its vertices; the angle sum
+    /// of an h-quadrilateral is below 2π). Their 12 vertices are those of
+    /// [`Polyhedron::platonic`]`(Platonic::Icosahedron, circumradius)`.
+    ///
+    /// The centre lies on all three face planes, so "pointing away from the
+    /// centre" does not orient them; the face in the plane normal to axis
+    /// `e` has normal `-e` (the polygons' convention: the `z = 0` one faces a
+    /// camera on the `-z` side).
+    pub fn golden_rectangles(circumradius: f64) -> Result<Polyhedron, GeomError> {
+        check_radius(circumradius)?;
+        let corners = [
+            DVec3::new(0.0, 1.0, PHI),
+            DVec3::new(0.0, -1.0, PHI),
+            DVec3::new(0.0, -1.0, -PHI),
+            DVec3::new(0.0, 1.0, -PHI),
+        ];
+        let mut faces = Vec::with_capacity(3);
+        for (k, axis) in [DVec3::X, DVec3::Y, DVec3::Z].into_iter().enumerate() {
+            let mut verts = corners
+                .iter()
+                .map(|c| {
+                    Point::at_distance_from_origin(cyclic(*c)[k], circumradius)
+                        .and_then(representable)
+                        .map(Vertex::Interior)
+                })
+                .collect::<Result<Vec<_>, _>>()?;
+            let face = ConvexPolygon::try_new(verts.clone())?;
+            let face = if face.plane().normal().truncate().dot(axis) > 0.0 {
+                verts.reverse();
+                ConvexPolygon::try_new(verts)?
+            } else {
+                face
+            };
+            faces.push(face);
+        }
+        Ok(Polyhedron {
+            faces,
+            center: Point::ORIGIN,
+        })
+    }
+
+    /// The unique undirected edges of all faces, as pairs of vertices in the
+    /// order they are first met walking the faces; see [`unique_edges`].
+    pub fn edges(&self) -> Vec<(Vertex, Vertex)> {
+        unique_edges(&self.faces)
     }
 
     /// The faces.
