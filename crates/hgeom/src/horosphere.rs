@@ -98,12 +98,16 @@ impl Horosphere {
 
     /// Unit normal out of the horoball at a point of the horosphere: the
     /// tangent projection `-(L + cX)` of the gradient of `-<X,L>`, with
-    /// `c = <X,L>`; its Lorentz length is exactly `|c|`.
+    /// `c = <X,L>` (its Lorentz length is `|c|` in exact arithmetic).
     pub fn normal_at(&self, x: DVec4) -> DVec4 {
         let c = lorentz::dot(x, self.null);
         let n = self.null + c * x;
-        if c < 0.0 && c.is_finite() {
-            n / c
+        // Normalise by the computed length: far out, X is off the hyperboloid
+        // by rounding of relative size ~|X|^2 eps, and the exact-identity
+        // length |c| would then leave the normal visibly non-unit.
+        let len = lorentz::norm(n);
+        if c < 0.0 && len > 0.0 && len.is_finite() {
+            -n / len
         } else {
             // <X,L> < 0 for every point of the hyperboloid; unreachable in exact
             // arithmetic, but keep a unit tangent rather than NaN.

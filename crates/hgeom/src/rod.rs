@@ -130,28 +130,29 @@ impl Rod {
         }
     }
 
-    /// Which part of the boundary a point of the tube or a cap sphere belongs to.
+    /// Which side of the end planes a point is on: `<X,U> < -slack` is
+    /// beyond the start, `<X,U_end> > slack` beyond the end.
     #[inline]
-    fn beyond_start(&self, x: DVec4) -> bool {
+    fn beyond_start(&self, x: DVec4, slack: f64) -> bool {
         self.start_cap
             .as_ref()
-            .is_some_and(|c| lorentz::dot(x, c.axis) < 0.0)
+            .is_some_and(|c| lorentz::dot(x, c.axis) < -slack)
     }
 
     #[inline]
-    fn beyond_end(&self, x: DVec4) -> bool {
+    fn beyond_end(&self, x: DVec4, slack: f64) -> bool {
         self.end_cap
             .as_ref()
-            .is_some_and(|c| lorentz::dot(x, c.axis) > 0.0)
+            .is_some_and(|c| lorentz::dot(x, c.axis) > slack)
     }
 
     /// True if the hyperboloid point is strictly within `radius` of the segment.
     pub fn contains(&self, x: DVec4) -> bool {
-        if self.beyond_start(x) {
+        if self.beyond_start(x, 0.0) {
             self.start_cap
                 .as_ref()
                 .is_some_and(|c| c.sphere.contains(x))
-        } else if self.beyond_end(x) {
+        } else if self.beyond_end(x, 0.0) {
             self.end_cap.as_ref().is_some_and(|c| c.sphere.contains(x))
         } else {
             self.tube.contains(x)
@@ -163,8 +164,14 @@ impl Rod {
     ///
     /// Every boundary point is either on the tube between the end planes or
     /// on a cap sphere beyond its end plane; the nearest such candidate among
-    /// the (at most six) roots is the hit. Rays grazing the seam between tube
-    /// and cap meet both pieces at the same point, so the seam is watertight.
+    /// the (at most six) roots is the hit.
+    ///
+    /// At the seam circle tube and cap meet tangentially, so a ray through
+    /// the seam has two nearly equal roots whose rounded points can straddle
+    /// the end plane the wrong way for both pieces. Each piece therefore
+    /// accepts points up to `SEAM_SLACK` (relative to `|X|`) past the plane;
+    /// there the two surfaces differ only to second order, so the accepted
+    /// point is on the boundary to rounding and the seam is watertight.
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         let mut best: Option<(f64, Piece)> = None;
         let mut consider = |t: f64, piece: Piece| {
@@ -176,7 +183,8 @@ impl Rod {
             for t in [near, far] {
                 if t.is_finite() {
                     let x = ray.at(t);
-                    if !self.beyond_start(x) && !self.beyond_end(x) {
+                    let slack = SEAM_SLACK * x.w;
+                    if !self.beyond_start(x, slack) && !self.beyond_end(x, slack) {
                         consider(t, Piece::Tube);
                     }
                 }
@@ -190,10 +198,12 @@ impl Rod {
             if let Some((near, far)) = cap.sphere.roots(ray) {
                 for t in [near, far] {
                     if t.is_finite() {
-                        let side = lorentz::dot(ray.at(t), cap.axis);
+                        let x = ray.at(t);
+                        let side = lorentz::dot(x, cap.axis);
+                        let slack = SEAM_SLACK * x.w;
                         let outside = match piece {
-                            Piece::StartCap => side <= 0.0,
-                            _ => side >= 0.0,
+                            Piece::StartCap => side <= slack,
+                            _ => side >= -slack,
                         };
                         if outside {
                             consider(t, piece);
@@ -212,6 +222,10 @@ impl Rod {
         Some(Hit { t, point, normal })
     }
 }
+
+/// How far (as `<X,U>/x0`, about the sinh of the distance) a tube or cap
+/// point may lie past its end plane and still count; see [`Rod::intersect`].
+const SEAM_SLACK: f64 = 1e-9;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Piece {
