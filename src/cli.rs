@@ -40,6 +40,17 @@ pub struct RenderArgs {
     /// Worker threads (default: all cores).
     #[arg(long)]
     pub threads: Option<usize>,
+    /// Samples per pixel for anti-aliasing (1 = the pixel centre; a square
+    /// number is stratified, any other jittered; box-filtered).
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=i64::from(hrender::MAX_SAMPLES)))]
+    pub samples: u32,
+    /// Seed of the sample jitter; the same seed gives the same image.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Exposure correction in stops: radiance is multiplied by 2^EV before
+    /// quantisation (and in float TIFF output).
+    #[arg(long, value_name = "EV", default_value_t = 0.0, allow_negative_numbers = true, value_parser = parse_exposure)]
+    pub exposure: f64,
 }
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -60,6 +71,16 @@ pub struct CheckArgs {
     /// Output format (default: human on a terminal, short otherwise).
     #[arg(long)]
     pub format: Option<Format>,
+    /// Also print the lowered scene: `ir` writes one JSON object per error-free
+    /// scene to stdout (schema: docs/ir-schema.md); diagnostics then go to stderr.
+    #[arg(long, value_name = "WHAT")]
+    pub emit: Option<Emit>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Emit {
+    /// The lowered IR as JSON, one line per scene.
+    Ir,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -70,6 +91,18 @@ pub enum Format {
     Short,
     /// One JSON object per diagnostic, one per line.
     Json,
+}
+
+fn parse_exposure(s: &str) -> Result<f64, String> {
+    let ev: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("expected a number of stops, e.g. 2 or -1.5, not `{s}`"))?;
+    let max = hrender::MAX_EXPOSURE;
+    if !(ev.is_finite() && ev.abs() <= max) {
+        return Err(format!("exposure must be from -{max} to {max} stops"));
+    }
+    Ok(ev)
 }
 
 fn parse_resolution(s: &str) -> Result<(u32, u32), String> {

@@ -2,6 +2,7 @@
 //! the terminal. Only this crate knows about clap, JSON and terminals.
 
 mod cli;
+mod emit;
 mod report;
 
 use std::io::{IsTerminal, Write};
@@ -13,7 +14,7 @@ use clap::Parser;
 use hrender::{RenderOptions, SampleDepth};
 use hscene_lang::ir::{Net, Resolution};
 
-use cli::{CheckArgs, Cli, Command, Depth, Format, RenderArgs};
+use cli::{CheckArgs, Cli, Command, Depth, Emit, Format, RenderArgs};
 
 /// Exit status: the scene has errors.
 const EXIT_SCENE_ERRORS: u8 = 1;
@@ -36,8 +37,14 @@ fn read_scene(path: &Path) -> Result<String, ExitCode> {
 }
 
 fn check(args: &CheckArgs) -> ExitCode {
-    let stdout_tty = std::io::stdout().is_terminal();
-    let format = args.format.unwrap_or(if stdout_tty {
+    // With `--emit ir` stdout carries only JSON; the diagnostics go to stderr.
+    let emit_ir = args.emit == Some(Emit::Ir);
+    let diag_tty = if emit_ir {
+        std::io::stderr().is_terminal()
+    } else {
+        std::io::stdout().is_terminal()
+    };
+    let format = args.format.unwrap_or(if diag_tty {
         Format::Human
     } else {
         Format::Short
@@ -56,8 +63,17 @@ fn check(args: &CheckArgs) -> ExitCode {
         let compiled = hscene_lang::compile(&source);
         any_errors |= compiled.has_errors();
         let text =
-            report::format_diagnostics(path, &source, &compiled.diagnostics, format, stdout_tty);
-        if out.write_all(text.as_bytes()).is_err() {
+            report::format_diagnostics(path, &source, &compiled.diagnostics, format, diag_tty);
+        if emit_ir {
+            eprint!("{text}");
+            // A scene with errors has no IR (`compiled.scene` is `None`).
+            if let Some(scene) = &compiled.scene {
+                let line = format!("{}\n", emit::scene_to_json(path, scene));
+                if out.write_all(line.as_bytes()).is_err() {
+                    return ExitCode::from(EXIT_USAGE_OR_IO);
+                }
+            }
+        } else if out.write_all(text.as_bytes()).is_err() {
             return ExitCode::from(EXIT_USAGE_OR_IO);
         }
     }
@@ -108,6 +124,9 @@ fn render(args: &RenderArgs) -> ExitCode {
             .resolution
             .map(|(width, height)| Resolution { width, height }),
         threads: args.threads,
+        samples: args.samples,
+        seed: args.seed,
+        exposure: args.exposure,
     };
     let height = options
         .resolution
@@ -160,7 +179,7 @@ fn render(args: &RenderArgs) -> ExitCode {
     }
     if rendered.stats.numeric_failures > 0 {
         eprintln!(
-            "warning: {} pixel(s) had a numeric failure in shading and show the background",
+            "warning: {} pixel(s) had a numeric failure; their failing rays show the background",
             rendered.stats.numeric_failures
         );
     }

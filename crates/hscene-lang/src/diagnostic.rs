@@ -118,10 +118,13 @@ codes! {
     WrongArity = "HSC0107", Error, "wrong number of arguments";
     WrongType = "HSC0108", Error, "wrong type";
     DuplicateName = "HSC0110", Error, "duplicate name";
+    ReservedName = "HSC0111", Error, "reserved name";
+    ConflictingOptions = "HSC0112", Error, "conflicting options";
     // References.
     UndefinedPoint = "HSC0201", Error, "undefined point";
     UndefinedMaterial = "HSC0202", Error, "undefined material";
     UndefinedLine = "HSC0203", Error, "undefined line";
+    UndefinedTarget = "HSC0204", Error, "undefined transformation target";
     // Geometry.
     PointOutsideAbsolute = "HSC0301", Error, "point on or outside the absolute";
     IdealPointNotAllowed = "HSC0302", Error, "ideal point not allowed";
@@ -131,6 +134,9 @@ codes! {
     NonConvexPolygon = "HSC0306", Error, "non-convex polygon";
     DegenerateCamera = "HSC0307", Error, "degenerate camera";
     NumericFailure = "HSC0308", Error, "numeric failure";
+    IdealPointRequired = "HSC0309", Error, "ideal point required";
+    DegeneratePlane = "HSC0310", Error, "degenerate plane";
+    ImpossibleFigure = "HSC0311", Error, "impossible figure";
     // Settings.
     ZeroResolution = "HSC0401", Error, "zero resolution";
     UnknownNetType = "HSC0402", Error, "unknown net type";
@@ -142,6 +148,7 @@ codes! {
     LightInsideOpaqueObject = "HSC1004", Warning, "light inside an opaque object";
     ObjectBehindEye = "HSC1005", Warning, "object behind the eye";
     EyeInsideObject = "HSC1006", Warning, "eye inside an object";
+    IneffectiveOption = "HSC1007", Warning, "option without effect";
 }
 
 impl Code {
@@ -308,7 +315,7 @@ mod tests {
     #[test]
     fn code_table_is_consistent() {
         assert_eq!(Code::ALL.len(), CODES.len());
-        assert_eq!(Code::ALL.len(), 33);
+        assert_eq!(Code::ALL.len(), 40);
         let mut strings = HashSet::new();
         for &(code, s, sev, title) in CODES {
             assert_eq!(code.as_str(), s);

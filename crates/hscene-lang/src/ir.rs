@@ -157,9 +157,14 @@ pub struct Light {
     pub diffuse: Rgb,
     /// Specular intensity per channel.
     pub specular: Rgb,
+    /// The light's name (`sun: %1, ...;`), if it has one.
+    pub name: Option<String>,
 }
 
 /// The geometry of a scene object.
+// Rods carry their tube's Lorentz frame and two caps; boxing them would
+// save memory only in scenes of a few objects, and the IR is built once.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug, PartialEq)]
 pub enum Shape {
     /// An h-sphere.
@@ -187,6 +192,11 @@ pub struct Object {
     pub shape: Shape,
     /// Surface material.
     pub material: MaterialId,
+    /// The name of the statement that declared it (`ball: Sphere ...;`), if
+    /// any. One statement can give several objects: a polyhedron with
+    /// `edges = t` gives its faces and its edges (a wireframe), a
+    /// tessellation one polyhedron per cell; they share the name.
+    pub name: Option<String>,
 }
 
 /// The final position of a declared point, for inspection (`--emit ir`).

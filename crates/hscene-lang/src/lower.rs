@@ -7,13 +7,14 @@
 //! see the final positions. Every problem found is reported; lowering goes on
 //! past errors so one run reports as much as it can.
 
+mod figures;
+mod moves;
+mod objects;
+
 use std::collections::HashMap;
 
 use hgeom::glam::DVec3;
-use hgeom::{
-    ConvexPolygon, GeomError, HPlane, HSphere, IdealPoint, Isometry, Platonic, Point, Polyhedron,
-    Rod, Segment, Vertex, lorentz,
-};
+use hgeom::{HPlane, IdealPoint, Isometry, Point, Rod, Segment, Vertex, lorentz};
 
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::{
@@ -21,6 +22,15 @@ use crate::ir::{
     Scene, Settings, Shape, Window,
 };
 use crate::syntax::{Clause, Ident, RefSigil, RefTarget, Reference, Section, SourceFile, Value};
+
+/// What an `@name` transformation target names.
+#[derive(Clone, Debug)]
+enum TargetSlot {
+    /// The IR objects one object statement produced (none if it failed).
+    Objects(Vec<usize>),
+    /// A light (`None` if it failed).
+    Light(Option<usize>),
+}
 
 /// Section names, in processing order.
 const SECTIONS: [&str; 6] = [
@@ -91,6 +101,14 @@ struct Lowerer<'d> {
     plane_names: HashMap<String, usize>,
     lights: Vec<(Light, Span)>,
     objects: Vec<(Object, Span)>,
+    /// Names of objects and lights, the targets of `@name->...`, with the
+    /// span of the declaring name.
+    targets: HashMap<String, (TargetSlot, Span)>,
+    /// Every object and light name in the file, collected before lowering,
+    /// so that hints in earlier-processed sections can mention them.
+    target_labels: std::collections::HashSet<String>,
+    /// `@` transformations, applied once objects and lights exist.
+    moves: Vec<moves::PendingMove>,
     settings: Settings,
     camera_parts: CameraParts,
 }
@@ -120,6 +138,15 @@ pub(crate) fn lower(file: &SourceFile, diags: &mut Vec<Diagnostic>) -> Option<Sc
         plane_names: HashMap::new(),
         lights: Vec::new(),
         objects: Vec::new(),
+        targets: HashMap::new(),
+        target_labels: file
+            .sections
+            .iter()
+            .filter(|s| matches!(s.name.text.as_str(), "Objects" | "Lights"))
+            .flat_map(|s| &s.statements)
+            .filter_map(|st| st.label.as_ref().map(|l| l.text.clone()))
+            .collect(),
+        moves: Vec::new(),
         settings: default_settings(),
         camera_parts: CameraParts::default(),
     };
@@ -136,7 +163,8 @@ pub(crate) fn lower(file: &SourceFile, diags: &mut Vec<Diagnostic>) -> Option<Sc
             }
         }
     }
-    let camera = lw.camera();
+    let mut camera = lw.camera();
+    lw.apply_moves(&mut camera);
     if let Some(camera) = &camera {
         lw.lint_scene(camera);
     }
@@ -349,14 +377,34 @@ impl Lowerer<'_> {
                 (None, "hplane") => {
                     self.declare_plane(st.label.as_ref(), name, arg.as_ref(), *span)
                 }
-                (Some(target), "Rotate" | "Translate" | "Reflect") => {
-                    if let Some(iso) = self.transformation(name, arg.as_ref(), *span) {
-                        self.move_point(target, &iso);
-                    } else {
-                        // Still mark the target as used so errors don't cascade into lints.
-                        let _ = self.resolve_point(target);
+                (Some(target), "Rotate" | "Translate" | "Reflect") => match target.sigil {
+                    RefSigil::At => {
+                        let iso = self.transformation(name, arg.as_ref(), *span);
+                        self.moves.push(moves::PendingMove {
+                            target: target.clone(),
+                            iso,
+                        });
                     }
-                }
+                    RefSigil::Hash => {
+                        self.report(
+                            Diagnostic::new(
+                                Code::WrongType,
+                                target.span,
+                                format!("a material (`{}`) cannot be transformed", reference_text(target)),
+                            )
+                            .with_help("transformations act on points (`%P`), named objects and lights (`@name`) and the camera (`@camera`)"),
+                        );
+                        let _ = self.transformation(name, arg.as_ref(), *span);
+                    }
+                    RefSigil::Percent => {
+                        if let Some(iso) = self.transformation(name, arg.as_ref(), *span) {
+                            self.move_point(target, &iso);
+                        } else {
+                            // Still mark the target as used so errors don't cascade into lints.
+                            let _ = self.resolve_point(target);
+                        }
+                    }
+                },
                 (None, "Rotate" | "Translate" | "Reflect") => self.report(
                     Diagnostic::new(
                         Code::WrongType,
@@ -379,115 +427,59 @@ impl Lowerer<'_> {
 
     fn lights_section(&mut self, section: &Section) {
         for st in &section.statements {
-            let values: Vec<&Value> = st
-                .clauses
-                .iter()
-                .filter_map(|c| match c {
-                    Clause::Value(v) => Some(v),
-                    _ => None,
-                })
-                .collect();
-            if let Some(bad) = st.clauses.iter().find(|c| !matches!(c, Clause::Value(_))) {
-                self.report(
-                    Diagnostic::new(
-                        Code::WrongType,
-                        bad.span(),
-                        "a light's parts are plain values, not `key = value` or names",
-                    )
-                    .with_help("write `%P, (diffuse r, g, b), (specular r, g, b);`"),
-                );
-                continue;
-            }
-            if values.len() != 3 {
-                self.wrong_arity(
-                    st.span,
-                    format!(
-                        "a light takes 3 values (a point and two colours), got {}",
-                        values.len()
-                    ),
-                    "write `%P, (diffuse r, g, b), (specular r, g, b);`",
-                );
-                continue;
-            }
-            let position = self.point_arg(values[0], "a light");
-            let diffuse = self.rgb(values[1]);
-            let specular = self.rgb(values[2]);
-            if let (Some(position), Some(diffuse), Some(specular)) = (position, diffuse, specular) {
-                self.lights.push((
-                    Light {
-                        position,
-                        diffuse,
-                        specular,
-                    },
-                    st.span,
-                ));
+            let index = self.light_statement(st);
+            if let Some(label) = &st.label {
+                self.declare_target(label, TargetSlot::Light(index));
             }
         }
     }
 
-    fn objects_section(&mut self, section: &Section) {
-        for st in &section.statements {
-            let Some((
-                Clause::Apply {
-                    target: None,
-                    name,
-                    arg,
-                    ..
-                },
-                rest,
-            )) = st.clauses.split_first()
-            else {
-                self.report(
-                    Diagnostic::new(
-                        Code::WrongType,
-                        st.span,
-                        "expected an object, e.g. `Sphere %1, 0.05, #1;`",
-                    )
-                    .with_help(format!("objects are {}", OBJECT_NAMES.join(", "))),
-                );
-                continue;
-            };
-            let rest: Vec<&Value> = rest
-                .iter()
-                .filter_map(|c| match c {
-                    Clause::Value(v) => Some(v),
-                    _ => None,
-                })
-                .collect();
-            if rest.len() != st.clauses.len() - 1 {
-                self.error(
+    /// Lowers one light; returns its index, or `None` after reporting why not.
+    fn light_statement(&mut self, st: &crate::syntax::Statement) -> Option<usize> {
+        let values: Vec<&Value> = st
+            .clauses
+            .iter()
+            .filter_map(|c| match c {
+                Clause::Value(v) => Some(v),
+                _ => None,
+            })
+            .collect();
+        if let Some(bad) = st.clauses.iter().find(|c| !matches!(c, Clause::Value(_))) {
+            self.report(
+                Diagnostic::new(
                     Code::WrongType,
-                    st.span,
-                    "object arguments must be values separated by `,`",
-                );
-                continue;
-            }
-            let shape = match name.text.as_str() {
-                "Sphere" => self.sphere(name, arg.as_ref(), &rest, st.span),
-                "Polygon" => self.polygon(name, arg.as_ref(), &rest, st.span),
-                other => match platonic_by_name(other) {
-                    Some(kind) => self.platonic(kind, name, arg.as_ref(), &rest, st.span),
-                    None => {
-                        let mut d = Diagnostic::new(
-                            Code::UnknownObject,
-                            name.span,
-                            format!("unknown object `{other}`"),
-                        );
-                        d = match OBJECT_NAMES.iter().find(|s| s.eq_ignore_ascii_case(other)) {
-                            Some(s) => d.with_help(format!(
-                                "object names are case-sensitive: did you mean `{s}`?"
-                            )),
-                            None => d.with_help(format!("objects are {}", OBJECT_NAMES.join(", "))),
-                        };
-                        self.report(d);
-                        continue;
-                    }
-                },
-            };
-            if let Some((shape, material)) = shape {
-                self.objects.push((Object { shape, material }, st.span));
-            }
+                    bad.span(),
+                    "a light's parts are plain values, not `key = value` or names",
+                )
+                .with_help("write `%P, (diffuse r, g, b), (specular r, g, b);`"),
+            );
+            return None;
         }
+        if values.len() != 3 {
+            self.wrong_arity(
+                st.span,
+                format!(
+                    "a light takes 3 values (a point and two colours), got {}",
+                    values.len()
+                ),
+                "write `%P, (diffuse r, g, b), (specular r, g, b);`",
+            );
+            return None;
+        }
+        let position = self.point_arg(values[0], "a light");
+        let diffuse = self.rgb(values[1]);
+        let specular = self.rgb(values[2]);
+        let (position, diffuse, specular) = (position?, diffuse?, specular?);
+        self.lights.push((
+            Light {
+                position,
+                diffuse,
+                specular,
+                name: st.label.as_ref().map(|l| l.text.clone()),
+            },
+            st.span,
+        ));
+        Some(self.lights.len() - 1)
     }
 
     fn globals_section(&mut self, section: &Section) {
@@ -628,132 +620,6 @@ impl Lowerer<'_> {
         }
     }
 
-    fn sphere(
-        &mut self,
-        name: &Ident,
-        arg: Option<&Value>,
-        rest: &[&Value],
-        span: Span,
-    ) -> Option<(Shape, MaterialId)> {
-        let (Some(center), [radius, material]) = (arg, rest) else {
-            self.wrong_arity(
-                span,
-                "`Sphere` takes a centre, a radius and a material",
-                "write `Sphere %P, radius, #M;` (radius is hyperbolic)",
-            );
-            return None;
-        };
-        let _ = name;
-        let c = self.point_arg(center, "a sphere centre");
-        let r = self.positive(radius, "the sphere radius");
-        let m = self.material_arg(material);
-        let sphere = HSphere::try_new(c?, r?).ok()?;
-        Some((Shape::Sphere(sphere), m?))
-    }
-
-    fn platonic(
-        &mut self,
-        kind: Platonic,
-        name: &Ident,
-        arg: Option<&Value>,
-        rest: &[&Value],
-        span: Span,
-    ) -> Option<(Shape, MaterialId)> {
-        let (Some(size), [material]) = (arg, rest) else {
-            self.wrong_arity(
-                span,
-                format!("`{}` takes a size and a material", name.text),
-                format!(
-                    "write `{} size, #M;` (size: hyperbolic circumradius)",
-                    name.text
-                ),
-            );
-            return None;
-        };
-        let r = self.positive(size, "the size");
-        let m = self.material_arg(material);
-        match Polyhedron::platonic(kind, r?) {
-            Ok(p) => Some((Shape::Polyhedron(p), m?)),
-            Err(e) => {
-                self.error(
-                    Code::NumericFailure,
-                    size.span(),
-                    format!("cannot build this polyhedron: {e}"),
-                );
-                None
-            }
-        }
-    }
-
-    fn polygon(
-        &mut self,
-        name: &Ident,
-        arg: Option<&Value>,
-        rest: &[&Value],
-        span: Span,
-    ) -> Option<(Shape, MaterialId)> {
-        let (
-            Some(Value::Tuple {
-                items,
-                span: list_span,
-            }),
-            [material],
-        ) = (arg, rest)
-        else {
-            self.wrong_arity(
-                span,
-                "`Polygon` takes a vertex list and a material",
-                "write `Polygon (%1, %2, %3), #M;`",
-            );
-            return None;
-        };
-        let _ = name;
-        let mut vertices = Vec::with_capacity(items.len());
-        let mut ok = true;
-        for item in items {
-            match self.vertex_arg(item) {
-                Some(v) => vertices.push(v),
-                None => ok = false,
-            }
-        }
-        let m = self.material_arg(material);
-        if !ok {
-            return None;
-        }
-        match ConvexPolygon::try_new(vertices) {
-            Ok(p) => Some((Shape::Polygon(p), m?)),
-            Err(e) => {
-                let (code, msg, item_span) = match e {
-                    GeomError::TooFewVertices(n) => (
-                        Code::WrongArity,
-                        format!("a polygon needs at least 3 vertices, got {n}"),
-                        *list_span,
-                    ),
-                    GeomError::NonPlanar { index, .. } => (
-                        Code::NonPlanarPolygon,
-                        format!("vertex {} is not on the h-plane of the others", index + 1),
-                        items[index].span(),
-                    ),
-                    GeomError::NonConvex { index } => (
-                        Code::NonConvexPolygon,
-                        format!(
-                            "the polygon is not convex at vertex {} (or its vertices are not in cyclic order)",
-                            index + 1
-                        ),
-                        items[index].span(),
-                    ),
-                    other => (
-                        Code::NonConvexPolygon,
-                        format!("degenerate polygon: {other}"),
-                        *list_span,
-                    ),
-                };
-                self.report(Diagnostic::new(code, item_span, msg).with_help("list the vertices of a convex planar polygon in order around it; split other polygons into convex pieces"));
-                None
-            }
-        }
-    }
-
     // ----- transformations --------------------------------------------------
 
     fn declare_line(
@@ -822,7 +688,14 @@ impl Lowerer<'_> {
                     (Some(a), Some(b), Some(c)) => match HPlane::through(&a, &b, &c) {
                         Ok(p) => Some(p),
                         Err(_) => {
-                            self.report(Diagnostic::new(Code::DegenerateLine, span, "these three points lie on one h-line, so they do not fix an h-plane"));
+                            self.report(
+                                Diagnostic::new(
+                                    Code::DegeneratePlane,
+                                    items[0].span().to(items[2].span()),
+                                    "these three points lie on one h-line, so they do not fix an h-plane",
+                                )
+                                .with_help("choose three points that are not on one h-line (and all distinct)"),
+                            );
                             None
                         }
                     },
@@ -1021,11 +894,15 @@ impl Lowerer<'_> {
 
     fn resolve_point(&mut self, r: &Reference) -> Option<usize> {
         if r.sigil != RefSigil::Percent {
+            let what = match r.sigil {
+                RefSigil::At => "the object reference",
+                _ => "the material reference",
+            };
             self.report(Diagnostic::new(
                 Code::WrongType,
                 r.span,
                 format!(
-                    "expected a point reference like `%1`, found the material reference `{}`",
+                    "expected a point reference like `%1`, found {what} `{}`",
                     reference_text(r)
                 ),
             ));
@@ -1050,6 +927,11 @@ impl Lowerer<'_> {
                     }
                     (RefTarget::Index(_), n) => {
                         format!("{} declared (%1 to %{n})", count(n, "point"))
+                    }
+                    (RefTarget::Name(n), _) if self.target_labels.contains(n) => {
+                        format!(
+                            "`{n}` is an object or light, not a point: write `@{n}` to transform it"
+                        )
                     }
                     (RefTarget::Name(_), _) => {
                         "declare it in `Points` as `name = (x, y, z);`".to_string()
@@ -1099,9 +981,7 @@ impl Lowerer<'_> {
                             "{role} must be inside the ball, but this point is on the absolute"
                         ),
                     )
-                    .with_help(
-                        "ideal points are allowed only as polygon vertices and h-plane points",
-                    ),
+                    .with_help(IDEAL_ALLOWED_HELP),
                 );
                 None
             }
@@ -1182,6 +1062,38 @@ impl Lowerer<'_> {
             );
         } else {
             table.insert(name.text.clone(), index);
+        }
+    }
+
+    /// Declares the name of an object or light (the `@name` namespace).
+    fn declare_target(&mut self, name: &Ident, slot: TargetSlot) {
+        if name.text == moves::CAMERA {
+            self.report(
+                Diagnostic::new(
+                    Code::ReservedName,
+                    name.span,
+                    "`camera` is reserved: `@camera` is the camera",
+                )
+                .with_help("give this object or light another name"),
+            );
+        } else if let Some((_, first)) = self.targets.get(&name.text) {
+            // Lights are lowered before objects: blame whichever declaration
+            // comes later in the file.
+            let later = if first.start > name.span.start {
+                *first
+            } else {
+                name.span
+            };
+            self.report(
+                Diagnostic::new(
+                    Code::DuplicateName,
+                    later,
+                    format!("`{}` is already declared", name.text),
+                )
+                .with_help("objects and lights share one set of names (`@name`); give each a distinct name"),
+            );
+        } else {
+            self.targets.insert(name.text.clone(), (slot, name.span));
         }
     }
 
@@ -1336,23 +1248,33 @@ impl Lowerer<'_> {
         // entirely on its far side can't be seen.
         let behind = HPlane::orthogonal_at(&camera.eye, &camera.target).ok();
         let mut found = Vec::new();
-        for (object, span) in &self.objects {
-            if contains(&object.shape, eye) {
+        // One statement can give many objects (edges, tessellation cells),
+        // all with the statement's span: lint each statement once.
+        let mut i = 0;
+        while i < self.objects.len() {
+            let span = self.objects[i].1;
+            let end = i + self.objects[i..]
+                .iter()
+                .take_while(|(_, s)| *s == span)
+                .count();
+            let group = &self.objects[i..end];
+            i = end;
+            if group.iter().any(|(o, _)| contains(&o.shape, eye)) {
                 found.push(
                     Diagnostic::new(
                         Code::EyeInsideObject,
-                        *span,
+                        span,
                         "the eye is inside this object, so every view ray starts inside it",
                     )
                     .with_help("move the eye (`from`) or the object if this is not intended"),
                 );
             } else if behind
                 .as_ref()
-                .is_some_and(|plane| entirely_behind(&object.shape, plane))
+                .is_some_and(|plane| group.iter().all(|(o, _)| entirely_behind(&o.shape, plane)))
             {
                 found.push(Diagnostic::new(
                     Code::ObjectBehindEye,
-                    *span,
+                    span,
                     "this object is entirely behind the eye and cannot be seen",
                 ));
             }
@@ -1416,8 +1338,12 @@ fn contains(shape: &Shape, x: hgeom::glam::DVec4) -> bool {
         Shape::Sphere(s) => s.contains(x),
         Shape::Polygon(_) => false,
         Shape::Polyhedron(p) => {
-            // Only meaningful for convex closed surfaces such as the Platonic solids.
-            !p.faces().is_empty()
+            // Behind every face plane means inside only for a closed surface
+            // (the golden rectangles are not one): there every edge belongs
+            // to exactly two faces. For star polyhedra this finds the core.
+            let sides: usize = p.faces().iter().map(|f| f.vertices().len()).sum();
+            let closed = !p.faces().is_empty() && sides == 2 * p.edges().len();
+            closed
                 && p.faces()
                     .iter()
                     .all(|f| lorentz::dot(x, f.plane().normal()) < 0.0)
@@ -1467,35 +1393,13 @@ enum NameKind {
     Plane,
 }
 
-const OBJECT_NAMES: [&str; 8] = [
-    "Sphere",
-    "Polygon",
-    "Tetrahedron",
-    "Cube",
-    "Hexahedron",
-    "Octahedron",
-    "Dodecahedron",
-    "Icosahedron",
-];
+/// Where ideal points may stand, for the help of `IdealPointNotAllowed`.
+const IDEAL_ALLOWED_HELP: &str = "ideal points are allowed only as polygon vertices, rod and cylinder ends, `Plane` and `hplane` points and horosphere centres";
 
 const GLOBAL_KEYS_HELP: &str = "globals are recursion_depth, resolution, window_size, net_type, from, to, up, background, ambient";
 
-fn platonic_by_name(name: &str) -> Option<Platonic> {
-    Some(match name {
-        "Tetrahedron" => Platonic::Tetrahedron,
-        "Cube" | "Hexahedron" => Platonic::Cube,
-        "Octahedron" => Platonic::Octahedron,
-        "Dodecahedron" => Platonic::Dodecahedron,
-        "Icosahedron" => Platonic::Icosahedron,
-        _ => return None,
-    })
-}
-
 fn reference_text(r: &Reference) -> String {
-    let sigil = match r.sigil {
-        RefSigil::Percent => '%',
-        RefSigil::Hash => '#',
-    };
+    let sigil = r.sigil.as_char();
     match &r.target {
         RefTarget::Index(n) => format!("{sigil}{n}"),
         RefTarget::Name(s) => format!("{sigil}{s}"),

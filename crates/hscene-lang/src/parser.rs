@@ -112,7 +112,7 @@ fn lex_at(src: &str, pos: usize) -> (Kind, usize) {
             Kind::Other,
             run(pos + 1, |b| is_ident_continue(b) || b == b'.'),
         ),
-        b'%' | b'#' => (Kind::Other, run(pos + 1, is_ident_continue)),
+        b'%' | b'#' | b'@' => (Kind::Other, run(pos + 1, is_ident_continue)),
         _ => {
             let len = src[pos..].chars().next().map_or(1, char::len_utf8);
             (Kind::Other, pos + len)
@@ -166,7 +166,7 @@ fn rule_words(rule: Rule) -> &'static str {
         Rule::reference => "a reference",
         Rule::tuple => "a tuple",
         Rule::ident | Rule::label | Rule::assignment | Rule::application => "a name",
-        Rule::sigil => "`%` or `#`",
+        Rule::sigil => "`%`, `#` or `@`",
         Rule::ref_index | Rule::ref_name => "an index or a name after the sigil",
         Rule::statement | Rule::statement_only => "a statement",
         Rule::section => "a section",
@@ -655,10 +655,10 @@ impl Scanner<'_> {
         for p in pair.into_inner() {
             match p.as_rule() {
                 Rule::sigil => {
-                    sigil = Some(if p.as_str() == "#" {
-                        RefSigil::Hash
-                    } else {
-                        RefSigil::Percent
+                    sigil = Some(match p.as_str() {
+                        "#" => RefSigil::Hash,
+                        "@" => RefSigil::At,
+                        _ => RefSigil::Percent,
                     });
                 }
                 Rule::ref_index => {

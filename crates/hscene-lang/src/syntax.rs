@@ -13,7 +13,7 @@
 //!            | value                               -- Clause::Value
 //! value      = number | reference | tuple          -- (inside tuples also Ident)
 //! tuple      = "(" item ("," item)* ")"
-//! reference  = ("%" | "#") (digits | Ident)        -- no whitespace inside
+//! reference  = ("%" | "#" | "@") (digits | Ident)  -- no whitespace inside
 //! ```
 //!
 //! All spans are byte offsets into the source given to [`crate::parse`].
@@ -146,6 +146,7 @@ impl Value {
             Value::Reference(r) => match r.sigil {
                 RefSigil::Percent => "a point reference",
                 RefSigil::Hash => "a material reference",
+                RefSigil::At => "an object reference",
             },
             Value::Tuple { .. } => "a tuple",
             Value::Ident(_) => "a name",
@@ -160,6 +161,8 @@ pub enum RefSigil {
     Percent,
     /// `#`: materials.
     Hash,
+    /// `@`: named objects and lights, and `@camera` (transformation targets).
+    At,
 }
 
 impl RefSigil {
@@ -168,6 +171,7 @@ impl RefSigil {
         match self {
             RefSigil::Percent => '%',
             RefSigil::Hash => '#',
+            RefSigil::At => '@',
         }
     }
 }

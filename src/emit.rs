@@ -1,0 +1,235 @@
+//! `hscene check --emit ir`: the lowered scene as JSON.
+//!
+//! The schema is documented (and declared stable) in `docs/ir-schema.md`;
+//! bump [`SCHEMA`] on any change that is not a pure addition. JSON lives in
+//! the binary only: the libraries know nothing of serde.
+
+use std::path::Path;
+
+use hgeom::{BallShape, ConvexPolygon, Point, Rod, Vertex};
+use hscene_lang::ir::{Camera, Light, Material, Object, PointPosition, Rgb, Scene, Shape};
+use serde_json::{Value, json};
+
+/// The version of the IR schema.
+pub const SCHEMA: u32 = 1;
+
+/// The whole scene as one JSON object.
+pub fn scene_to_json(path: &Path, scene: &Scene) -> Value {
+    let s = &scene.settings;
+    json!({
+        "schema": SCHEMA,
+        "file": path.display().to_string(),
+        "settings": {
+            "recursion_depth": s.recursion_depth,
+            "resolution": [s.resolution.width, s.resolution.height],
+            "window_size": [s.window.width, s.window.height],
+            "net_type": s.net.index(),
+            "background": rgb(s.background),
+            "ambient": rgb(s.ambient),
+        },
+        "camera": camera(&scene.camera),
+        "points": scene.points.iter().map(|p| {
+            let (position, ideal) = match p.position {
+                PointPosition::Interior(q) => (q.coords(), false),
+                PointPosition::Ideal(q) => (q.coords(), true),
+            };
+            json!({
+                "number": p.number,
+                "name": p.name,
+                "position": vec3(position),
+                "ideal": ideal,
+            })
+        }).collect::<Vec<_>>(),
+        "materials": scene.materials.iter().enumerate().map(|(i, m)| material(i, m)).collect::<Vec<_>>(),
+        "lights": scene.lights.iter().enumerate().map(|(i, l)| light(i, l)).collect::<Vec<_>>(),
+        "objects": scene.objects.iter().enumerate().map(|(i, o)| object(i, o)).collect::<Vec<_>>(),
+    })
+}
+
+fn vec3(v: hgeom::glam::DVec3) -> Value {
+    json!([v.x, v.y, v.z])
+}
+
+fn rgb(c: Rgb) -> Value {
+    json!([c.r, c.g, c.b])
+}
+
+fn point(p: &Point) -> Value {
+    vec3(p.coords())
+}
+
+fn vertex(v: &Vertex) -> Value {
+    json!({ "position": vec3(v.coords()), "ideal": v.is_ideal() })
+}
+
+fn camera(c: &Camera) -> Value {
+    json!({
+        "from": point(&c.eye),
+        "to": point(&c.target),
+        "up": c.up.as_ref().map(point),
+    })
+}
+
+fn material(i: usize, m: &Material) -> Value {
+    json!({
+        "number": i + 1,
+        "name": m.name,
+        "ambient": rgb(m.ambient),
+        "diffuse": rgb(m.diffuse),
+        "specular": rgb(m.specular),
+        "alpha": m.reflection,
+        "trans": m.transmission,
+        "shininess": m.shininess,
+        "refraction": m.refraction,
+    })
+}
+
+fn light(i: usize, l: &Light) -> Value {
+    json!({
+        "number": i + 1,
+        "name": l.name,
+        "position": point(&l.position),
+        "diffuse": rgb(l.diffuse),
+        "specular": rgb(l.specular),
+    })
+}
+
+fn polygon(p: &ConvexPolygon) -> Value {
+    json!({ "vertices": p.vertices().iter().map(vertex).collect::<Vec<_>>() })
+}
+
+fn rod(r: &Rod) -> Value {
+    json!({ "start": vertex(&r.start()), "end": vertex(&r.end()), "radius": r.radius() })
+}
+
+fn object(i: usize, o: &Object) -> Value {
+    let mut v = json!({
+        "number": i + 1,
+        "name": o.name,
+        "material": o.material.0 + 1,
+    });
+    let (kind, params) = match &o.shape {
+        Shape::Sphere(s) => {
+            let (c, r) = s.euclidean();
+            (
+                "sphere",
+                json!({
+                    "center": point(&s.center()),
+                    "radius": s.radius(),
+                    "euclidean": { "center": vec3(c), "radius": r },
+                }),
+            )
+        }
+        Shape::Polygon(p) => ("polygon", polygon(p)),
+        Shape::Polyhedron(p) => (
+            "polyhedron",
+            json!({
+                "center": point(&p.center()),
+                "faces": p.faces().iter().map(polygon).collect::<Vec<_>>(),
+            }),
+        ),
+        Shape::Plane(p) => {
+            let n = p.normal();
+            let ball = match p.ball_shape() {
+                BallShape::Flat { normal } => json!({ "shape": "flat", "normal": vec3(normal) }),
+                BallShape::Sphere { center, radius } => {
+                    json!({ "shape": "sphere", "center": vec3(center), "radius": radius })
+                }
+            };
+            (
+                "plane",
+                json!({ "normal": [n.x, n.y, n.z, n.w], "ball": ball }),
+            )
+        }
+        Shape::Rod(r) => ("rod", rod(r)),
+        Shape::Cylinder(c) => {
+            let line = c.line();
+            let (back, front) = line.ends();
+            (
+                "cylinder",
+                json!({
+                    "line": {
+                        "base": point(&line.base()),
+                        "ends": [vec3(back.coords()), vec3(front.coords())],
+                    },
+                    "radius": c.radius(),
+                }),
+            )
+        }
+        Shape::Horosphere(h) => {
+            let (c, r) = h.euclidean();
+            (
+                "horosphere",
+                json!({
+                    "center": vec3(h.center().coords()),
+                    "euclidean": { "center": vec3(c), "radius": r },
+                }),
+            )
+        }
+        Shape::Wireframe(rods) => (
+            "wireframe",
+            json!({ "rods": rods.iter().map(rod).collect::<Vec<_>>() }),
+        ),
+    };
+    if let (Value::Object(out), Value::Object(params)) = (&mut v, params) {
+        out.insert("kind".into(), Value::from(kind));
+        out.extend(params);
+    }
+    v
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_shape_kind_is_emitted() {
+        let src = "\
+Points { c = (0,0,0.3); a = (0.1,0,0.3); b = (0,0.1,0.3); i = (0,0,1); }
+BRDFs { m: diffuse = (1,1,1); }
+Lights { sun: %c, (1,1,1), (1,1,1); }
+Objects {
+  ball: Sphere %c, 0.05, #m;
+  Polygon (%c, %a, %b), #1;
+  Cube 0.2, #1, edges = 0.01;
+  Plane %c, %a, %b, #1;
+  Rod %a, %b, 0.01, #1;
+  Cylinder %a, %i, 0.01, #1;
+  Horosphere %i, %c, #1;
+}";
+        let compiled = hscene_lang::compile(src);
+        assert!(!compiled.has_errors(), "{:#?}", compiled.diagnostics);
+        let scene = compiled.scene.unwrap();
+        let v = scene_to_json(Path::new("x.hsc"), &scene);
+        assert_eq!(v["schema"], 1);
+        assert_eq!(v["points"][3]["ideal"], true);
+        assert_eq!(v["points"][0]["name"], "c");
+        assert_eq!(v["lights"][0]["name"], "sun");
+        let kinds: Vec<&str> = v["objects"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|o| o["kind"].as_str().unwrap())
+            .collect();
+        assert_eq!(
+            kinds,
+            [
+                "sphere",
+                "polygon",
+                "polyhedron",
+                "wireframe",
+                "plane",
+                "rod",
+                "cylinder",
+                "horosphere"
+            ]
+        );
+        assert_eq!(v["objects"][0]["name"], "ball");
+        assert_eq!(v["objects"][0]["radius"], 0.05);
+        assert_eq!(v["objects"][2]["faces"].as_array().unwrap().len(), 6);
+        assert_eq!(v["objects"][3]["rods"].as_array().unwrap().len(), 12);
+        assert_eq!(v["objects"][5]["end"]["ideal"], false);
+        assert_eq!(v["camera"]["up"], Value::Null);
+        assert_eq!(v["settings"]["resolution"], json!([512, 512]));
+    }
+}
