@@ -10,8 +10,13 @@ use crate::point::Point;
 /// because the gaps carry the boundary precision it stays accurate out to the
 /// edge of f64 (boundary gaps of 1e-15, distances near 37).
 ///
-/// Accuracy contract: relative error below 1e-13 for exactly given f64 points
-/// (tested against a high-precision reference in `tests/`).
+/// # Accuracy
+///
+/// Relative error below 1e-13 for exactly given f64 points, including
+/// `1 - |x|` down to 1e-15 and points 1e-12 apart (tested against a 320-bit
+/// reference in `tests/reference.rs`: measured 2.1e-16 and 2.0e-14). For
+/// points produced by computation, add the hyperbolic size of their own
+/// rounding: one coordinate ulp at gap `g` is `2 eps / g` of distance.
 ///
 /// ```
 /// use hgeom::{distance, Point};

@@ -3,6 +3,11 @@
 use thiserror::Error;
 
 /// Why a geometric object could not be built.
+///
+/// Every fallible constructor in hgeom (the `try_*` functions and the
+/// named constructors that return `Result`, such as
+/// [`HPlane::through`](crate::HPlane::through)) reports one of these; no
+/// constructor clamps its input into range instead.
 #[derive(Clone, Debug, Error, PartialEq)]
 pub enum GeomError {
     /// A coordinate is NaN or infinite.
@@ -69,6 +74,12 @@ pub enum GeomError {
     /// An angle outside the range a construction admits.
     #[error("angle {0} rad is outside the admissible range")]
     BadAngle(f64),
+    /// A matrix that must be orthogonal is not (to the stated tolerance).
+    #[error("matrix is not orthogonal (max |Q Q^T - I| = {defect:e})")]
+    NotOrthogonal {
+        /// The largest entry of `Q Q^T - I` in absolute value.
+        defect: f64,
+    },
     /// A tessellation would exceed the cell budget.
     #[error("tessellation exceeds {limit} cells")]
     TooManyCells {

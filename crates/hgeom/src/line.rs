@@ -22,7 +22,8 @@ use crate::point::{IdealPoint, Point, Vertex};
 /// `sinh^2 d(X, line) = <X,N1>^2 + <X,N2>^2`.
 ///
 /// Invariants: the frame is the Lorentz matrix of `to_line` (orthonormal to
-/// rounding); the line passes through the base point in direction `U`.
+/// about `eps |M|^2`, `M`'s entries growing like `2/gap` of the base
+/// point); the line passes through the base point in direction `U`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HLine {
     to_line: Isometry,
@@ -35,6 +36,18 @@ impl HLine {
     ///
     /// The base point is `a` when it is an h-point, `b` when only `b` is, and
     /// the point of the line nearest the origin when both are ideal.
+    ///
+    /// Errors: [`GeomError::Coincident`] for equal vertices, and
+    /// [`HLine::from_point_direction`]'s errors.
+    ///
+    /// # Accuracy
+    ///
+    /// Both vertices lie on the line to 1e-14 for points near the origin
+    /// (`line_passes_through_both_points` in this module), ideal ends are the
+    /// line's ends to 1e-14, and the base point of an ideal-ideal line is
+    /// exact to an ulp (`(u+v)/(2+|u-v|)` with gap `2|u-v|/(2+|u-v|)`,
+    /// `ideal_line_base_is_the_foot_of_the_perpendicular` in
+    /// `tests/derivations.rs`).
     pub fn through(a: &Vertex, b: &Vertex) -> Result<HLine, GeomError> {
         match (a, b) {
             (Vertex::Interior(p), Vertex::Interior(q)) => {
@@ -60,7 +73,8 @@ impl HLine {
                 // onto the hyperboloid, is the foot of the perpendicular from
                 // the origin; in the ball it is (u+v)/(2+delta), and
                 // 1 - |p|^2 = 2 delta/(2 + delta) exactly (|u+v|^2 = 4 - delta^2).
-                let base = Point::from_parts((u + v) / (2.0 + delta), 2.0 * delta / (2.0 + delta));
+                let base =
+                    Point::new_unchecked((u + v) / (2.0 + delta), 2.0 * delta / (2.0 + delta));
                 HLine::from_point_direction(&base, towards_ideal(&base, e2))
             }
         }
@@ -68,6 +82,17 @@ impl HLine {
 
     /// The line through `p` with tangent `dir` there (a ball vector; the
     /// model is conformal, so it is also the hyperbolic direction).
+    ///
+    /// Errors: [`GeomError::BadDirection`] for a zero or non-finite `dir`,
+    /// [`GeomError::NotInBall`] for a point that fails
+    /// [`Point::is_representable`].
+    ///
+    /// # Accuracy
+    ///
+    /// The stored isometry is exact up to the rounding of `dir/|dir|` and of
+    /// the orthonormal pair completing it (a few ulps); the frame is as
+    /// accurate as [`Isometry::to_lorentz`] (Lorentz-orthonormal to 1e-13
+    /// for base points within ~1 of the origin, `frame_is_lorentz_orthonormal`).
     pub fn from_point_direction(p: &Point, dir: DVec3) -> Result<HLine, GeomError> {
         let len = dir.length();
         if !(len > 0.0 && len.is_finite()) {
@@ -98,29 +123,56 @@ impl HLine {
 
     /// The isometry carrying the canonical line (the z axis, towards `+z`)
     /// onto this one.
+    ///
+    /// # Accuracy
+    ///
+    /// Exact: the stored isometry.
     pub fn to_line(&self) -> Isometry {
         self.to_line
     }
 
     /// The adapted Lorentz frame `[N1 | N2 | U | P]` (see the type docs).
+    ///
+    /// # Accuracy
+    ///
+    /// Exact: the stored matrix (see the type's invariants for how
+    /// orthonormal it is).
     #[inline]
     pub fn frame(&self) -> DMat4 {
         self.frame
     }
 
     /// The base point `P` (an h-point on the line).
+    ///
+    /// # Accuracy
+    ///
+    /// Exact: the stored translation part of [`HLine::to_line`].
     pub fn base(&self) -> Point {
         self.to_line.translation_part()
     }
 
     /// The point at signed arc length `s` from the base point, towards the
     /// line's orientation for `s > 0`.
+    ///
+    /// Errors: [`GeomError::NotInBall`] when the point is beyond what f64
+    /// can hold (or `s` is not finite: [`GeomError::NotFinite`]).
+    ///
+    /// # Accuracy
+    ///
+    /// [`Point::at_distance_from_origin`] then [`Isometry::apply`]: within a
+    /// few coordinate ulps of the result (`1e-14` near the origin,
+    /// `line_passes_through_both_points`).
     pub fn point_at(&self, s: f64) -> Result<Point, GeomError> {
         let on_axis = Point::at_distance_from_origin(DVec3::Z * s.signum(), s.abs())?;
         self.to_line.try_apply(&on_axis)
     }
 
     /// The two ideal end points, backward then forward.
+    ///
+    /// # Accuracy
+    ///
+    /// As [`Isometry::apply_ideal`]: a few ulps plus about `eps / gap` of
+    /// the base point, in radians.
     pub fn ends(&self) -> (IdealPoint, IdealPoint) {
         let back = IdealPoint::from_unit_unchecked(DVec3::NEG_Z);
         let front = IdealPoint::from_unit_unchecked(DVec3::Z);
@@ -133,6 +185,13 @@ impl HLine {
     /// `sinh` of the hyperbolic distance from a hyperboloid point to the line:
     /// `sqrt(<X,N1>^2 + <X,N2>^2)`. The absolute error is about
     /// `1e-16 |X| |M|` (both grow like `e^d` with the distance from the origin).
+    ///
+    /// # Accuracy
+    ///
+    /// As stated: absolute error about `4 eps |X| |M|`; it agrees with
+    /// `sinh` of [`HLine::distance_to`] to 1e-13 relative near the origin
+    /// (`sinh_distance_to_a_line_is_the_frame_formula` in
+    /// `tests/derivations.rs`).
     #[inline]
     pub fn sinh_distance_h(&self, x: DVec4) -> f64 {
         let c1 = lorentz::dot(x, self.frame.x_axis);
@@ -147,6 +206,14 @@ impl HLine {
     /// `q = (x, y, z)` to the axis is `asinh(2 sqrt(x^2+y^2) / (1 - |q|^2))`
     /// with the accurate gap: correct to a few ulps relative for points that
     /// f64 places accurately, even next to the absolute.
+    ///
+    /// # Accuracy
+    ///
+    /// As stated, plus the rounding of moving the point into the canonical
+    /// frame (about `10 eps (1/gap_p + 1/gap_base)` of hyperbolic distance,
+    /// see [`Isometry::apply`]); within 1e-12 of a 320-bit reference for
+    /// points and axes within 4 of the origin (measured 1.1e-14,
+    /// `line_distance_matches_the_reference` in `tests/derivations.rs`).
     pub fn distance_to(&self, p: &Point) -> f64 {
         let q = self.to_line.inverse().apply(p);
         let c = q.coords();
@@ -155,6 +222,13 @@ impl HLine {
 
     /// Signed arc length of the foot of the perpendicular from `p`, measured
     /// from the base point along the line's orientation.
+    ///
+    /// # Accuracy
+    ///
+    /// `atanh(<X,U> / -<X,P>)` with products rounded at about
+    /// `eps |X| |M|`; accurate to a few ulps relative near the origin, and
+    /// `atanh` amplifies the error by `cosh^2 s` far along the line (used by
+    /// tests only to pick the nearer end of a segment).
     pub fn foot_parameter(&self, p: &Point) -> f64 {
         let x = p.to_hyperboloid();
         // X = cosh(d) (cosh s P + sinh s U) + normal part: tanh s = <X,U> / -<X,P>.
@@ -164,6 +238,11 @@ impl HLine {
     }
 
     /// The image of the line under an isometry (orientation carried along).
+    ///
+    /// # Accuracy
+    ///
+    /// As [`Isometry::compose`] for the stored isometry, then a fresh
+    /// [`Isometry::to_lorentz`] for the frame.
     pub fn transformed(&self, iso: &Isometry) -> HLine {
         HLine::from_isometry(iso.compose(&self.to_line))
     }
@@ -173,7 +252,7 @@ impl HLine {
 /// the transvection by `-p` takes `p` to the origin and `e` to `(-p) (+) e`,
 /// and its differential at `p` is a positive multiple of the identity.
 fn towards_ideal(p: &Point, e: &IdealPoint) -> DVec3 {
-    let minus_p = Point::from_parts(-p.coords(), p.gap());
+    let minus_p = Point::new_unchecked(-p.coords(), p.gap());
     add_ideal(&minus_p, e).coords()
 }
 

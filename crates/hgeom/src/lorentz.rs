@@ -8,19 +8,51 @@
 use glam::DVec4;
 
 /// The Lorentz form `<a,b> = a.x b.x + a.y b.y + a.z b.z - a.w b.w`.
+///
+/// # Accuracy
+///
+/// Plain f64: absolute error at most about `4 eps |a| |b|` (Euclidean
+/// lengths). When the result is much smaller than `|a| |b|` (points far
+/// from the origin, where `<X,X> = -1` with `|X|^2 ~ e^{2d}`) that is a
+/// large relative error; hgeom avoids such products or forms them from
+/// differences (see `docs/geometry.md`).
 #[inline]
 pub fn dot(a: DVec4, b: DVec4) -> f64 {
     a.x * b.x + a.y * b.y + a.z * b.z - a.w * b.w
 }
 
 /// Lorentz norm of a spacelike vector, `sqrt(<v,v>)`; 0 for non-spacelike input.
+///
+/// # Accuracy
+///
+/// `sqrt` of [`dot`]`(v, v)`: absolute error of `<v,v>` about
+/// `4 eps |v|^2`, so accurate to a few ulps when `|v|` is of the order of
+/// the norm itself (tangent vectors near the origin), and meaningless once
+/// `eps |v|^2` approaches `<v,v>` (normals of h-planes beyond distance ~18
+/// from the origin).
 #[inline]
 pub fn norm(v: DVec4) -> f64 {
+    // Not a silent clamp: 0 is the documented answer for a null or timelike
+    // vector, and every caller treats it as a failure (`HPlane::from_normal`
+    // returns `BadDirection`, `direction_towards` returns `None`, the polygon
+    // and plane constructors report `Collinear`/`Coincident`, normals fall
+    // back explicitly). For spacelike input <v,v> > 0 in exact arithmetic.
     dot(v, v).max(0.0).sqrt()
 }
 
 /// A vector Lorentz-orthogonal to `a`, `b` and `c` (the 4-D cross product
 /// with the time sign flipped). It is zero iff the three are linearly dependent.
+///
+/// Its Lorentz products with `a`, `b` and `c` vanish, and its orientation
+/// follows the right-hand rule used by [`HPlane::through`](crate::HPlane::through).
+///
+/// # Accuracy
+///
+/// Each component is a 3x3 minor expanded in plain f64: absolute error about
+/// `10 eps |a| |b| |c|`. Callers pass small, well-conditioned vectors (points
+/// moved near the origin first, differences of nearby points) so that this
+/// is a small relative error (`complement_is_orthogonal_to_all_three` in
+/// this module: products below 1e-15).
 pub fn orthogonal_complement(a: DVec4, b: DVec4, c: DVec4) -> DVec4 {
     // Euclidean generalised cross product: cofactor expansion of det[e; a; b; c].
     let m_xy = b.x * c.y - b.y * c.x;
@@ -41,6 +73,14 @@ pub fn orthogonal_complement(a: DVec4, b: DVec4, c: DVec4) -> DVec4 {
 
 /// Distance between two hyperboloid points. Uses `2 asinh(|X-Y|_L / 2)`, which
 /// is well conditioned for small distances where `acosh(-<X,Y>)` is not.
+///
+/// # Accuracy
+///
+/// The difference `X - Y` is formed exactly enough for nearby points, but
+/// its Lorentz square has absolute error about `4 eps |X - Y| (|X| + |Y|)`:
+/// relative error about `eps (|X| + |Y|)^2` for the distance, a few ulps
+/// near the origin and useless beyond distance ~18. For ball points use
+/// [`crate::distance`], which is accurate everywhere.
 #[inline]
 pub fn distance(x: DVec4, y: DVec4) -> f64 {
     let d = x - y;
@@ -49,6 +89,15 @@ pub fn distance(x: DVec4, y: DVec4) -> f64 {
 
 /// The unit tangent vector at `x` pointing along the geodesic towards `y`,
 /// with the distance between them. `None` if they coincide numerically.
+///
+/// # Accuracy
+///
+/// The tangent is formed from the difference `d = y - x` as
+/// `d + <x,d> x` (no cancellation between `y` and `<x,y> x`), then
+/// normalised by its computed Lorentz norm: direction and unit length to
+/// about `eps |X|^2 / sinh d(x,y)`. Accurate near the origin; the tangent
+/// of a short segment far out inherits the rounding of `X` and `Y`
+/// (`orthogonal_plane_contains_start` in `plane.rs`).
 pub fn direction_towards(x: DVec4, y: DVec4) -> Option<(DVec4, f64)> {
     // Component of y orthogonal to x: y + <x,y> x. Written via the difference
     // d = y - x as d + <x,d> x (since <x,x> = -1), which avoids cancellation
@@ -64,6 +113,11 @@ pub fn direction_towards(x: DVec4, y: DVec4) -> Option<(DVec4, f64)> {
 }
 
 /// The point at arc length `t` along the geodesic from `x` with unit tangent `v`.
+///
+/// # Accuracy
+///
+/// `cosh t x + sinh t v`: absolute error about `eps e^|t| (|x| + |v|)` per
+/// component (see [`Ray::at`](crate::Ray::at)).
 #[inline]
 pub fn geodesic_point(x: DVec4, v: DVec4, t: f64) -> DVec4 {
     t.cosh() * x + t.sinh() * v

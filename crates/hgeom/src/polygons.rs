@@ -94,6 +94,14 @@ fn regular_directions(n: usize) -> Vec<DVec3> {
 /// a non-positive or non-finite radius, [`GeomError::NotInBall`] when the
 /// vertices are too far out for f64 (radius above ~37).
 ///
+/// # Accuracy
+///
+/// Each vertex is [`Point::at_distance_from_origin`]: its distance from the
+/// origin is the circumradius to 1e-14 relative, sides equal the closed form
+/// `2 asinh(sinh R sin(π/n))` to 1e-13 relative and angles the regular
+/// polygon's to 1e-12 (`regular_polygons_are_regular` in
+/// `tests/figures.rs`).
+///
 /// ```
 /// use hgeom::{distance, regular_polygon, Vertex};
 /// let pentagon = regular_polygon(5, 0.8).unwrap();
@@ -117,6 +125,13 @@ pub fn regular_polygon(n: usize, circumradius: f64) -> Result<ConvexPolygon, Geo
 /// The right triangle formed by the centre, a vertex and the midpoint of an
 /// adjacent side has hypotenuse `R`, angle `π/n` at the centre and opposite
 /// leg `side/2`, so `sinh R = sinh(side/2) / sin(π/n)`.
+///
+/// Errors: as [`regular_polygon`].
+///
+/// # Accuracy
+///
+/// As [`regular_polygon`]; the sides equal `side` to 1e-14
+/// (`regular_polygon_by_side` in `tests/figures.rs`).
 pub fn regular_polygon_with_side(n: usize, side: f64) -> Result<ConvexPolygon, GeomError> {
     check_count(n)?;
     check_length(side)?;
@@ -128,6 +143,13 @@ pub fn regular_polygon_with_side(n: usize, side: f64) -> Result<ConvexPolygon, G
 /// [`REGULAR_POLYGON_VERTICES`]): all vertices on the absolute, on the unit
 /// circle of the plane `z = 0`, placed and oriented as in
 /// [`regular_polygon`]. All its angles are 0.
+///
+/// Errors: [`GeomError::VertexCountOutOfRange`].
+///
+/// # Accuracy
+///
+/// The vertices are unit vectors to 1e-15 with `z = 0` exactly
+/// (`ideal_polygons_have_vertices_on_the_absolute` in `tests/figures.rs`).
 pub fn ideal_regular_polygon(n: usize) -> Result<ConvexPolygon, GeomError> {
     check_count(n)?;
     let vertices = regular_directions(n)
@@ -156,6 +178,12 @@ pub fn ideal_regular_polygon(n: usize) -> Result<ConvexPolygon, GeomError> {
 /// Errors: [`GeomError::BadRadius`] for a non-positive or non-finite side,
 /// [`GeomError::LambertOpen`] when `sinh a sinh b >= 1`,
 /// [`GeomError::NotInBall`] when `C` is too far out for f64.
+///
+/// # Accuracy
+///
+/// The three right angles are right to 1e-12, `cos φ = sinh a sinh b` to
+/// 1e-12, and the sides `OA`, `OB` are `a`, `b` to 1e-14 relative
+/// (`lambert_quadrilateral_has_three_right_angles` in `tests/figures.rs`).
 pub fn lambert_quadrilateral(a: f64, b: f64) -> Result<ConvexPolygon, GeomError> {
     check_length(a)?;
     check_length(b)?;
@@ -193,6 +221,13 @@ pub fn lambert_quadrilateral(a: f64, b: f64) -> Result<ConvexPolygon, GeomError>
 ///
 /// Errors: [`GeomError::BadRadius`] for a non-positive or non-finite length,
 /// [`GeomError::NotInBall`] when a vertex is too far out for f64.
+///
+/// # Accuracy
+///
+/// Base and legs have the given lengths to 1e-13 relative, the base angles
+/// are right to 1e-12 and the summit angles equal to 1e-12
+/// (`saccheri_quadrilateral_has_right_base_angles_and_equal_summit_angles`
+/// in `tests/figures.rs`).
 pub fn saccheri_quadrilateral(base: f64, leg: f64) -> Result<ConvexPolygon, GeomError> {
     check_length(base)?;
     check_length(leg)?;

@@ -16,14 +16,16 @@ use crate::ray::{Hit, Ray};
 /// and need not be closed), with a reference centre.
 ///
 /// Invariant: every face's normal points away from `center` (the outer side),
-/// which is what refraction uses to tell entering from leaving.
+/// which is what refraction uses to tell entering from leaving. The one
+/// documented exception is [`Polyhedron::golden_rectangles`], whose centre
+/// lies on all three face planes. Faces obey [`ConvexPolygon`]'s invariants.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Polyhedron {
     faces: Vec<ConvexPolygon>,
     center: Point,
 }
 
-/// The five regular convex polyhedra.
+/// The five regular convex polyhedra (a plain tag: no invariants).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Platonic {
     /// 4 triangles.
@@ -107,6 +109,12 @@ impl Platonic {
 
     /// The solid's vertices as unit vectors, and its faces as index lists in
     /// counter-clockwise order seen from outside.
+    ///
+    /// # Accuracy
+    ///
+    /// The vertices are the textbook Euclidean coordinates (with `φ` rounded
+    /// to f64) normalised: unit to 2 ulps. The combinatorics are exact
+    /// (face and vertex counts in `platonic_counts`).
     pub fn combinatorics(self) -> (Vec<DVec3>, Vec<Vec<usize>>) {
         let verts: Vec<DVec3> = self.template().into_iter().map(DVec3::normalize).collect();
         let faces = supporting_faces(&verts, &self.face_directions());
@@ -145,8 +153,15 @@ impl Platonic {
     /// (`ρ = 1`: the angle `π(1 - 2/q)` of the Euclidean vertex figure, 60°
     /// for the tetrahedron, cube and dodecahedron, 90° for the octahedron,
     /// 108° for the icosahedron).
-    /// Outside that range: [`GeomError::BadAngle`]. Accuracy: a few ulps of
-    /// `ρ`; `artanh` amplifies that by `1/(1 - ρ²)` near the ideal limit.
+    /// Outside that range: [`GeomError::BadAngle`].
+    ///
+    /// # Accuracy
+    ///
+    /// A few ulps of `ρ`; `artanh` amplifies that by `1/(1 - ρ²)` near the
+    /// ideal limit. The solids built with it have their dihedral angles to
+    /// 1e-12 (`other_compact_honeycomb_cells_have_their_dihedral_angles` in
+    /// `tests/figures.rs`) and agree with the closed form for {4,3,5} to
+    /// 1e-14 (`closed_form_matches_the_general_dihedral_formula`).
     pub fn circumradius_for_dihedral(self, dihedral: f64) -> Result<f64, GeomError> {
         if !(dihedral.is_finite() && dihedral > 0.0 && dihedral < std::f64::consts::PI) {
             return Err(GeomError::BadAngle(dihedral));
@@ -281,6 +296,11 @@ fn solid(dirs: &[DVec3], faces: &[Vec<usize>], circumradius: f64) -> Result<Poly
 /// shared points, and their images under one isometry, share vertices exactly
 /// in this sense; vertices that only agree to rounding are kept apart, which
 /// draws a duplicate (coincident) rod rather than a wrong one.
+///
+/// # Accuracy
+///
+/// Exact: a comparison of bit patterns, no tolerance (edge counts for every
+/// solid, moved or not, in `edges_are_unique_and_survive_isometries`).
 pub fn unique_edges(faces: &[ConvexPolygon]) -> Vec<(Vertex, Vertex)> {
     let mut ids: HashMap<(bool, [u64; 3]), usize> = HashMap::new();
     let mut id = |v: &Vertex| {
@@ -307,6 +327,17 @@ pub fn unique_edges(faces: &[ConvexPolygon]) -> Vec<(Vertex, Vertex)> {
 impl Polyhedron {
     /// A surface from faces and a centre; faces are re-oriented to point
     /// away from the centre.
+    ///
+    /// Infallible: a face whose plane passes through the centre is kept as
+    /// given, and a face that cannot be rebuilt reversed (a tolerance check
+    /// failing on the reversed order, which does not happen for faces that
+    /// passed [`ConvexPolygon::try_new`]) is kept unreversed.
+    ///
+    /// # Accuracy
+    ///
+    /// Exact: faces are stored (or rebuilt reversed); orientation is decided
+    /// by the sign of `<C, N>`, reliable unless the centre is within rounding
+    /// of a face plane.
     pub fn new(faces: Vec<ConvexPolygon>, center: Point) -> Polyhedron {
         let c = center.to_hyperboloid();
         let faces = faces
@@ -331,6 +362,15 @@ impl Polyhedron {
     /// the vertices of a regular h-polyhedron: the symmetry group of the solid
     /// fixes the origin, so it acts by hyperbolic isometries, and each face's
     /// vertices are concyclic, hence lie on one h-plane.
+    ///
+    /// Errors: [`GeomError::BadRadius`] for a non-positive or non-finite
+    /// radius, [`GeomError::NotInBall`] when the vertices are too far out for
+    /// f64 (radius above ~37), and face construction errors.
+    ///
+    /// # Accuracy
+    ///
+    /// Vertices at the circumradius to 1e-14 relative; all edges equal to
+    /// 1e-13 (`faces_point_outward_and_edges_are_equal` in this module).
     pub fn platonic(kind: Platonic, circumradius: f64) -> Result<Polyhedron, GeomError> {
         let (dirs, faces) = kind.combinatorics();
         solid(&dirs, &faces, circumradius)
@@ -341,6 +381,14 @@ impl Polyhedron {
     /// [`Platonic::circumradius_for_dihedral`] for the derivation and the
     /// admissible range. The {4,3,5} honeycomb cell is
     /// `platonic_with_dihedral(Platonic::Cube, 2π/5)`.
+    ///
+    /// Errors: [`GeomError::BadAngle`] outside the admissible range, and
+    /// [`Polyhedron::platonic`]'s.
+    ///
+    /// # Accuracy
+    ///
+    /// Dihedral angles equal `dihedral` to 1e-12
+    /// (`other_compact_honeycomb_cells_have_their_dihedral_angles`).
     pub fn platonic_with_dihedral(kind: Platonic, dihedral: f64) -> Result<Polyhedron, GeomError> {
         Polyhedron::platonic(kind, kind.circumradius_for_dihedral(dihedral)?)
     }
@@ -349,6 +397,13 @@ impl Polyhedron {
     /// centred at the origin, pushed onto the absolute. Every dihedral angle
     /// is `π(1 - 2/q)` for `{p,q}`, the lower end of
     /// [`Platonic::circumradius_for_dihedral`]'s range.
+    ///
+    /// Errors: face construction errors (none for the five solids).
+    ///
+    /// # Accuracy
+    ///
+    /// Vertices are unit vectors to 2 ulps; the edge count survives
+    /// (`edges_are_unique_and_survive_isometries`).
     pub fn ideal_platonic(kind: Platonic) -> Result<Polyhedron, GeomError> {
         let (dirs, faces) = kind.combinatorics();
         let verts = dirs
@@ -369,6 +424,13 @@ impl Polyhedron {
     /// transitive on vertices and edges (all edges equal); the vertices of a
     /// Euclidean face lie on a plane, and pushing equal-norm points radially
     /// keeps them coplanar in the Klein model, hence on one h-plane.
+    ///
+    /// Errors: as [`Polyhedron::platonic`].
+    ///
+    /// # Accuracy
+    ///
+    /// Vertices at the circumradius to 1e-14 relative, the 24 edges equal to
+    /// 1e-13 (`cuboctahedron_is_uniform` in `tests/figures.rs`).
     pub fn cuboctahedron(circumradius: f64) -> Result<Polyhedron, GeomError> {
         let mut dirs = Vec::new();
         for s1 in [-1.0, 1.0] {
@@ -399,6 +461,15 @@ impl Polyhedron {
     /// with `-<Y,Y> = (1-t)² + t² + 2t(1-t) cosh d` (no cancellation), so
     /// vertices are accurate to a few ulps. Faces point away from the centre;
     /// the surface self-intersects only along the spikes' shared edges.
+    ///
+    /// Errors: as [`Polyhedron::platonic`].
+    ///
+    /// # Accuracy
+    ///
+    /// Spike sides equal to 1e-12, the 20 core vertices equidistant from the
+    /// centre to 1e-12, and the tips the icosahedron's vertices to 1e-12
+    /// (`small_stellated_dodecahedron_has_sixty_spike_triangles` in
+    /// `tests/figures.rs`).
     pub fn small_stellated_dodecahedron(circumradius: f64) -> Result<Polyhedron, GeomError> {
         check_radius(circumradius)?;
         let tips: Vec<DVec3> = Platonic::Icosahedron
@@ -473,6 +544,14 @@ impl Polyhedron {
     /// centre" does not orient them; the face in the plane normal to axis
     /// `e` has normal `-e` (the polygons' convention: the `z = 0` one faces a
     /// camera on the `-z` side).
+    ///
+    /// Errors: as [`Polyhedron::platonic`].
+    ///
+    /// # Accuracy
+    ///
+    /// Opposite sides equal to 1e-13, the four angles equal to 1e-12, the
+    /// three planes orthogonal to 1e-15 and the vertices the icosahedron's
+    /// to 1e-13 (`golden_rectangles_are_three_orthogonal_quadrilaterals`).
     pub fn golden_rectangles(circumradius: f64) -> Result<Polyhedron, GeomError> {
         check_radius(circumradius)?;
         let corners = [
@@ -508,21 +587,40 @@ impl Polyhedron {
 
     /// The unique undirected edges of all faces, as pairs of vertices in the
     /// order they are first met walking the faces; see [`unique_edges`].
+    ///
+    /// # Accuracy
+    ///
+    /// Exact (see [`unique_edges`]).
     pub fn edges(&self) -> Vec<(Vertex, Vertex)> {
         unique_edges(&self.faces)
     }
 
     /// The faces.
+    ///
+    /// # Accuracy
+    ///
+    /// Exact: the stored faces.
     pub fn faces(&self) -> &[ConvexPolygon] {
         &self.faces
     }
 
     /// The reference centre.
+    ///
+    /// # Accuracy
+    ///
+    /// Exact: the stored point.
     pub fn center(&self) -> Point {
         self.center
     }
 
     /// The image under an isometry.
+    ///
+    /// # Accuracy
+    ///
+    /// As [`ConvexPolygon::transformed`] for each face and
+    /// [`Isometry::apply`] for the centre (hits agree with the original's to
+    /// 1e-10 relative, `platonic_hits_lie_on_faces` in
+    /// `tests/properties.rs`; the same far-out limitation applies).
     pub fn transformed(&self, iso: &Isometry) -> Polyhedron {
         Polyhedron {
             faces: self.faces.iter().map(|f| f.transformed(iso)).collect(),
@@ -531,6 +629,11 @@ impl Polyhedron {
     }
 
     /// The nearest intersection with any face in `(t_min, t_max)`.
+    ///
+    /// # Accuracy
+    ///
+    /// As [`ConvexPolygon::intersect`] for the face hit; shared edges are
+    /// watertight (`rays_through_shared_edges_hit_the_solid`).
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         let mut best: Option<Hit> = None;
         let mut limit = t_max;
@@ -544,6 +647,10 @@ impl Polyhedron {
     }
 
     /// Hyperboloid vector of the centre.
+    ///
+    /// # Accuracy
+    ///
+    /// As [`Point::to_hyperboloid`]: 2 ulps per component.
     pub fn center_h(&self) -> DVec4 {
         self.center.to_hyperboloid()
     }

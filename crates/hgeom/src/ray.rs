@@ -3,6 +3,7 @@
 
 use glam::{DVec3, DVec4};
 
+use crate::error::GeomError;
 use crate::lorentz;
 use crate::point::Point;
 
@@ -10,7 +11,10 @@ use crate::point::Point;
 /// length `t >= 0`.
 ///
 /// Invariants: `origin` is on the hyperboloid (`<X,X> = -1`, future), and
-/// `dir` is a unit tangent at it (`<X,V> = 0`, `<V,V> = 1`).
+/// `dir` is a unit tangent at it (`<X,V> = 0`, `<V,V> = 1`), both to
+/// rounding (about `eps |X|^2`). The fields are public for speed; the
+/// constructors below establish the invariants, and code that fills the
+/// fields itself is responsible for them.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ray {
     /// The start point `X` on the hyperboloid.
@@ -20,6 +24,10 @@ pub struct Ray {
 }
 
 /// A ray-surface intersection.
+///
+/// Invariants (for hits returned by hgeom): `t` finite and inside the
+/// caller's `(t_min, t_max)`; `point` is the ray's point at `t`; `normal` is
+/// a unit tangent at `point`, all to rounding.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Hit {
     /// Hyperbolic distance along the ray.
@@ -33,6 +41,12 @@ pub struct Hit {
 
 impl Hit {
     /// The hit point in the ball.
+    ///
+    /// # Accuracy
+    ///
+    /// [`Point::from_hyperboloid`] of the hit point: as accurate as the hit
+    /// itself (2 ulps on top of the hit point's own rounding); `None` only
+    /// if the hit is beyond what the ball can hold.
     pub fn ball_point(&self) -> Option<Point> {
         Point::from_hyperboloid(self.point)
     }
@@ -40,6 +54,15 @@ impl Hit {
 
 impl Ray {
     /// A ray from the origin along a (not necessarily unit) ball direction.
+    ///
+    /// The hot-path form of [`Ray::try_from_origin`]: nothing is checked.
+    /// Precondition: `dir` finite and non-zero (a zero direction gives a NaN
+    /// ray).
+    ///
+    /// # Accuracy
+    ///
+    /// The origin is exactly `(0,0,0,1)`; the direction is `dir/|dir|`, a
+    /// unit vector to 2 ulps (so the invariants hold to a few ulps).
     pub fn from_origin(dir: DVec3) -> Ray {
         Ray {
             origin: DVec4::W,
@@ -47,7 +70,35 @@ impl Ray {
         }
     }
 
+    /// A ray from the origin along a ball direction, checked.
+    ///
+    /// Errors: [`GeomError::BadDirection`] for a zero or non-finite `dir`.
+    ///
+    /// # Accuracy
+    ///
+    /// As [`Ray::from_origin`], and identical to it on valid input
+    /// (`tests/constructors.rs`).
+    pub fn try_from_origin(dir: DVec3) -> Result<Ray, GeomError> {
+        let len = dir.length();
+        if !(len.is_finite() && len > 0.0) {
+            return Err(GeomError::BadDirection);
+        }
+        Ok(Ray::from_origin(dir))
+    }
+
     /// A ray from an h-point along a ball tangent direction.
+    ///
+    /// The hot-path form of [`Ray::try_from_ball`]: nothing is checked.
+    /// Preconditions: `dir` finite and non-zero, `p` representable
+    /// ([`Point::is_representable`]).
+    ///
+    /// # Accuracy
+    ///
+    /// The origin is [`Point::to_hyperboloid`] (2 ulps per component); the
+    /// direction is [`hyperboloid_direction`], normalised by the exact
+    /// conformal factor, so `<V,V> = 1` to about `eps |X|^2`
+    /// (`ray_direction_is_a_unit_tangent` in `tests/properties.rs` bounds
+    /// the relative error of `V` by 1e-12 out to depth 12).
     pub fn from_ball(p: &Point, dir: DVec3) -> Ray {
         Ray {
             origin: p.to_hyperboloid(),
@@ -55,13 +106,49 @@ impl Ray {
         }
     }
 
+    /// A ray from an h-point along a ball tangent direction, checked.
+    ///
+    /// Errors: [`GeomError::BadDirection`] for a zero or non-finite `dir`,
+    /// [`GeomError::NotInBall`] for a point that fails
+    /// [`Point::is_representable`].
+    ///
+    /// # Accuracy
+    ///
+    /// As [`Ray::from_ball`], and identical to it on valid input
+    /// (`tests/constructors.rs`).
+    pub fn try_from_ball(p: &Point, dir: DVec3) -> Result<Ray, GeomError> {
+        let len = dir.length();
+        if !(len.is_finite() && len > 0.0) {
+            return Err(GeomError::BadDirection);
+        }
+        if !p.is_representable() {
+            return Err(GeomError::NotInBall {
+                norm: p.coords().length(),
+            });
+        }
+        Ok(Ray::from_ball(p, dir))
+    }
+
     /// The point at arc length `t`.
+    ///
+    /// # Accuracy
+    ///
+    /// `cosh t X + sinh t V`: each component within a few ulps of
+    /// `cosh t |X| + sinh t |V|`, i.e. absolute error about
+    /// `eps e^t |X|`. The sum cancels down to `|X(t)|`, so the relative
+    /// error of the point grows with how far the ray runs back towards the
+    /// origin; for rays from near the origin it is a few ulps
+    /// (`ray_stays_on_hyperboloid_at_unit_speed` in this module).
     #[inline]
     pub fn at(&self, t: f64) -> DVec4 {
         lorentz::geodesic_point(self.origin, self.dir, t)
     }
 
     /// The unit tangent of the ray at arc length `t`.
+    ///
+    /// # Accuracy
+    ///
+    /// As [`Ray::at`]: absolute error about `eps e^t (|X| + |V|)`.
     #[inline]
     pub fn tangent_at(&self, t: f64) -> DVec4 {
         t.sinh() * self.origin + t.cosh() * self.dir
@@ -70,6 +157,12 @@ impl Ray {
 
 /// Mirror reflection of the unit tangent `d` about the unit normal `n` in the
 /// tangent space (both tangent at the same point): `d - 2<d,n> n`.
+///
+/// # Accuracy
+///
+/// A few ulps of `|d| + 2|<d,n>| |n|` per component; for unit inputs the
+/// result is unit to the inputs' own rounding (`reflection_is_an_involution`
+/// in this module: an involution to 1e-15).
 #[inline]
 pub fn reflect(d: DVec4, n: DVec4) -> DVec4 {
     d - 2.0 * lorentz::dot(d, n) * n
@@ -79,6 +172,16 @@ pub fn reflect(d: DVec4, n: DVec4) -> DVec4 {
 /// `n` (either orientation), going from index `n1` to index `n2`.
 ///
 /// Returns `None` on total internal reflection.
+///
+/// # Accuracy
+///
+/// The textbook vector form of Snell's law, exact in the tangent space (the
+/// Lorentz form is positive definite there): for unit inputs the result is
+/// unit and obeys `sin t = (n1/n2) sin i` to a few ulps
+/// (`refraction_obeys_snell_and_total_internal_reflection` in this module,
+/// 1e-15). Total internal reflection is decided on `sin^2 t > 1` with
+/// rounding of a few ulps, so rays within ~1e-16 of the critical angle may
+/// go either way.
 pub fn refract(d: DVec4, n: DVec4, n1: f64, n2: f64) -> Option<DVec4> {
     let mut cos_i = -lorentz::dot(d, n);
     let mut normal = n;
@@ -87,6 +190,9 @@ pub fn refract(d: DVec4, n: DVec4, n1: f64, n2: f64) -> Option<DVec4> {
         normal = -n;
     }
     let eta = n1 / n2;
+    // Not a clamp of user input: for unit d and n, cos_i <= 1 exactly, so
+    // 1 - cos_i^2 >= 0; the guard only stops rounding (cos_i = 1 + 1 ulp
+    // at normal incidence) from producing sin^2 i = -2e-16.
     let sin2_t = eta * eta * (1.0 - cos_i * cos_i).max(0.0);
     if sin2_t > 1.0 {
         return None;
@@ -102,6 +208,13 @@ pub fn refract(d: DVec4, n: DVec4, n1: f64, n2: f64) -> Option<DVec4> {
 /// `2|w|/g` (the conformal factor). Dividing by that exact length, rather
 /// than by a computed Lorentz norm that cancels far from the origin, keeps
 /// the result a unit tangent to rounding.
+///
+/// # Accuracy
+///
+/// Each component within a few ulps of the exact push-forward of `w` at the
+/// stored point: no cancellation (the relative error of `V` is below 1e-12
+/// out to depth 12, `ray_direction_is_a_unit_tangent` in
+/// `tests/properties.rs`). Precondition: `w` non-zero (else NaN).
 pub fn hyperboloid_direction(p: &Point, w: DVec3) -> DVec4 {
     let c = p.coords();
     let g = p.gap();
@@ -115,6 +228,15 @@ pub fn hyperboloid_direction(p: &Point, w: DVec3) -> DVec4 {
 /// The differential of `X -> x/(1 + x0)` maps `V` to
 /// `v/(1+x0) - x v0/(1+x0)^2`; we normalise it (the model is conformal, so the
 /// direction is all that matters).
+///
+/// # Accuracy
+///
+/// `v (1 + x0) - x v0` cancels when `V` is nearly radial far out: the
+/// absolute error of the unnormalised vector is about `eps |X| |V|`, so the
+/// direction is accurate to about `eps |X|^2` (1e-14 for points within ~2
+/// of the origin: `tangent_round_trip` in this module; angles are
+/// preserved to `1e-12 + 100 eps |X|^2` in `isometries_preserve_angles`).
+/// Precondition: `V` tangent at `X` and non-zero (else NaN).
 pub fn ball_direction(x: DVec4, v: DVec4) -> DVec3 {
     let k = 1.0 + x.w;
     let d = v.truncate() * k - x.truncate() * v.w;
