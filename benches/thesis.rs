@@ -1,0 +1,481 @@
+//! The thesis's speed tables (SPEC 6, thesis §8.5 Tables 2 and 3), measured
+//! on our renderer next to the error of the hits, and optionally next to
+//! POV-Ray rendering the Euclidean twin of each scene.
+//!
+//! ```text
+//! cargo bench --bench thesis                 # the table
+//! cargo bench --bench thesis -- --json       # the same as JSON
+//! cargo bench --bench thesis -- --povray     # add POV-Ray 3.7 timings (needs `povray`)
+//! cargo bench --bench thesis -- --resolution 400   # quicker, smaller
+//! ```
+//!
+//! Scenes ("h-spheres": 1..16 spheres with 1 light / recursion 0, 5 lights /
+//! recursion 0, 5 lights / recursion 1; "h-cylinders": 1..8 h-cylinders with
+//! 1 and 5 lights) are generated as scene text, compiled by hscene-lang and
+//! rendered through net 0 at 1000x1000, as in the thesis. The error column is
+//! the max and median hyperbolic distance between the renderer's primary hit
+//! points and a 320-bit recomputation, on a 48x48 grid of pixels.
+
+#[path = "../crates/hgeom/tests/support/reference.rs"]
+#[allow(dead_code)]
+mod reference;
+
+use std::fmt::Write as _;
+use std::process::{Command, ExitCode};
+use std::time::Instant;
+
+use hgeom::glam::DVec3;
+use hgeom::{HSphere, Point, Ray};
+use hrender::{CanonicalCamera, Nearest, PixelNet, PreparedScene, RenderOptions, Sample};
+use hscene_lang::ir::{Net, Resolution, Scene, Shape};
+use reference::{self as r, R, V4};
+
+/// One benchmark scene.
+struct Case {
+    kind: Kind,
+    count: usize,
+    lights: usize,
+    depth: u32,
+    /// The thesis's time in seconds (Core2 Duo 2.2 GHz).
+    thesis_s: f64,
+}
+
+#[derive(Clone, Copy, PartialEq)]
+enum Kind {
+    Spheres,
+    Cylinders,
+}
+
+impl Kind {
+    fn name(self) -> &'static str {
+        match self {
+            Kind::Spheres => "h-spheres",
+            Kind::Cylinders => "h-cylinders",
+        }
+    }
+}
+
+fn cases() -> Vec<Case> {
+    let mut out = Vec::new();
+    let sphere_rows: [(usize, u32, [f64; 5]); 3] = [
+        (1, 0, [2.3, 3.4, 5.8, 10.8, 22.0]),
+        (5, 0, [3.3, 5.5, 10.3, 20.6, 45.6]),
+        (5, 1, [4.4, 7.7, 15.4, 32.0, 75.7]),
+    ];
+    for (lights, depth, times) in sphere_rows {
+        for (count, thesis_s) in [1, 2, 4, 8, 16].into_iter().zip(times) {
+            out.push(Case {
+                kind: Kind::Spheres,
+                count,
+                lights,
+                depth,
+                thesis_s,
+            });
+        }
+    }
+    let cylinder_rows: [(usize, [f64; 4]); 2] = [
+        (1, [29.1, 67.2, 146.3, 333.1]),
+        (5, [37.7, 101.6, 266.9, 736.5]),
+    ];
+    for (lights, times) in cylinder_rows {
+        for (count, thesis_s) in [1, 2, 4, 8].into_iter().zip(times) {
+            out.push(Case {
+                kind: Kind::Cylinders,
+                count,
+                lights,
+                depth: 0,
+                thesis_s,
+            });
+        }
+    }
+    out
+}
+
+/// Grid layout (columns, rows) for `n` objects.
+fn grid(n: usize) -> (usize, usize) {
+    match n {
+        1 => (1, 1),
+        2 => (2, 1),
+        4 => (2, 2),
+        8 => (4, 2),
+        _ => (4, n.div_ceil(4)),
+    }
+}
+
+const SPHERE_RADIUS: f64 = 0.15;
+const CYLINDER_RADIUS: f64 = 0.04;
+const WINDOW: f64 = 0.12;
+const VIEW: f64 = 0.1;
+
+fn sphere_centres(n: usize) -> Vec<DVec3> {
+    let (cols, rows) = grid(n);
+    let s = 0.14;
+    let mut out = Vec::new();
+    for j in 0..rows {
+        for i in 0..cols {
+            if out.len() < n {
+                let x = (i as f64 - (cols as f64 - 1.0) / 2.0) * s;
+                let y = (j as f64 - (rows as f64 - 1.0) / 2.0) * s;
+                out.push(DVec3::new(x, y, 0.55));
+            }
+        }
+    }
+    out
+}
+
+fn cylinder_axes(n: usize) -> Vec<(DVec3, DVec3)> {
+    (0..n)
+        .map(|i| {
+            let x = (i as f64 - (n as f64 - 1.0) / 2.0) * 0.09;
+            (DVec3::new(x, -0.2, 0.6), DVec3::new(x, 0.2, 0.6))
+        })
+        .collect()
+}
+
+fn light_positions(n: usize) -> Vec<DVec3> {
+    let all = [
+        DVec3::new(0.0, 0.3, 0.2),
+        DVec3::new(-0.3, 0.0, 0.2),
+        DVec3::new(0.3, 0.0, 0.2),
+        DVec3::new(0.0, -0.3, 0.2),
+        DVec3::new(0.0, 0.0, 0.05),
+    ];
+    all[..n].to_vec()
+}
+
+fn v(p: DVec3) -> String {
+    format!("({}, {}, {})", p.x, p.y, p.z)
+}
+
+/// The hscene source of a case.
+fn scene_source(c: &Case, resolution: u32) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "// {} {}: {} lights, recursion {}",
+        c.count,
+        c.kind.name(),
+        c.lights,
+        c.depth
+    );
+    let _ = writeln!(
+        s,
+        "Globals {{ recursion_depth = {}; resolution = ({resolution}, {resolution}); window_size = ({WINDOW}, {WINDOW}); net_type = 0; to = (0, 0, {VIEW}); background = (0.05, 0.05, 0.1); ambient = (0.1, 0.1, 0.1); }}",
+        c.depth
+    );
+    let _ = writeln!(
+        s,
+        "BRDFs {{ m: ambient = (0.3, 0.1, 0.1), diffuse = (0.8, 0.3, 0.3), specular = (0.6, 0.6, 0.6), alpha = 0.3, trans = 0, shininess = 40, refraction = 1; }}"
+    );
+    s.push_str("Points {\n");
+    match c.kind {
+        Kind::Spheres => {
+            for p in sphere_centres(c.count) {
+                let _ = writeln!(s, "  {};", v(p));
+            }
+        }
+        Kind::Cylinders => {
+            for (a, b) in cylinder_axes(c.count) {
+                let _ = writeln!(s, "  {}; {};", v(a), v(b));
+            }
+        }
+    }
+    let first_light = match c.kind {
+        Kind::Spheres => c.count,
+        Kind::Cylinders => 2 * c.count,
+    };
+    for p in light_positions(c.lights) {
+        let _ = writeln!(s, "  {};", v(p));
+    }
+    s.push_str("}\nLights {\n");
+    for k in 0..c.lights {
+        let _ = writeln!(s, "  %{}, (1.5, 1.5, 1.5), (1, 1, 1);", first_light + k + 1);
+    }
+    s.push_str("}\nObjects {\n");
+    for k in 0..c.count {
+        match c.kind {
+            Kind::Spheres => {
+                let _ = writeln!(s, "  Sphere %{}, {SPHERE_RADIUS}, #m;", k + 1);
+            }
+            Kind::Cylinders => {
+                let _ = writeln!(
+                    s,
+                    "  Cylinder %{}, %{}, {CYLINDER_RADIUS}, #m;",
+                    2 * k + 1,
+                    2 * k + 2
+                );
+            }
+        }
+    }
+    s.push_str("}\n");
+    s
+}
+
+/// The Euclidean twin for POV-Ray: the same camera, lights and material, a
+/// Euclidean sphere where the h-sphere appears in the ball, and a straight
+/// cylinder of the same apparent thickness along each h-line's chord.
+fn pov_source(c: &Case, resolution: u32) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "global_settings {{ max_trace_level {} assumed_gamma 1 }}",
+        c.depth + 1
+    );
+    let _ = writeln!(
+        s,
+        "camera {{ perspective location <0,0,0> direction <0,0,{VIEW}> right <{WINDOW},0,0> up <0,{WINDOW},0> }}"
+    );
+    let _ = writeln!(s, "background {{ color rgb <0.05,0.05,0.1> }}");
+    for p in light_positions(c.lights) {
+        let _ = writeln!(
+            s,
+            "light_source {{ <{},{},{}> color rgb <1,1,1> }}",
+            p.x, p.y, p.z
+        );
+    }
+    let tex = "texture { pigment { color rgb <0.8,0.3,0.3> } finish { ambient 0.03 diffuse 0.8 specular 0.6 roughness 0.02 reflection 0.3 } }";
+    match c.kind {
+        Kind::Spheres => {
+            for p in sphere_centres(c.count) {
+                let Some((ec, er)) = Point::try_new(p)
+                    .ok()
+                    .and_then(|p| HSphere::try_new(p, SPHERE_RADIUS).ok())
+                    .map(|s| s.euclidean())
+                else {
+                    continue;
+                };
+                let _ = writeln!(s, "sphere {{ <{},{},{}>, {er} {tex} }}", ec.x, ec.y, ec.z);
+            }
+        }
+        Kind::Cylinders => {
+            for (a, _) in cylinder_axes(c.count) {
+                let mid = DVec3::new(a.x, 0.0, a.z);
+                let gap = 1.0 - mid.length_squared();
+                let er = (0.5 * CYLINDER_RADIUS).tanh() * gap;
+                let _ = writeln!(
+                    s,
+                    "cylinder {{ <{},-1,{}>, <{},1,{}>, {er} {tex} }}",
+                    a.x, a.z, a.x, a.z
+                );
+            }
+        }
+    }
+    let _ = resolution;
+    s
+}
+
+/// Max and median hyperbolic distance between primary hit points and the
+/// 320-bit recomputation, over a `k x k` grid of pixels.
+fn hit_errors(scene: &Scene, k: u32) -> Result<(f64, f64, usize), String> {
+    let camera = CanonicalCamera::new(&scene.camera).map_err(|e| e.to_string())?;
+    let prepared = PreparedScene::new(scene, &camera.to_canonical).map_err(|e| e.to_string())?;
+    let net = PixelNet::new(Net::Euclidean, scene.settings.window, camera.view_distance);
+    let mut errors = Vec::new();
+    for j in 0..k {
+        for i in 0..k {
+            let sx = (f64::from(i) + 0.5) / f64::from(k) - 0.5;
+            let sy = 0.5 - (f64::from(j) + 0.5) / f64::from(k);
+            let Sample::Ray(dir) = net.sample(sx, sy) else {
+                continue;
+            };
+            let ray = Ray::from_origin(dir);
+            let Nearest::Hit(hit, index) = prepared.nearest(&ray, 0.0) else {
+                continue;
+            };
+            let f: Box<dyn Fn(&V4) -> R> = match &scene.objects[index].shape {
+                Shape::Sphere(s) => {
+                    let moved = s.transformed(&camera.to_canonical);
+                    let c = r::hyperboloid(moved.center().coords());
+                    let k = R::f(moved.radius()).cosh();
+                    Box::new(move |x: &V4| -r::ldot(x, &c) - &k)
+                }
+                Shape::Cylinder(cyl) => {
+                    let moved = cyl.transformed(&camera.to_canonical);
+                    let line = moved.line();
+                    let (Ok(a), Ok(b)) = (line.point_at(0.0), line.point_at(1.0)) else {
+                        continue;
+                    };
+                    let (ah, bh) = (r::hyperboloid(a.coords()), r::hyperboloid(b.coords()));
+                    let sh = R::f(moved.radius()).sinh();
+                    let s2 = &sh * &sh;
+                    Box::new(move |x: &V4| r::sinh2_to_line(x, &ah, &bh) - &s2)
+                }
+                _ => continue,
+            };
+            if let Some(t_ref) = r::root_near(hit.t, |t| f(&r::from_origin(dir, t))) {
+                errors.push((R::f(hit.t) - t_ref).abs().to_f64());
+            }
+        }
+    }
+    errors.sort_by(f64::total_cmp);
+    let max = errors.last().copied().unwrap_or(0.0);
+    let median = errors.get(errors.len() / 2).copied().unwrap_or(0.0);
+    Ok((max, median, errors.len()))
+}
+
+/// Wall time of POV-Ray rendering the twin, if `povray` runs.
+fn povray_seconds(c: &Case, resolution: u32) -> Option<f64> {
+    let dir = tempfile::tempdir().ok()?;
+    let pov = dir.path().join("twin.pov");
+    std::fs::write(&pov, pov_source(c, resolution)).ok()?;
+    let out = dir.path().join("twin.png");
+    let start = Instant::now();
+    let status = Command::new("povray")
+        .arg(format!("+I{}", pov.display()))
+        .arg(format!("+O{}", out.display()))
+        .args([
+            format!("+W{resolution}"),
+            format!("+H{resolution}"),
+            "-D".into(),
+            "-A".into(),
+            "-GA".into(),
+            "+FN".into(),
+        ])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .status()
+        .ok()?;
+    let secs = start.elapsed().as_secs_f64();
+    status.success().then_some(secs)
+}
+
+struct Row {
+    name: String,
+    count: usize,
+    lights: usize,
+    depth: u32,
+    thesis_s: f64,
+    seconds: f64,
+    mrays_per_s: f64,
+    max_error: f64,
+    median_error: f64,
+    sampled: usize,
+    povray_s: Option<f64>,
+}
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let json = args.iter().any(|a| a == "--json");
+    let povray = args.iter().any(|a| a == "--povray");
+    let resolution: u32 = args
+        .iter()
+        .position(|a| a == "--resolution")
+        .and_then(|i| args.get(i + 1))
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(1000);
+    let mut rows = Vec::new();
+    for c in cases() {
+        let source = scene_source(&c, resolution);
+        let compiled = hscene_lang::compile(&source);
+        let Some(scene) = compiled.scene else {
+            eprintln!("scene for {} x{} does not compile:", c.kind.name(), c.count);
+            for d in compiled.diagnostics {
+                eprintln!("  {}", d.message);
+            }
+            return ExitCode::FAILURE;
+        };
+        let options = RenderOptions {
+            net: Some(Net::Euclidean),
+            resolution: Some(Resolution {
+                width: resolution,
+                height: resolution,
+            }),
+            ..RenderOptions::default()
+        };
+        let start = Instant::now();
+        let rendered = match hrender::render(&scene, &options, &|_| {}) {
+            Ok(r) => r,
+            Err(e) => {
+                eprintln!("render failed: {e}");
+                return ExitCode::FAILURE;
+            }
+        };
+        let seconds = start.elapsed().as_secs_f64();
+        let (max_error, median_error, sampled) = match hit_errors(&scene, 48) {
+            Ok(e) => e,
+            Err(e) => {
+                eprintln!("error measurement failed: {e}");
+                return ExitCode::FAILURE;
+            }
+        };
+        rows.push(Row {
+            name: c.kind.name().to_string(),
+            count: c.count,
+            lights: c.lights,
+            depth: c.depth,
+            thesis_s: c.thesis_s,
+            seconds,
+            mrays_per_s: rendered.stats.rays as f64 / seconds / 1e6,
+            max_error,
+            median_error,
+            sampled,
+            povray_s: if povray {
+                povray_seconds(&c, resolution)
+            } else {
+                None
+            },
+        });
+    }
+    if json {
+        let items: Vec<String> = rows
+            .iter()
+            .map(|r| {
+                format!(
+                    "{{\"scene\": \"{}\", \"objects\": {}, \"lights\": {}, \"recursion\": {}, \"resolution\": {resolution}, \"thesis_s\": {}, \"seconds\": {:.4}, \"mrays_per_s\": {:.3}, \"hit_error_max\": {:e}, \"hit_error_median\": {:e}, \"hit_error_unit\": \"hyperbolic distance\", \"hits_sampled\": {}, \"povray_s\": {}}}",
+                    r.name,
+                    r.count,
+                    r.lights,
+                    r.depth,
+                    r.thesis_s,
+                    r.seconds,
+                    r.mrays_per_s,
+                    r.max_error,
+                    r.median_error,
+                    r.sampled,
+                    r.povray_s.map_or("null".to_string(), |s| format!("{s:.4}"))
+                )
+            })
+            .collect();
+        println!("[\n  {}\n]", items.join(",\n  "));
+    } else {
+        println!(
+            "{resolution}x{resolution}, net 0, {} threads; errors: hyperbolic distance of primary hits vs 320-bit reference",
+            rayon_threads()
+        );
+        println!(
+            "{:<12} {:>4} {:>6} {:>5} {:>10} {:>9} {:>9} {:>10} {:>10} {:>5} {:>10}",
+            "scene",
+            "n",
+            "lights",
+            "depth",
+            "thesis s",
+            "ours s",
+            "Mrays/s",
+            "err max",
+            "err median",
+            "hits",
+            "POV-Ray s"
+        );
+        for r in &rows {
+            println!(
+                "{:<12} {:>4} {:>6} {:>5} {:>10.1} {:>9.3} {:>9.2} {:>10.1e} {:>10.1e} {:>5} {:>10}",
+                r.name,
+                r.count,
+                r.lights,
+                r.depth,
+                r.thesis_s,
+                r.seconds,
+                r.mrays_per_s,
+                r.max_error,
+                r.median_error,
+                r.sampled,
+                r.povray_s.map_or("-".to_string(), |s| format!("{s:.3}"))
+            );
+        }
+    }
+    ExitCode::SUCCESS
+}
+
+fn rayon_threads() -> usize {
+    std::thread::available_parallelism().map_or(1, usize::from)
+}
