@@ -81,7 +81,7 @@ pub struct Resolution {
 }
 
 /// Size of the sampled window on the view plane (Euclidean units for nets 0
-/// and 2, hyperbolic lengths for nets 1, 3 and 4). Invariant: both positive.
+/// 2 and 4, hyperbolic lengths for nets 1 and 3). Invariant: both positive.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Window {
     /// Horizontal extent.
