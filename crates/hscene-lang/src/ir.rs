@@ -80,7 +80,7 @@ pub struct Resolution {
     pub height: u32,
 }
 
-/// Size of the sampled window on the view plane (Euclidean units for nets 0
+/// Size of the sampled window on the view plane (Euclidean units for nets 0,
 /// 2 and 4, hyperbolic lengths for nets 1 and 3). Invariant: both positive.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Window {
