@@ -1,0 +1,124 @@
+//! Criterion benchmark of the scene-language front end: `hscene_lang::compile`
+//! (parse, validate, apply transformations, lower, lint) on the thesis's
+//! Appendix A scene and on a generated, valid scene of about 1 MB, and the
+//! parser alone (`hscene_lang::parse`) on the same two inputs.
+//!
+//! Throughput is reported in decimal MB/s of source text.
+//!
+//! `cargo bench --bench check -- --warm-up-time 1 --measurement-time 3`
+
+use std::fmt::Write as _;
+use std::hint::black_box;
+
+use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+
+const APPENDIX: &str = include_str!("../scenes/thesis-appendix-a.hsc");
+
+/// A valid scene of at least `target` bytes: named and anonymous points, two
+/// materials, a few lights, spheres, Platonic solids and a polygon, and a
+/// rotation and a translation for every point.
+fn generated_scene(target: usize) -> String {
+    let mut s = String::with_capacity(target + 4096);
+    s.push_str(
+        "// Generated benchmark scene.\n\
+         Globals {\n    recursion_depth = 2;\n    resolution = (640, 480);\n    \
+         window_size = (0.15, 0.1125);\n    net_type = 0;\n    from = (0, 0, 0);\n    \
+         to = %target;\n    up = (0, 0.1, 0);\n    background = (0.02, 0.02, 0.05);\n    \
+         ambient = (0.1, 0.1, 0.1);\n}\n\n\
+         BRDFs {\n    matte: ambient = (0.4, 0.8, 0.4), diffuse = (0.4, 0.8, 0.4), \
+         specular = (0.7, 0.7, 0.7), alpha = 0.6, trans = 0.3, shininess = 50, refraction = 1;\n    \
+         glass: ambient = (0.1, 0.1, 0.1), diffuse = (0.2, 0.2, 0.2), specular = (1, 1, 1), \
+         alpha = 0.1, trans = 0.8, shininess = 80, refraction = 1.15;\n}\n\n",
+    );
+    // Each point costs about 40 + 30 + 60 bytes (declaration, sphere,
+    // transformations); 200 points per light.
+    let n = target / 130;
+    let lights = (n / 200).max(1);
+    s.push_str("Points {\n    target = (0, 0, 0.3);\n    a = (0, 0, 0);\n    b = (0, 0, 0.1);\n    c = (0, 0.1, 0);\n");
+    for i in 0..n {
+        let t = i as f64 * 0.618_033_988_749_895;
+        let (x, y) = (0.2 * t.sin(), 0.2 * t.cos());
+        let z = 0.3 + 0.2 * ((i % 97) as f64 / 97.0);
+        writeln!(s, "    p{i} = ({x:.6}, {y:.6}, {z:.6});").unwrap();
+    }
+    for i in 0..lights {
+        let t = i as f64 * 0.7;
+        writeln!(
+            s,
+            "    ({:.4}, {:.4}, -0.05);",
+            0.3 * t.sin(),
+            0.3 * t.cos()
+        )
+        .unwrap();
+    }
+    s.push_str("    (0.05, 0, 0.3); (0.05, 0.05, 0.3); (0, 0.05, 0.3);\n}\n\nLights {\n");
+    for i in 0..lights {
+        writeln!(
+            s,
+            "    %{}, (0.35, 0.35, 0.35), (0.7, 0.7, 0.7);",
+            n + 5 + i
+        )
+        .unwrap();
+    }
+    s.push_str("}\n\nObjects {\n    Dodecahedron 0.045, #glass;\n    Icosahedron 0.03, #matte;\n");
+    writeln!(
+        s,
+        "    Polygon (%target, %{}, %{}, %{}), #matte;",
+        n + lights + 5,
+        n + lights + 6,
+        n + lights + 7
+    )
+    .unwrap();
+    for i in 0..n {
+        let m = if i % 3 == 0 { "glass" } else { "matte" };
+        writeln!(s, "    Sphere %p{i}, 0.004, #{m};").unwrap();
+    }
+    s.push_str("}\n\nTransformations {\n    hline (%a, %b);\n    axis: hline (%a, %c);\n");
+    for i in 0..n {
+        writeln!(s, "    %p{i}->Rotate(%1, -0.0{});", i % 10).unwrap();
+        writeln!(s, "    %p{i}->Translate(%axis);").unwrap();
+    }
+    s.push_str("}\n");
+    s
+}
+
+fn check(c: &mut Criterion) {
+    let big = generated_scene(1_000_000);
+    for (name, src) in [("appendix-a", APPENDIX), ("generated", big.as_str())] {
+        let compiled = hscene_lang::compile(src);
+        assert!(
+            !compiled.has_errors(),
+            "{name}: {:?}",
+            &compiled.diagnostics[..compiled.diagnostics.len().min(3)]
+        );
+    }
+    eprintln!(
+        "generated scene: {} bytes, {} lines",
+        big.len(),
+        big.lines().count()
+    );
+
+    let mut group = c.benchmark_group("compile");
+    for (name, src) in [
+        ("thesis-appendix-a", APPENDIX),
+        ("generated-1MB", big.as_str()),
+    ] {
+        group.throughput(Throughput::BytesDecimal(src.len() as u64));
+        group.bench_function(name, |b| b.iter(|| hscene_lang::compile(black_box(src))));
+    }
+    group.finish();
+
+    // The parser alone (scanner and pest), to separate it from lowering.
+    let mut group = c.benchmark_group("parse");
+    for (name, src) in [
+        ("thesis-appendix-a", APPENDIX),
+        ("generated-1MB", big.as_str()),
+    ] {
+        group.throughput(Throughput::BytesDecimal(src.len() as u64));
+        group.bench_function(name, |b| b.iter(|| hscene_lang::parse(black_box(src))));
+    }
+    group.finish();
+}
+
+criterion_group!(benches, check);
+criterion_main!(benches);
