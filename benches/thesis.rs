@@ -17,7 +17,6 @@
 //! points and a 320-bit recomputation, on a 48x48 grid of pixels.
 
 #[path = "../crates/hgeom/tests/support/reference.rs"]
-#[allow(dead_code)]
 mod reference;
 
 use std::fmt::Write as _;

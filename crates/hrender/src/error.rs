@@ -16,6 +16,12 @@ pub enum RenderError {
         /// Which object or light.
         what: String,
     },
+    /// The scene violates an invariant of the IR (a bug in whatever built it).
+    #[error("invalid scene: {0}")]
+    InvalidScene(String),
+    /// A render option is out of range.
+    #[error("invalid render option: {0}")]
+    InvalidOption(String),
     /// The output extension is not one we write.
     #[error("unsupported output format `{0}`: use .png, .tif or .tiff")]
     UnsupportedFormat(String),

@@ -2,35 +2,58 @@
 //!
 //! Traces a lowered [`Scene`](hscene_lang::ir::Scene) over the chosen pixel
 //! net with Whitted recursion, Phong shading and hyperbolic attenuation, in
-//! parallel, and writes the result as PNG or TIFF.
+//! parallel, and writes the result as PNG or TIFF. Every intersection is
+//! hgeom's exact one; a hierarchy of bounding h-spheres decides which exact
+//! tests a ray needs. Anti-aliasing (deterministic, seeded jitter) and an
+//! exposure correction are render options. `docs/rendering.md` describes
+//! the whole pipeline and the tests that pin it down.
 //!
 //! Invariants: the renderer never sees source text (only the IR); it never
 //! prints or touches a terminal (progress goes through a callback); every
-//! non-finite shading result is counted in [`RenderStats`], never hidden.
+//! numeric failure (a non-finite ray, hit or colour, or a tangent vector the
+//! hyperboloid can no longer resolve) is counted in [`RenderStats`], never
+//! hidden, and no pixel is ever NaN or infinite.
 
+// `!(x > 0.0)` is deliberate: it sends NaN down the failure path, which
+// `x <= 0.0` would not.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+mod bvh;
 mod camera;
 mod color;
 mod error;
 mod image;
 mod nets;
 mod output;
+mod sampling;
 mod scene;
 mod tracer;
 
+use std::collections::HashMap;
+
 use hgeom::Ray;
-use hscene_lang::ir::{Net, Resolution, Scene};
+use hscene_lang::ir::{Net, Resolution, Scene, Window};
 use rayon::prelude::*;
 
 pub use camera::CanonicalCamera;
+pub use color::Color;
 pub use error::RenderError;
 pub use image::Image;
 pub use nets::{PixelNet, Sample};
 pub use output::{ImageFormat, SampleDepth, write_image};
-pub use scene::PreparedScene;
-pub use tracer::TraceStats;
+pub use sampling::Sampler;
+pub use scene::{Nearest, PreparedScene};
+pub use tracer::{TraceStats, Tracer};
+
+/// Most samples per pixel a render accepts.
+pub const MAX_SAMPLES: u32 = 4096;
+
+/// Largest exposure correction, in stops, either way: `2^64` already maps
+/// the faintest visible radiance onto the brightest.
+pub const MAX_EXPOSURE: f64 = 64.0;
 
 /// Overrides of the scene's own settings, and execution options.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct RenderOptions {
     /// Use this pixel net instead of the scene's `net_type`.
     pub net: Option<Net>,
@@ -38,6 +61,56 @@ pub struct RenderOptions {
     pub resolution: Option<Resolution>,
     /// Worker threads; `None` uses all cores.
     pub threads: Option<usize>,
+    /// Samples per pixel, `1..=MAX_SAMPLES`, averaged with a box filter.
+    /// One sample looks through the pixel centre; more are jittered
+    /// (stratified when the count is a perfect square).
+    pub samples: u32,
+    /// Seed of the sample jitter: the same seed gives the same image.
+    pub seed: u64,
+    /// Exposure correction in stops (EV): linear radiance is multiplied by
+    /// `2^exposure` before it is stored, so every output format, the
+    /// floating-point TIFF included, sees the scaled values.
+    pub exposure: f64,
+}
+
+impl Default for RenderOptions {
+    fn default() -> Self {
+        RenderOptions {
+            net: None,
+            resolution: None,
+            threads: None,
+            samples: 1,
+            seed: 0,
+            exposure: 0.0,
+        }
+    }
+}
+
+impl RenderOptions {
+    /// Check the ranges the renderer relies on.
+    pub fn validate(&self) -> Result<(), RenderError> {
+        if !(1..=MAX_SAMPLES).contains(&self.samples) {
+            return Err(RenderError::InvalidOption(format!(
+                "samples must be from 1 to {MAX_SAMPLES}, not {}",
+                self.samples
+            )));
+        }
+        if !(self.exposure.is_finite() && self.exposure.abs() <= MAX_EXPOSURE) {
+            return Err(RenderError::InvalidOption(format!(
+                "exposure must be a number of stops from -{MAX_EXPOSURE} to {MAX_EXPOSURE}, not {}",
+                self.exposure
+            )));
+        }
+        if self
+            .resolution
+            .is_some_and(|r| r.width == 0 || r.height == 0)
+        {
+            return Err(RenderError::InvalidOption(
+                "resolution must be at least 1x1".into(),
+            ));
+        }
+        Ok(())
+    }
 }
 
 /// What happened during a render.
@@ -45,7 +118,8 @@ pub struct RenderOptions {
 pub struct RenderStats {
     /// Rays traced, all kinds.
     pub rays: u64,
-    /// Pixels whose shading was not finite (shown as background).
+    /// Pixels with a numeric failure in at least one of their rays or
+    /// shading results; the failing contribution shows the background.
     pub numeric_failures: u64,
 }
 
@@ -65,6 +139,7 @@ pub fn render(
     options: &RenderOptions,
     progress: &(dyn Fn(u32) + Sync),
 ) -> Result<Rendered, RenderError> {
+    options.validate()?;
     let pool = {
         let mut b = rayon::ThreadPoolBuilder::new();
         if let Some(n) = options.threads {
@@ -75,6 +150,137 @@ pub fn render(
     pool.install(|| render_in_pool(scene, options, progress))
 }
 
+/// Everything a row of pixels needs, shared by all rows.
+struct Frame<'a> {
+    net: Net,
+    pixel_net: PixelNet,
+    window: Window,
+    width: u32,
+    height: u32,
+    sampler: Sampler,
+    scale: f64,
+    tracer: Tracer<'a>,
+    background: Color,
+}
+
+impl Frame<'_> {
+    /// The colour of one net sample, and whether it had a numeric failure.
+    fn shade(&self, sample: Sample, stats: &mut TraceStats) -> (Color, bool) {
+        match sample {
+            Sample::Ray(dir) => {
+                let before = stats.failures;
+                let c = self.tracer.primary(&Ray::from_origin(dir), stats);
+                (c, stats.failures > before)
+            }
+            Sample::Outside => (self.background, false),
+        }
+    }
+
+    /// Row `j`: every pixel's samples, box-filtered and exposed.
+    fn row(&self, j: u32, stats: &mut TraceStats) -> (Vec<[f32; 3]>, u64) {
+        let (w, h) = (f64::from(self.width), f64::from(self.height));
+        let mut nodes = NodeCache::default();
+        let mut failed_pixels = 0;
+        let pixels = (0..self.width)
+            .map(|i| {
+                let mut sum = Color::default();
+                let mut failed = false;
+                for k in 0..self.sampler.count() {
+                    let (ox, oy) = self.sampler.offset(i, j, k);
+                    let sx = (f64::from(i) + ox) / w - 0.5;
+                    let sy = 0.5 - (f64::from(j) + oy) / h;
+                    let (c, f) = match self.net {
+                        Net::EquidistantInterpolated => {
+                            self.interpolated(sx, sy, &mut nodes, stats)
+                        }
+                        _ => self.shade(self.pixel_net.sample(sx, sy), stats),
+                    };
+                    sum += c;
+                    failed |= f;
+                }
+                let c = sum * (self.scale / f64::from(self.sampler.count()));
+                let px = c.0.map(|v| v as f32);
+                // Exposure or f32 conversion can overflow a finite radiance.
+                let px = if px.iter().all(|v| v.is_finite()) {
+                    px
+                } else {
+                    failed = true;
+                    [0.0; 3]
+                };
+                failed_pixels += u64::from(failed);
+                px
+            })
+            .collect();
+        (pixels, failed_pixels)
+    }
+
+    /// Net 4: the screen shows the great disk as net 2 does, and each
+    /// sample is interpolated bilinearly, in the equidistant coordinates
+    /// `(a, b)`, from the four surrounding net-3 nodes. Nodes sit on a
+    /// lattice of spacing equal to the hyperbolic pixel pitch at the disk's
+    /// centre, so the two nets agree up to interpolation error. Nodes are
+    /// traced once per row (`nodes` caches them) and only when their weight
+    /// is not zero.
+    fn interpolated(
+        &self,
+        sx: f64,
+        sy: f64,
+        nodes: &mut NodeCache,
+        stats: &mut TraceStats,
+    ) -> (Color, bool) {
+        let (u, v) = (self.window.width * sx, self.window.height * sy);
+        let r2 = u * u + v * v;
+        if !(r2 < 1.0) {
+            return (self.background, false);
+        }
+        // Disk point -> hyperboloid of the disk: x_i = 2 q_i / (1 - |q|^2).
+        let g = 1.0 - r2;
+        let (a, b) = ((2.0 * u / g).asinh(), (2.0 * v / g).asinh());
+        // Pixel pitch on the disk is w/width; at the centre that is 2 w/width
+        // in hyperbolic length.
+        let (da, db) = (
+            2.0 * self.window.width / f64::from(self.width),
+            2.0 * self.window.height / f64::from(self.height),
+        );
+        let (fa, fb) = (a / da - 0.5, b / db - 0.5);
+        let (ia, ib) = (fa.floor(), fb.floor());
+        let (ta, tb) = (fa - ia, fb - ib);
+        let mut sum = Color::default();
+        let mut failed = false;
+        for (di, dk, weight) in [
+            (0.0, 0.0, (1.0 - ta) * (1.0 - tb)),
+            (1.0, 0.0, ta * (1.0 - tb)),
+            (0.0, 1.0, (1.0 - ta) * tb),
+            (1.0, 1.0, ta * tb),
+        ] {
+            if weight == 0.0 {
+                continue;
+            }
+            let (ni, nk) = (ia + di, ib + dk);
+            // Node indices are bounded by |a|/da, and |a| < 40 in f64.
+            let key = (ni as i64, nk as i64);
+            let (c, f) = match nodes.0.get(&key) {
+                Some(hit) => *hit,
+                None => {
+                    let sample = self
+                        .pixel_net
+                        .equidistant_node((ni + 0.5) * da, (nk + 0.5) * db);
+                    let shaded = self.shade(sample, stats);
+                    nodes.0.insert(key, shaded);
+                    shaded
+                }
+            };
+            sum += c * weight;
+            failed |= f;
+        }
+        (sum, failed)
+    }
+}
+
+/// Net-3 nodes already traced for the current row, by lattice index.
+#[derive(Default)]
+struct NodeCache(HashMap<(i64, i64), (Color, bool)>);
+
 fn render_in_pool(
     scene: &Scene,
     options: &RenderOptions,
@@ -84,97 +290,44 @@ fn render_in_pool(
     let prepared = PreparedScene::new(scene, &camera.to_canonical)?;
     let net = options.net.unwrap_or(scene.settings.net);
     let Resolution { width, height } = options.resolution.unwrap_or(scene.settings.resolution);
-    let pixel_net = PixelNet::new(net, scene.settings.window, camera.view_distance);
-    let tracer = tracer::Tracer::new(&prepared);
-    let background = color::Color::from(prepared.background);
-
-    let shade = |sample: Sample, stats: &mut TraceStats| match sample {
-        Sample::Ray(dir) => tracer.primary(&Ray::from_origin(dir), stats),
-        Sample::Outside => background,
+    if width == 0 || height == 0 {
+        return Err(RenderError::InvalidOption(
+            "resolution must be at least 1x1".into(),
+        ));
+    }
+    let frame = Frame {
+        net,
+        pixel_net: PixelNet::new(net, scene.settings.window, camera.view_distance),
+        window: scene.settings.window,
+        width,
+        height,
+        sampler: Sampler::new(options.samples, options.seed),
+        scale: options.exposure.exp2(),
+        tracer: Tracer::new(&prepared),
+        background: Color::from(prepared.background),
     };
 
     let done = std::sync::atomic::AtomicU32::new(0);
-    let rows: Vec<(Vec<[f32; 3]>, TraceStats)> = (0..height)
+    let rows: Vec<(Vec<[f32; 3]>, u64, TraceStats)> = (0..height)
         .into_par_iter()
         .map(|j| {
             let mut stats = TraceStats::default();
-            let sy = 0.5 - (f64::from(j) + 0.5) / f64::from(height);
-            let row = (0..width)
-                .map(|i| {
-                    let sx = (f64::from(i) + 0.5) / f64::from(width) - 0.5;
-                    let c = match net {
-                        Net::EquidistantInterpolated => interpolated(
-                            &pixel_net, scene, sx, sy, width, height, &shade, &mut stats,
-                        ),
-                        _ => shade(pixel_net.sample(sx, sy), &mut stats),
-                    };
-                    c.0.map(|v| v as f32)
-                })
-                .collect();
+            let (row, failed) = frame.row(j, &mut stats);
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(n);
-            (row, stats)
+            (row, failed, stats)
         })
         .collect();
 
-    let mut stats = TraceStats::default();
+    let mut stats = RenderStats::default();
     let mut pixels = Vec::with_capacity(width as usize * height as usize);
-    for (row, s) in rows {
+    for (row, failed, s) in rows {
         pixels.extend(row);
-        stats = stats.merge(s);
+        stats.rays += s.rays;
+        stats.numeric_failures += failed;
     }
     Ok(Rendered {
         image: Image::from_pixels(width, height, pixels),
-        stats: RenderStats {
-            rays: stats.rays,
-            numeric_failures: stats.numeric_failures,
-        },
+        stats,
     })
-}
-
-/// Net 4: the screen shows the great disk as net 2 does, and each pixel is
-/// interpolated bilinearly, in the equidistant coordinates `(a, b)`, from the
-/// four surrounding net-3 nodes. Nodes sit on a lattice of spacing equal to
-/// the hyperbolic pixel pitch at the disk's centre, so the two nets agree
-/// up to interpolation error.
-#[allow(clippy::too_many_arguments)]
-fn interpolated(
-    net: &PixelNet,
-    scene: &Scene,
-    sx: f64,
-    sy: f64,
-    width: u32,
-    height: u32,
-    shade: &(dyn Fn(Sample, &mut TraceStats) -> color::Color + Sync),
-    stats: &mut TraceStats,
-) -> color::Color {
-    let w = scene.settings.window;
-    let (u, v) = (w.width * sx, w.height * sy);
-    let r2 = u * u + v * v;
-    if r2 >= 1.0 {
-        return shade(Sample::Outside, stats);
-    }
-    // Disk point -> hyperboloid of the disk: x_i = 2 q_i / (1 - |q|^2).
-    let g = 1.0 - r2;
-    let (a, b) = ((2.0 * u / g).asinh(), (2.0 * v / g).asinh());
-    // Pixel pitch on the disk is w/width; at the centre that is 2 w/width in
-    // hyperbolic length.
-    let (da, db) = (
-        2.0 * w.width / f64::from(width),
-        2.0 * w.height / f64::from(height),
-    );
-    let (fa, fb) = (a / da - 0.5, b / db - 0.5);
-    let (ia, ib) = (fa.floor(), fb.floor());
-    let (ta, tb) = (fa - ia, fb - ib);
-    let node = |i: f64, k: f64, stats: &mut TraceStats| {
-        shade(net.equidistant_node((i + 0.5) * da, (k + 0.5) * db), stats)
-    };
-    let c00 = node(ia, ib, stats);
-    let c10 = node(ia + 1.0, ib, stats);
-    let c01 = node(ia, ib + 1.0, stats);
-    let c11 = node(ia + 1.0, ib + 1.0, stats);
-    c00 * ((1.0 - ta) * (1.0 - tb))
-        + c10 * (ta * (1.0 - tb))
-        + c01 * ((1.0 - ta) * tb)
-        + c11 * (ta * tb)
 }

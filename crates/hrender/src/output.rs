@@ -110,10 +110,13 @@ fn encode_png(
             enc.write_image(&image.to_rgb8(), w, h, image::ExtendedColorType::Rgb8)
         }
         _ => {
+            // The image crate takes 16-bit samples in native byte order and
+            // writes them big-endian itself, as PNG requires; converting to
+            // big-endian here would swap them twice on little-endian hosts.
             let bytes: Vec<u8> = image
                 .to_rgb16()
                 .iter()
-                .flat_map(|v| v.to_be_bytes())
+                .flat_map(|v| v.to_ne_bytes())
                 .collect();
             enc.write_image(&bytes, w, h, image::ExtendedColorType::Rgb16)
         }

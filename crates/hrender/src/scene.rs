@@ -1,14 +1,23 @@
 //! The scene prepared for tracing: everything moved into the canonical frame
-//! once, in f64, so near the eye every quantity is small and well conditioned.
+//! once, in f64, so near the eye every quantity is small and well conditioned;
+//! and bounding h-spheres around everything finite, in a hierarchy, so a ray
+//! pays the exact intersection only for what it may actually meet.
 
 use hgeom::glam::DVec4;
+use hgeom::lorentz;
 use hgeom::{
-    ConvexPolygon, HCylinder, HPlane, HSphere, Hit, Horosphere, Isometry, Polyhedron, Ray, Rod,
-    Vertex,
+    ConvexPolygon, HCylinder, HPlane, HSphere, Hit, Horosphere, Isometry, Ray, Rod, Vertex,
 };
 use hscene_lang::ir::{self, Material, Rgb, Scene};
 
+use crate::bvh::{Bound, Bvh, Step};
 use crate::error::RenderError;
+
+/// Padding of bounds around polygons. A polygon accepts hits slightly
+/// outside its edges (`<P,E> >= -1e-10 |P| |E|`, to keep shared edges
+/// watertight); that slack grows like `cosh^2` of the distance from the
+/// origin, so the pad is this factor times `1 + max w^2` over the vertices.
+const FLAT_PAD: f64 = 1e-9;
 
 /// A traceable shape in the canonical frame.
 #[derive(Clone, Debug)]
@@ -17,18 +26,248 @@ pub enum Primitive {
     Sphere(HSphere),
     /// A convex polygon.
     Polygon(ConvexPolygon),
-    /// A polyhedral surface.
-    Polyhedron(Polyhedron),
+    /// A polyhedral surface: its faces, with a hierarchy over them.
+    Polyhedron(Composite<ConvexPolygon>),
     /// A whole h-plane.
     Plane(HPlane),
-    /// A rod about a segment.
-    Rod(Rod),
-    /// An h-cylinder about a whole line.
-    Cylinder(HCylinder),
+    /// A rod about a segment (boxed: a rod is several times larger than
+    /// the other variants).
+    Rod(Box<Rod>),
+    /// An h-cylinder about a whole line (boxed, likewise).
+    Cylinder(Box<HCylinder>),
     /// A horosphere.
     Horosphere(Horosphere),
-    /// A set of rods.
-    Wireframe(Vec<Rod>),
+    /// A set of rods, with a hierarchy over them.
+    Wireframe(Composite<Rod>),
+}
+
+/// What a composite primitive is made of.
+pub trait Part {
+    /// Nearest hit in `(t_min, t_max)`.
+    fn hit(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit>;
+    /// A ball containing the part, if it is bounded.
+    fn bound(&self) -> Option<Bound>;
+    /// Balls whose union contains the part, for the hierarchy's leaves;
+    /// empty if the part is unbounded. Long thin parts give several small
+    /// balls, which hug them far better than one ball can.
+    fn pieces(&self) -> Vec<Bound> {
+        self.bound().into_iter().collect()
+    }
+}
+
+impl Part for ConvexPolygon {
+    #[inline]
+    fn hit(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        self.intersect(ray, t_min, t_max)
+    }
+    fn bound(&self) -> Option<Bound> {
+        polygon_bound(self)
+    }
+}
+
+impl Part for Rod {
+    #[inline]
+    fn hit(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        self.intersect(ray, t_min, t_max)
+    }
+    fn bound(&self) -> Option<Bound> {
+        rod_bound(self)
+    }
+    fn pieces(&self) -> Vec<Bound> {
+        rod_pieces(self)
+    }
+}
+
+/// Parts with a hierarchy of bounds over them.
+#[derive(Clone, Debug)]
+pub struct Composite<T> {
+    parts: Vec<T>,
+    accel: Accel,
+}
+
+impl<T: Part> Composite<T> {
+    fn new(parts: Vec<T>) -> Composite<T> {
+        let mut leaves = Vec::new();
+        for (i, part) in parts.iter().enumerate() {
+            let pieces = part.pieces();
+            if pieces.is_empty() {
+                leaves.push((i as u32, None));
+            }
+            leaves.extend(pieces.into_iter().map(|b| (i as u32, Some(b))));
+        }
+        Composite {
+            parts,
+            accel: Accel::new(&leaves),
+        }
+    }
+
+    /// The parts.
+    pub fn parts(&self) -> &[T] {
+        &self.parts
+    }
+
+    #[inline]
+    fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        self.accel
+            .nearest(ray, t_min, t_max, |i, lo, hi| {
+                self.parts[i as usize].hit(ray, lo, hi)
+            })
+            .map(|(hit, _)| hit)
+    }
+
+    #[inline]
+    fn blocks(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        let mut found = false;
+        self.accel.any(ray, t_min, t_max, |i| {
+            found = self.parts[i as usize].hit(ray, t_min, t_max).is_some();
+            if found { Step::Stop } else { Step::Continue }
+        });
+        found
+    }
+}
+
+/// A bounding hierarchy over items `0..n`, plus the items without a bound
+/// (h-planes, h-cylinders, horospheres, anything with an ideal point), which
+/// every ray tests.
+#[derive(Clone, Debug, Default)]
+struct Accel {
+    bvh: Bvh,
+    unbounded: Vec<u32>,
+}
+
+impl Accel {
+    /// From `(item, bound)` leaves; an item may have several leaves (its
+    /// exact test then runs at most once per leaf the ray enters, which is
+    /// harmless: a repeated test finds nothing nearer).
+    fn new(leaves: &[(u32, Option<Bound>)]) -> Accel {
+        let mut bounded = Vec::new();
+        let mut unbounded = Vec::new();
+        for (i, b) in leaves {
+            match b {
+                Some(b) => bounded.push((*i, *b)),
+                None => unbounded.push(*i),
+            }
+        }
+        Accel {
+            bvh: Bvh::build(&bounded),
+            unbounded,
+        }
+    }
+
+    /// A ball around every item, if all are bounded.
+    fn bound(&self) -> Option<Bound> {
+        if self.unbounded.is_empty() {
+            self.bvh.bound()
+        } else {
+            None
+        }
+    }
+
+    /// The nearest hit among the items: `test(item, t_min, t_max)` is the
+    /// item's exact test, called with the nearest hit so far as `t_max`.
+    #[inline]
+    fn nearest(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+        mut test: impl FnMut(u32, f64, f64) -> Option<Hit>,
+    ) -> Option<(Hit, u32)> {
+        let mut best = None;
+        let mut limit = t_max;
+        for &i in &self.unbounded {
+            if let Some(hit) = test(i, t_min, limit) {
+                limit = hit.t;
+                best = Some((hit, i));
+            }
+        }
+        if !self.bvh.is_empty() {
+            // The bounds work in u = e^t (no logarithms in their test).
+            let mut u_max = limit.exp();
+            self.bvh.traverse(ray, t_min.exp(), &mut u_max, |i, u_max| {
+                if let Some(hit) = test(i, t_min, limit) {
+                    limit = hit.t;
+                    *u_max = hit.t.exp();
+                    best = Some((hit, i));
+                }
+                Step::Continue
+            });
+        }
+        best
+    }
+
+    /// Visit every item that may meet the ray's arc `(t_min, t_max)`, until
+    /// `visit` says stop.
+    #[inline]
+    fn any(&self, ray: &Ray, t_min: f64, t_max: f64, mut visit: impl FnMut(u32) -> Step) {
+        for &i in &self.unbounded {
+            if visit(i) == Step::Stop {
+                return;
+            }
+        }
+        let mut u_max = t_max.exp();
+        self.bvh
+            .traverse(ray, t_min.exp(), &mut u_max, |i, _| visit(i));
+    }
+}
+
+/// A ball around a polygon: around its vertices (a convex polygon is their
+/// convex hull, and balls are convex); none if a vertex is ideal.
+fn polygon_bound(p: &ConvexPolygon) -> Option<Bound> {
+    let pts = p
+        .vertices()
+        .iter()
+        .map(|v| match v {
+            Vertex::Interior(q) => Some(q.to_hyperboloid()),
+            Vertex::Ideal(_) => None,
+        })
+        .collect::<Option<Vec<DVec4>>>()?;
+    let far = pts.iter().map(|x| x.w * x.w).fold(1.0, f64::max);
+    Bound::around(&pts, FLAT_PAD * (1.0 + far))
+}
+
+/// A ball around a finite rod: centred at the segment's midpoint, of radius
+/// half its length plus the rod's radius (the rod is the `r`-neighbourhood
+/// of the segment, and the segment lies in the ball about its midpoint).
+fn rod_bound(r: &Rod) -> Option<Bound> {
+    match (r.start(), r.end()) {
+        (Vertex::Interior(a), Vertex::Interior(b)) => Bound::around(
+            &[a.to_hyperboloid(), b.to_hyperboloid()],
+            r.radius() * (1.0 + 1e-9) + 1e-12,
+        ),
+        _ => None,
+    }
+}
+
+/// Balls along a finite rod: the segment cut into `k` equal pieces, each
+/// in the ball about its midpoint of radius half its length plus the rod's
+/// radius (the end pieces' balls contain the caps, as the caps are balls of
+/// the rod's radius about the end points). `k` makes the pieces about 16
+/// rod radii long, at most 8 of them: measured on a {4,3,5} wireframe that
+/// saves a quarter of the work (long rods around the eye), while on 600
+/// short random rods it costs 2 %; finer pieces only add leaves.
+fn rod_pieces(r: &Rod) -> Vec<Bound> {
+    let single = || rod_bound(r).into_iter().collect();
+    let (Vertex::Interior(a), Vertex::Interior(b)) = (r.start(), r.end()) else {
+        return Vec::new();
+    };
+    let (xa, xb) = (a.to_hyperboloid(), b.to_hyperboloid());
+    let Some((towards, len)) = lorentz::direction_towards(xa, xb) else {
+        return single();
+    };
+    let k = (len / (16.0 * r.radius())).ceil().clamp(1.0, 8.0);
+    if !(k > 1.0) {
+        return single();
+    }
+    let half = 0.5 * len / k;
+    let radius = (half + r.radius()) * (1.0 + 1e-9) + 1e-12;
+    let pieces: Option<Vec<Bound>> = (0..k as u32)
+        .map(|i| {
+            let s = (2.0 * f64::from(i) + 1.0) * half;
+            Bound::new(lorentz::geodesic_point(xa, towards, s), radius)
+        })
+        .collect();
+    pieces.unwrap_or_else(single)
 }
 
 impl Primitive {
@@ -36,14 +275,16 @@ impl Primitive {
         match shape {
             ir::Shape::Sphere(s) => Primitive::Sphere(s.transformed(iso)),
             ir::Shape::Polygon(p) => Primitive::Polygon(p.transformed(iso)),
-            ir::Shape::Polyhedron(p) => Primitive::Polyhedron(p.transformed(iso)),
-            ir::Shape::Plane(p) => Primitive::Plane(p.transformed(iso)),
-            ir::Shape::Rod(r) => Primitive::Rod(r.transformed(iso)),
-            ir::Shape::Cylinder(c) => Primitive::Cylinder(c.transformed(iso)),
-            ir::Shape::Horosphere(h) => Primitive::Horosphere(h.transformed(iso)),
-            ir::Shape::Wireframe(rods) => {
-                Primitive::Wireframe(rods.iter().map(|r| r.transformed(iso)).collect())
+            ir::Shape::Polyhedron(p) => {
+                Primitive::Polyhedron(Composite::new(p.transformed(iso).faces().to_vec()))
             }
+            ir::Shape::Plane(p) => Primitive::Plane(p.transformed(iso)),
+            ir::Shape::Rod(r) => Primitive::Rod(Box::new(r.transformed(iso))),
+            ir::Shape::Cylinder(c) => Primitive::Cylinder(Box::new(c.transformed(iso))),
+            ir::Shape::Horosphere(h) => Primitive::Horosphere(h.transformed(iso)),
+            ir::Shape::Wireframe(rods) => Primitive::Wireframe(Composite::new(
+                rods.iter().map(|r| r.transformed(iso)).collect(),
+            )),
         }
     }
 
@@ -51,21 +292,39 @@ impl Primitive {
     fn is_representable(&self) -> bool {
         let vertex_ok = |v: &Vertex| match v {
             Vertex::Interior(p) => p.is_representable(),
-            Vertex::Ideal(_) => true,
+            Vertex::Ideal(i) => i.coords().is_finite(),
+        };
+        let rod_ok = |r: &Rod| {
+            vertex_ok(&r.start()) && vertex_ok(&r.end()) && r.tube().line().frame().is_finite()
         };
         match self {
             Primitive::Sphere(s) => s.center().is_representable(),
             Primitive::Polygon(p) => p.vertices().iter().all(vertex_ok),
             Primitive::Polyhedron(p) => {
-                p.faces().iter().all(|f| f.vertices().iter().all(vertex_ok))
+                p.parts().iter().all(|f| f.vertices().iter().all(vertex_ok))
             }
             Primitive::Plane(p) => p.normal().is_finite(),
-            Primitive::Rod(r) => vertex_ok(&r.start()) && vertex_ok(&r.end()),
-            Primitive::Cylinder(c) => c.line().base().is_representable(),
-            Primitive::Horosphere(h) => h.euclidean().1.is_finite(),
-            Primitive::Wireframe(rods) => rods
-                .iter()
-                .all(|r| vertex_ok(&r.start()) && vertex_ok(&r.end())),
+            Primitive::Rod(r) => rod_ok(r),
+            Primitive::Cylinder(c) => {
+                c.line().base().is_representable() && c.line().frame().is_finite()
+            }
+            Primitive::Horosphere(h) => {
+                let (c, r) = h.euclidean();
+                c.is_finite() && r.is_finite()
+            }
+            Primitive::Wireframe(w) => w.parts().iter().all(rod_ok),
+        }
+    }
+
+    /// A ball containing the primitive, if it is bounded.
+    fn bound(&self) -> Option<Bound> {
+        match self {
+            Primitive::Sphere(s) => Bound::new(s.center().to_hyperboloid(), s.radius()),
+            Primitive::Polygon(p) => polygon_bound(p),
+            Primitive::Polyhedron(p) => p.accel.bound(),
+            Primitive::Rod(r) => rod_bound(r),
+            Primitive::Wireframe(w) => w.accel.bound(),
+            Primitive::Plane(_) | Primitive::Cylinder(_) | Primitive::Horosphere(_) => None,
         }
     }
 
@@ -80,17 +339,18 @@ impl Primitive {
             Primitive::Rod(r) => r.intersect(ray, t_min, t_max),
             Primitive::Cylinder(c) => c.intersect(ray, t_min, t_max),
             Primitive::Horosphere(h) => h.intersect(ray, t_min, t_max),
-            Primitive::Wireframe(rods) => {
-                let mut best: Option<Hit> = None;
-                let mut limit = t_max;
-                for r in rods {
-                    if let Some(hit) = r.intersect(ray, t_min, limit) {
-                        limit = hit.t;
-                        best = Some(hit);
-                    }
-                }
-                best
-            }
+            Primitive::Wireframe(w) => w.intersect(ray, t_min, t_max),
+        }
+    }
+
+    /// True if the primitive meets the ray anywhere in `(t_min, t_max)`; for
+    /// composites, stops at the first part met.
+    #[inline]
+    pub fn blocks(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        match self {
+            Primitive::Polyhedron(p) => p.blocks(ray, t_min, t_max),
+            Primitive::Wireframe(w) => w.blocks(ray, t_min, t_max),
+            _ => self.intersect(ray, t_min, t_max).is_some(),
         }
     }
 }
@@ -115,6 +375,18 @@ pub struct PreparedLight {
     pub specular: Rgb,
 }
 
+/// The outcome of looking for the nearest hit.
+#[derive(Clone, Copy, Debug)]
+pub enum Nearest {
+    /// The ray leaves the scene.
+    Miss,
+    /// The nearest hit and the index of the object hit.
+    Hit(Hit, usize),
+    /// The ray or its hit is not finite: a numeric failure, to be counted,
+    /// never shown as a silent miss.
+    Failure,
+}
+
 /// The whole scene in the canonical frame.
 #[derive(Clone, Debug)]
 pub struct PreparedScene {
@@ -130,10 +402,13 @@ pub struct PreparedScene {
     pub ambient: Rgb,
     /// Maximum bounce depth.
     pub max_depth: u32,
+    /// Hierarchy over the objects.
+    accel: Accel,
 }
 
 impl PreparedScene {
-    /// Move every object and light by `to_canonical`.
+    /// Move every object and light by `to_canonical`, and build the
+    /// bounding hierarchy.
     ///
     /// Fails if something lies so far from the eye (beyond distance ~37)
     /// that f64 cannot represent it in the eye's frame: that is reported,
@@ -141,6 +416,14 @@ impl PreparedScene {
     pub fn new(scene: &Scene, to_canonical: &Isometry) -> Result<PreparedScene, RenderError> {
         let mut objects = Vec::with_capacity(scene.objects.len());
         for (index, o) in scene.objects.iter().enumerate() {
+            if o.material.0 >= scene.materials.len() {
+                return Err(RenderError::InvalidScene(format!(
+                    "object {} uses material {}, but there are only {}",
+                    index + 1,
+                    o.material.0 + 1,
+                    scene.materials.len()
+                )));
+            }
             let primitive = Primitive::from_shape(&o.shape, to_canonical);
             if !primitive.is_representable() {
                 return Err(RenderError::OutOfRange {
@@ -165,6 +448,12 @@ impl PreparedScene {
                 specular: l.specular,
             });
         }
+        // One leaf per object, so a shadow ray meets each object once.
+        let bounds: Vec<(u32, Option<Bound>)> = objects
+            .iter()
+            .enumerate()
+            .map(|(i, o)| (i as u32, o.primitive.bound()))
+            .collect();
         Ok(PreparedScene {
             objects,
             lights,
@@ -172,19 +461,118 @@ impl PreparedScene {
             background: scene.settings.background,
             ambient: scene.settings.ambient,
             max_depth: scene.settings.recursion_depth,
+            accel: Accel::new(&bounds),
         })
     }
 
-    /// The nearest hit and the index of the object hit.
-    pub fn nearest(&self, ray: &Ray, t_min: f64) -> Option<(Hit, usize)> {
-        let mut best = None;
-        let mut limit = f64::INFINITY;
-        for (i, o) in self.objects.iter().enumerate() {
-            if let Some(hit) = o.primitive.intersect(ray, t_min, limit) {
-                limit = hit.t;
-                best = Some((hit, i));
+    /// The nearest hit beyond `t_min`.
+    pub fn nearest(&self, ray: &Ray, t_min: f64) -> Nearest {
+        // A NaN ray would miss every exact test and every bound: catch it
+        // here, where it is still a failure and not yet a "miss".
+        if !(ray.origin.is_finite() && ray.dir.is_finite()) {
+            return Nearest::Failure;
+        }
+        let found = self.accel.nearest(ray, t_min, f64::INFINITY, |i, lo, hi| {
+            self.objects[i as usize].primitive.intersect(ray, lo, hi)
+        });
+        match found {
+            None => Nearest::Miss,
+            Some((hit, i)) if hit.point.is_finite() && hit.normal.is_finite() => {
+                Nearest::Hit(hit, i as usize)
+            }
+            Some(_) => Nearest::Failure,
+        }
+    }
+
+    /// The fraction of light passing along the ray's arc `(t_min, t_max)`:
+    /// each object met multiplies it by its transmission coefficient, once
+    /// per object. The search ends at the first opaque blocker.
+    pub fn transmittance(&self, ray: &Ray, t_min: f64, t_max: f64) -> f64 {
+        let mut s = 1.0;
+        self.accel.any(ray, t_min, t_max, |i| {
+            let o = &self.objects[i as usize];
+            if o.primitive.blocks(ray, t_min, t_max) {
+                // PreparedScene::new checked every material index.
+                s *= self.materials[o.material].transmission;
+                if s == 0.0 {
+                    return Step::Stop;
+                }
+            }
+            Step::Continue
+        });
+        s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use hgeom::Point;
+    use hgeom::glam::DVec3;
+
+    fn p(x: f64, y: f64, z: f64) -> Point {
+        Point::try_new(DVec3::new(x, y, z)).unwrap()
+    }
+
+    /// A long rod's pieces cover it: every hit lies in one of them.
+    #[test]
+    fn rod_pieces_cover_the_rod() {
+        let rod = Rod::try_new(p(-0.6, 0.1, 0.4).into(), p(0.5, -0.1, 0.6).into(), 0.02).unwrap();
+        let pieces = rod_pieces(&rod);
+        assert_eq!(pieces.len(), 8);
+        let mut hits = 0;
+        for i in 0..4000 {
+            let a = f64::from(i) * 0.618_033_988_749_895;
+            let r = 0.95 * (f64::from(i) / 4000.0).sqrt();
+            let ray = Ray::from_origin(DVec3::new(r * a.sin(), r * a.cos(), 1.0));
+            if let Some(hit) = rod.intersect(&ray, 0.0, f64::INFINITY) {
+                hits += 1;
+                assert!(
+                    pieces
+                        .iter()
+                        .any(|b| -hgeom::lorentz::dot(hit.point, b.center())
+                            <= b.radius().cosh() * (1.0 + 1e-12)),
+                    "hit {i} outside every piece"
+                );
             }
         }
-        best
+        assert!(hits > 50, "{hits}");
+    }
+
+    /// Every primitive's bound contains the hits of many rays: the bound
+    /// never culls what the exact test finds.
+    #[test]
+    fn bounds_contain_every_hit() {
+        let rod = Rod::try_new(p(-0.3, 0.1, 0.4).into(), p(0.2, -0.1, 0.6).into(), 0.05).unwrap();
+        let poly = ConvexPolygon::try_new(vec![
+            p(-0.2, -0.2, 0.5).into(),
+            p(0.2, -0.2, 0.5).into(),
+            p(0.0, 0.25, 0.55).into(),
+        ])
+        .unwrap();
+        let dodeca = hgeom::Polyhedron::platonic(hgeom::Platonic::Dodecahedron, 0.4)
+            .unwrap()
+            .transformed(&Isometry::transvection_from_origin(p(0.0, 0.0, 0.5)));
+        let prims = [
+            Primitive::Rod(Box::new(rod.clone())),
+            Primitive::Polygon(poly),
+            Primitive::Polyhedron(Composite::new(dodeca.faces().to_vec())),
+            Primitive::Wireframe(Composite::new(vec![rod])),
+        ];
+        for prim in &prims {
+            let b = prim.bound().expect("bounded");
+            for i in 0..2000 {
+                let a = f64::from(i) * 0.618_033_988_749_895;
+                let r = 0.9 * (f64::from(i) / 2000.0).sqrt();
+                let ray = Ray::from_origin(DVec3::new(r * a.sin(), r * a.cos(), 1.0));
+                if let Some(hit) = prim.intersect(&ray, 0.0, f64::INFINITY) {
+                    assert!(
+                        -hgeom::lorentz::dot(hit.point, b.center()) <= b.radius().cosh() + 1e-12,
+                        "{prim:?}"
+                    );
+                    assert!(b.entry(&ray, 1.0, f64::INFINITY).is_some());
+                }
+            }
+        }
     }
 }

@@ -9,11 +9,14 @@ use hgeom::lorentz;
 use hgeom::ray::{reflect, refract};
 
 use crate::color::Color;
-use crate::scene::PreparedScene;
+use crate::scene::{Nearest, PreparedScene};
 
 /// Secondary rays ignore hits closer than this (hyperbolic length), so a ray
 /// leaving a surface does not hit the same surface at its own origin.
 pub const T_MIN: f64 = 1e-9;
+
+/// How far `<v,v>` may stray from 1 before a tangent vector counts as lost.
+const UNIT_TOLERANCE: f64 = 1e-2;
 
 /// Rays whose weight in the final pixel falls below this are not traced.
 const MIN_WEIGHT: f64 = 1e-3;
@@ -23,9 +26,10 @@ const MIN_WEIGHT: f64 = 1e-3;
 pub struct TraceStats {
     /// Rays traced (primary, secondary, shadow).
     pub rays: u64,
-    /// Shading results that were not finite; such pixels are counted and
-    /// shown as the background, never silently.
-    pub numeric_failures: u64,
+    /// Numeric failures: rays or hits that were not finite, and shading
+    /// results that were not finite. Each is replaced by the background and
+    /// counted, never silently.
+    pub failures: u64,
 }
 
 impl TraceStats {
@@ -33,7 +37,7 @@ impl TraceStats {
     pub fn merge(self, o: TraceStats) -> TraceStats {
         TraceStats {
             rays: self.rays + o.rays,
-            numeric_failures: self.numeric_failures + o.numeric_failures,
+            failures: self.failures + o.failures,
         }
     }
 }
@@ -55,7 +59,7 @@ impl<'s> Tracer<'s> {
         if c.is_finite() {
             c
         } else {
-            stats.numeric_failures += 1;
+            stats.failures += 1;
             self.scene.background.into()
         }
     }
@@ -64,12 +68,29 @@ impl<'s> Tracer<'s> {
     /// `I = k_a I_a + sum_i S_i f_att(r_i) (k_d L_d cos(theta) + k_s L_s cos^n(alpha)) + k_r I_r + k_t I_t`.
     fn trace(&self, ray: &Ray, depth: u32, weight: f64, stats: &mut TraceStats) -> Color {
         stats.rays += 1;
-        let Some((hit, index)) = self.scene.nearest(ray, T_MIN) else {
-            return self.scene.background.into();
+        let (hit, index) = match self.scene.nearest(ray, T_MIN) {
+            Nearest::Miss => return self.scene.background.into(),
+            Nearest::Failure => {
+                stats.failures += 1;
+                return self.scene.background.into();
+            }
+            Nearest::Hit(hit, index) => (hit, index),
         };
         let object = &self.scene.objects[index];
+        // PreparedScene::new checked every material index.
         let m = &self.scene.materials[object.material];
         let d = ray.tangent_at(hit.t);
+        // The hyperboloid loses unit tangent vectors far from the eye (SPEC
+        // 2.3: its f64 range ends near distance 19). Along a ray the error of
+        // the invariants grows like `1e-16 cosh^2(s) cosh^2(t)` for an origin
+        // at distance `s` from the eye and arc length `t`, so long secondary
+        // rays from far points lose them sooner (s + t near 17 costs 1 %).
+        // Shading with such vectors would be silent garbage (cosines far
+        // above 1): count it as a numeric failure instead.
+        if !(is_unit(d) && is_unit(hit.normal)) {
+            stats.failures += 1;
+            return self.scene.background.into();
+        }
         let entering = lorentz::dot(d, hit.normal) < 0.0;
         // The normal on the side the ray came from, for shading.
         let n = if entering { hit.normal } else { -hit.normal };
@@ -77,29 +98,42 @@ impl<'s> Tracer<'s> {
 
         let mut color = Color::from(m.ambient).tint(self.scene.ambient.into());
         let view = -d;
-        for light in &self.scene.lights {
+        // A material without diffuse and specular terms ignores the lights:
+        // skip their shadow rays.
+        let lit = [m.diffuse, m.specular]
+            .iter()
+            .any(|c| c.r != 0.0 || c.g != 0.0 || c.b != 0.0);
+        for light in self.scene.lights.iter().filter(|_| lit) {
+            // A light exactly at the hit point has no direction: it lights
+            // nothing there (its attenuation would be infinite).
             let Some((to_light, dist)) = lorentz::direction_towards(p, light.position) else {
                 continue;
             };
             let cos_theta = lorentz::dot(n, to_light);
-            if cos_theta <= 0.0 {
+            if !(cos_theta > 0.0) {
                 continue;
             }
-            let shadow = self.transmittance(
+            let cos_theta = cos_theta.min(1.0);
+            stats.rays += 1;
+            let shadow = self.scene.transmittance(
                 &Ray {
                     origin: p,
                     dir: to_light,
                 },
+                T_MIN,
                 dist,
-                stats,
             );
             if shadow == 0.0 {
                 continue;
             }
+            // The area of the hyperbolic sphere of radius r is 4 pi sinh^2 r.
             let sinh = dist.sinh();
             let f_att = 1.0 / (4.0 * PI * sinh * sinh);
             let mirrored = reflect(-to_light, n);
-            let cos_alpha = lorentz::dot(mirrored, view).max(0.0);
+            // A cosine of unit vectors: at most 1 up to the rounding that
+            // `is_unit` bounds; keep rounding from being raised to a high
+            // Phong exponent.
+            let cos_alpha = lorentz::dot(mirrored, view).clamp(0.0, 1.0);
             let diffuse = Color::from(m.diffuse).tint(light.diffuse.into()) * cos_theta;
             let specular =
                 Color::from(m.specular).tint(light.specular.into()) * cos_alpha.powf(m.shininess);
@@ -121,7 +155,8 @@ impl<'s> Tracer<'s> {
                 } else {
                     (m.refraction, 1.0)
                 };
-                // Total internal reflection sends the transmitted share along the mirror ray.
+                // Total internal reflection sends the transmitted share along
+                // the mirror ray (thesis Fig. 31).
                 let dir = refract(d, n, n1, n2).unwrap_or(reflected.dir);
                 let next = Ray {
                     origin: p,
@@ -133,27 +168,19 @@ impl<'s> Tracer<'s> {
         }
         color
     }
+}
 
-    /// The fraction of a light's intensity reaching along the shadow ray up to
-    /// `dist`: each object in the way multiplies it by its transmission
-    /// coefficient (opaque objects block it).
-    fn transmittance(&self, ray: &Ray, dist: f64, stats: &mut TraceStats) -> f64 {
-        stats.rays += 1;
-        let mut s = 1.0;
-        for o in &self.scene.objects {
-            if o.primitive.intersect(ray, T_MIN, dist).is_some() {
-                s *= self.scene.materials[o.material].transmission;
-                if s == 0.0 {
-                    break;
-                }
-            }
-        }
-        s
-    }
+/// True if the tangent vector's Lorentz norm is 1 up to a tolerance far
+/// above the rounding of any resolvable vector (which grows like
+/// `1e-16 cosh^2` of the distance from the eye: 3e-4 at distance 15).
+#[inline]
+fn is_unit(v: DVec4) -> bool {
+    (lorentz::dot(v, v) - 1.0).abs() <= UNIT_TOLERANCE
 }
 
 /// Restore `<v,v> = 1`, `<p,v> = 0` after floating-point arithmetic on a
-/// tangent vector, so rounding never accumulates along a path.
+/// tangent vector, so rounding never accumulates along a path. A degenerate
+/// input gives a non-finite ray, which the next trace counts as a failure.
 fn renormalize(p: DVec4, v: DVec4) -> DVec4 {
     let t = v + lorentz::dot(p, v) * p;
     t / lorentz::norm(t)

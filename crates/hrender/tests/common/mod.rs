@@ -1,0 +1,391 @@
+//! Scene builders shared by the renderer's integration tests and examples.
+//!
+//! Scenes are built directly from the IR types, so the tests do not depend on
+//! the concrete syntax of the scene language.
+
+#![allow(dead_code)]
+
+use hgeom::glam::{DMat3, DVec3};
+use hgeom::{
+    ConvexPolygon, HCylinder, HLine, HPlane, HSphere, Horosphere, IdealPoint, Isometry, Platonic,
+    Point, Polyhedron, Rod, Vertex,
+};
+use hscene_lang::ir::{
+    Camera, Light, Material, MaterialId, Net, Object, Resolution, Rgb, Scene, Settings, Shape,
+    Window,
+};
+
+/// An h-point from ball coordinates.
+pub fn p(x: f64, y: f64, z: f64) -> Point {
+    Point::try_new(DVec3::new(x, y, z)).expect("test point inside the ball")
+}
+
+/// An h-point at hyperbolic distance `d` from the origin in direction `dir`.
+pub fn at(dir: DVec3, d: f64) -> Point {
+    Point::at_distance_from_origin(dir, d).expect("test point")
+}
+
+/// An ideal point in direction `dir`.
+pub fn ideal(dir: DVec3) -> IdealPoint {
+    IdealPoint::from_direction(dir).expect("test ideal point")
+}
+
+/// A Phong material with the same colour for ambient and diffuse.
+pub fn matte(r: f64, g: f64, b: f64) -> Material {
+    Material {
+        name: None,
+        ambient: Rgb::new(r, g, b),
+        diffuse: Rgb::new(r, g, b),
+        specular: Rgb::new(0.5, 0.5, 0.5),
+        reflection: 0.0,
+        transmission: 0.0,
+        shininess: 20.0,
+        refraction: 1.0,
+    }
+}
+
+/// A material that only glows with its ambient colour (no lights needed).
+pub fn flat(r: f64, g: f64, b: f64) -> Material {
+    Material {
+        name: None,
+        ambient: Rgb::new(r, g, b),
+        diffuse: Rgb::BLACK,
+        specular: Rgb::BLACK,
+        reflection: 0.0,
+        transmission: 0.0,
+        shininess: 1.0,
+        refraction: 1.0,
+    }
+}
+
+/// Settings with the given net, resolution and (square) window.
+pub fn settings(net: Net, size: u32, window: f64) -> Settings {
+    Settings {
+        recursion_depth: 1,
+        resolution: Resolution {
+            width: size,
+            height: size,
+        },
+        window: Window {
+            width: window,
+            height: window,
+        },
+        net,
+        background: Rgb::new(0.05, 0.05, 0.1),
+        ambient: Rgb::new(0.2, 0.2, 0.2),
+    }
+}
+
+/// The default camera: eye at the origin, looking along +z, up +y.
+pub fn default_camera(view_distance: f64) -> Camera {
+    Camera {
+        eye: Point::ORIGIN,
+        target: p(0.0, 0.0, view_distance),
+        up: Some(p(0.0, 0.1, 0.0)),
+    }
+}
+
+/// A white point light.
+pub fn light(at: Point, intensity: f64) -> Light {
+    Light {
+        position: at,
+        diffuse: Rgb::new(intensity, intensity, intensity),
+        specular: Rgb::new(intensity, intensity, intensity),
+        name: None,
+    }
+}
+
+/// An object with material index `m`.
+pub fn obj(shape: Shape, m: usize) -> Object {
+    Object {
+        shape,
+        material: MaterialId(m),
+        name: None,
+    }
+}
+
+/// A scene from parts.
+pub fn scene(
+    settings: Settings,
+    camera: Camera,
+    materials: Vec<Material>,
+    lights: Vec<Light>,
+    objects: Vec<Object>,
+) -> Scene {
+    Scene {
+        settings,
+        camera,
+        materials,
+        lights,
+        objects,
+        points: Vec::new(),
+    }
+}
+
+pub fn sphere(c: Point, r: f64) -> Shape {
+    Shape::Sphere(HSphere::try_new(c, r).expect("test sphere"))
+}
+
+pub fn rod(a: Point, b: Point, r: f64) -> Shape {
+    Shape::Rod(Rod::try_new(a.into(), b.into(), r).expect("test rod"))
+}
+
+pub fn cylinder(a: Point, b: Point, r: f64) -> Shape {
+    let line = HLine::through(&a.into(), &b.into()).expect("test line");
+    Shape::Cylinder(HCylinder::try_new(line, r).expect("test cylinder"))
+}
+
+pub fn polygon(vs: Vec<Vertex>) -> Shape {
+    Shape::Polygon(ConvexPolygon::try_new(vs).expect("test polygon"))
+}
+
+/// The mixed scene of the invariance tests: spheres, a polygon, a rod and a
+/// cylinder, two lights, seen through a window of the given size.
+pub fn mixed_scene(net: Net, size: u32, window: f64) -> Scene {
+    let materials = vec![
+        matte(0.8, 0.3, 0.2),
+        matte(0.2, 0.7, 0.3),
+        matte(0.3, 0.4, 0.9),
+        Material {
+            reflection: 0.5,
+            ..matte(0.6, 0.6, 0.2)
+        },
+    ];
+    let quad = polygon(vec![
+        p(-0.25, -0.12, 0.5).into(),
+        p(0.05, -0.12, 0.45).into(),
+        p(0.05, 0.05, 0.45).into(),
+        p(-0.25, 0.05, 0.5).into(),
+    ]);
+    let objects = vec![
+        obj(sphere(p(0.1, 0.05, 0.4), 0.12), 0),
+        obj(sphere(p(-0.12, -0.1, 0.3), 0.06), 3),
+        obj(quad, 1),
+        obj(rod(p(-0.2, 0.15, 0.35), p(0.15, 0.2, 0.5), 0.02), 2),
+        obj(cylinder(p(-0.1, -0.2, 0.6), p(0.2, 0.0, 0.55), 0.03), 2),
+    ];
+    let lights = vec![light(p(0.0, 0.3, 0.1), 8.0), light(p(-0.3, -0.1, 0.2), 4.0)];
+    let mut s = scene(
+        settings(net, size, window),
+        default_camera(0.1),
+        materials,
+        lights,
+        objects,
+    );
+    s.settings.recursion_depth = 2;
+    s
+}
+
+/// Apply one isometry to everything in a scene: camera (eye, target, up),
+/// every object and every light.
+pub fn moved(scene: &Scene, iso: &Isometry) -> Scene {
+    let mut s = scene.clone();
+    let up = s.camera.up.expect("tests use an explicit up point");
+    s.camera.eye = iso.apply(&s.camera.eye);
+    s.camera.target = iso.apply(&s.camera.target);
+    s.camera.up = Some(iso.apply(&up));
+    for l in &mut s.lights {
+        l.position = iso.apply(&l.position);
+    }
+    for o in &mut s.objects {
+        o.shape = match &o.shape {
+            Shape::Sphere(x) => Shape::Sphere(x.transformed(iso)),
+            Shape::Polygon(x) => Shape::Polygon(x.transformed(iso)),
+            Shape::Polyhedron(x) => Shape::Polyhedron(x.transformed(iso)),
+            Shape::Plane(x) => Shape::Plane(x.transformed(iso)),
+            Shape::Rod(x) => Shape::Rod(x.transformed(iso)),
+            Shape::Cylinder(x) => Shape::Cylinder(x.transformed(iso)),
+            Shape::Horosphere(x) => Shape::Horosphere(x.transformed(iso)),
+            Shape::Wireframe(rods) => {
+                Shape::Wireframe(rods.iter().map(|r| r.transformed(iso)).collect())
+            }
+        };
+    }
+    s
+}
+
+/// A small deterministic generator (SplitMix64) for test data.
+pub struct Rng(pub u64);
+
+impl Rng {
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in `[0, 1)`.
+    pub fn unit(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// Uniform in `[lo, hi)`.
+    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.unit()
+    }
+
+    /// A uniformly distributed unit vector.
+    pub fn direction(&mut self) -> DVec3 {
+        let z = self.range(-1.0, 1.0);
+        let phi = self.range(0.0, std::f64::consts::TAU);
+        let s = (1.0 - z * z).sqrt();
+        DVec3::new(s * phi.cos(), s * phi.sin(), z)
+    }
+
+    /// A random isometry: a rotation (orientation-reversing when `mirror`)
+    /// followed by a transvection of hyperbolic length up to `max_shift`.
+    pub fn isometry(&mut self, max_shift: f64, mirror: bool) -> Isometry {
+        let axis = self.direction();
+        let angle = self.range(0.0, std::f64::consts::TAU);
+        let mut q = DMat3::from_axis_angle(axis, angle);
+        if mirror {
+            q *= DMat3::from_diagonal(DVec3::new(1.0, 1.0, -1.0));
+        }
+        let shift = at(self.direction(), self.range(0.5 * max_shift, max_shift));
+        Isometry::transvection_from_origin(shift).compose(&Isometry::orthogonal(q))
+    }
+}
+
+/// Many rods: `n` rods with random ends in a shell in front of the eye, as
+/// separate objects, plus the same number again as one wireframe.
+pub fn many_rods_scene(n: usize, size: u32) -> Scene {
+    let mut rng = Rng(7);
+    let materials = vec![
+        matte(0.9, 0.6, 0.2),
+        matte(0.3, 0.6, 0.9),
+        matte(0.7, 0.7, 0.7),
+    ];
+    let mut objects = Vec::new();
+    let mut wire = Vec::new();
+    for i in 0..2 * n {
+        let centre = at(
+            DVec3::new(rng.range(-0.6, 0.6), rng.range(-0.6, 0.6), 1.0),
+            rng.range(0.6, 2.0),
+        );
+        let to_origin = Isometry::transvection_from_origin(centre);
+        let a = to_origin.apply(&at(rng.direction(), rng.range(0.05, 0.25)));
+        let b = to_origin.apply(&at(rng.direction(), rng.range(0.05, 0.25)));
+        let r = Rod::try_new(a.into(), b.into(), 0.008).expect("random rod");
+        if i < n {
+            objects.push(obj(Shape::Rod(r), 0));
+        } else {
+            wire.push(r);
+        }
+    }
+    objects.push(obj(Shape::Wireframe(wire), 1));
+    // A wall behind everything, to catch the shadows: the h-plane
+    // orthogonal to the z axis at distance 2.3.
+    let wall = HPlane::orthogonal_at(&at(DVec3::Z, 2.3), &at(DVec3::Z, 2.4)).expect("wall");
+    objects.push(obj(Shape::Plane(wall), 2));
+    let lights = vec![
+        light(at(DVec3::new(0.3, 1.0, 0.2), 0.8), 40.0),
+        light(at(DVec3::new(-0.5, 0.2, 0.3), 0.5), 10.0),
+    ];
+    scene(
+        settings(Net::Euclidean, size, 0.2),
+        default_camera(0.1),
+        materials,
+        lights,
+        objects,
+    )
+}
+
+/// A dodecahedron, a wireframe cube and a horosphere: the kinds the other
+/// builders do not cover.
+pub fn solids_scene(net: Net, size: u32, window: f64) -> Scene {
+    let dodeca = Polyhedron::platonic(Platonic::Dodecahedron, 0.3)
+        .expect("dodecahedron")
+        .transformed(&Isometry::transvection_from_origin(p(-0.15, 0.0, 0.3)));
+    let cube = Polyhedron::platonic(Platonic::Cube, 0.25)
+        .expect("cube")
+        .transformed(&Isometry::transvection_from_origin(p(0.15, 0.05, 0.3)));
+    let mut edges = Vec::new();
+    for f in cube.faces() {
+        let vs = f.vertices();
+        for i in 0..vs.len() {
+            edges.push(Rod::try_new(vs[i], vs[(i + 1) % vs.len()], 0.01).expect("edge"));
+        }
+    }
+    let horo = Horosphere::try_new(ideal(DVec3::new(0.0, -1.0, 0.3)), &p(0.0, -0.25, 0.35))
+        .expect("horosphere");
+    let objects = vec![
+        obj(Shape::Polyhedron(dodeca), 0),
+        obj(Shape::Wireframe(edges), 1),
+        obj(Shape::Horosphere(horo), 2),
+    ];
+    scene(
+        settings(net, size, window),
+        default_camera(0.1),
+        vec![
+            matte(0.8, 0.4, 0.2),
+            matte(0.9, 0.9, 0.3),
+            matte(0.3, 0.5, 0.8),
+        ],
+        vec![light(p(0.0, 0.4, 0.1), 8.0)],
+        objects,
+    )
+}
+
+/// Many polyhedra, as the {4,3,5} tessellation will arrive: an
+/// `n x n x n` block of small cubes, each its own object, in front of the eye.
+pub fn many_cells_scene(n: usize, size: u32) -> Scene {
+    let mut objects = Vec::new();
+    let cube = Polyhedron::platonic(Platonic::Cube, 0.08).expect("cube");
+    let step = 0.16;
+    for i in 0..n {
+        for j in 0..n {
+            for k in 0..n {
+                let off = |v: usize| (v as f64 - (n as f64 - 1.0) / 2.0) * step;
+                let c = p(0.0, 0.0, 0.0);
+                // Move along x, then y, then z by hyperbolic lengths: a
+                // lattice of cells like a (non-tiling) honeycomb block.
+                let t = Isometry::transvection_from_origin(at(
+                    DVec3::Z,
+                    0.9 + off(k) + step * n as f64 / 2.0,
+                ))
+                .compose(&Isometry::transvection_from_origin(
+                    at(DVec3::Y, off(j).abs()).then_sign(off(j)),
+                ))
+                .compose(&Isometry::transvection_from_origin(
+                    at(DVec3::X, off(i).abs()).then_sign(off(i)),
+                ));
+                let _ = c;
+                objects.push(obj(
+                    Shape::Polyhedron(cube.transformed(&t)),
+                    (i + j + k) % 3,
+                ));
+            }
+        }
+    }
+    scene(
+        settings(Net::Euclidean, size, 0.2),
+        default_camera(0.1),
+        vec![
+            matte(0.9, 0.5, 0.3),
+            matte(0.4, 0.8, 0.5),
+            matte(0.5, 0.6, 0.9),
+        ],
+        vec![
+            light(p(0.1, 0.3, 0.05), 6.0),
+            light(at(DVec3::new(-1.0, 0.5, 1.0), 1.2), 20.0),
+        ],
+        objects,
+    )
+}
+
+/// Sign helper for lattice offsets.
+trait ThenSign {
+    fn then_sign(self, s: f64) -> Point;
+}
+
+impl ThenSign for Point {
+    fn then_sign(self, s: f64) -> Point {
+        if s < 0.0 {
+            Point::try_new(-self.coords()).expect("mirror image")
+        } else {
+            self
+        }
+    }
+}
