@@ -46,7 +46,7 @@ impl Compiled {
 pub fn compile(source: &str) -> Compiled {
     let parsed = parse(source);
     let mut diagnostics = parsed.diagnostics;
-    let scene = lower::lower(&parsed.file, &mut diagnostics);
+    let scene = lower::lower(&parsed.file, source, &mut diagnostics);
     diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
     Compiled { scene, diagnostics }
 }

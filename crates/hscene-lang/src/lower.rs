@@ -21,7 +21,9 @@ use crate::ir::{
     Camera, Light, Material, MaterialId, Net, Object, PointPosition, PointRecord, Resolution, Rgb,
     Scene, Settings, Shape, Window,
 };
-use crate::syntax::{Clause, Ident, RefSigil, RefTarget, Reference, Section, SourceFile, Value};
+use crate::syntax::{
+    BrokenStatement, Clause, Ident, RefSigil, RefTarget, Reference, Section, SourceFile, Value,
+};
 
 /// What an `@name` transformation target names.
 #[derive(Clone, Debug)]
@@ -111,6 +113,11 @@ struct Lowerer<'d> {
     moves: Vec<moves::PendingMove>,
     settings: Settings,
     camera_parts: CameraParts,
+    /// A point reference failed (undefined, or something else where a point
+    /// was needed, or text was skipped): the point meant may look unused.
+    point_ref_failed: bool,
+    /// The same for materials.
+    material_ref_failed: bool,
 }
 
 #[derive(Default)]
@@ -125,7 +132,10 @@ struct CameraParts {
 
 /// Lower a parsed file. Returns the scene only if no error was reported
 /// (by the parser or here).
-pub(crate) fn lower(file: &SourceFile, diags: &mut Vec<Diagnostic>) -> Option<Scene> {
+///
+/// `source` is the text `file` was parsed from; it is used only to turn
+/// offsets into line and column numbers in messages.
+pub(crate) fn lower(file: &SourceFile, source: &str, diags: &mut Vec<Diagnostic>) -> Option<Scene> {
     let mut lw = Lowerer {
         diags,
         points: Vec::new(),
@@ -149,10 +159,24 @@ pub(crate) fn lower(file: &SourceFile, diags: &mut Vec<Diagnostic>) -> Option<Sc
         moves: Vec::new(),
         settings: default_settings(),
         camera_parts: CameraParts::default(),
+        point_ref_failed: file.incomplete,
+        material_ref_failed: file.incomplete,
     };
-    lw.check_section_names(file);
+    lw.check_section_names(file, source);
     for name in SECTIONS {
-        for section in file.sections.iter().filter(|s| s.name.text == name) {
+        // A misspelt section is lowered as the one it was meant to be, so its
+        // declarations do not go missing and cascade into undefined references.
+        let meant = |s: &&Section| {
+            s.name.text == name
+                || (!SECTIONS.contains(&s.name.text.as_str())
+                    && section_meant(&s.name.text) == Some(name))
+        };
+        for section in file.sections.iter().filter(meant) {
+            if section.name.text != name {
+                // Already an error; don't add lints about what it declares.
+                lw.point_ref_failed = true;
+                lw.material_ref_failed = true;
+            }
             match name {
                 "Points" => lw.points_section(section),
                 "BRDFs" => lw.brdfs_section(section),
@@ -168,6 +192,7 @@ pub(crate) fn lower(file: &SourceFile, diags: &mut Vec<Diagnostic>) -> Option<Sc
     if let Some(camera) = &camera {
         lw.lint_scene(camera);
     }
+    lw.mark_failed_references(file);
     lw.lint_unused();
     if lw.diags.iter().any(Diagnostic::is_error) {
         return None;
@@ -193,6 +218,29 @@ pub(crate) fn lower(file: &SourceFile, diags: &mut Vec<Diagnostic>) -> Option<Sc
     })
 }
 
+/// A material with every field at its default.
+fn default_material(name: Option<String>) -> Material {
+    Material {
+        name,
+        ambient: Rgb::BLACK,
+        diffuse: Rgb::BLACK,
+        specular: Rgb::BLACK,
+        reflection: 0.0,
+        transmission: 0.0,
+        shininess: 1.0,
+        refraction: 1.0,
+    }
+}
+
+/// Calls `f` on every reference in `value`.
+fn each_reference<'a>(value: &'a Value, f: &mut impl FnMut(&'a Reference)) {
+    match value {
+        Value::Reference(r) => f(r),
+        Value::Tuple { items, .. } => items.iter().for_each(|v| each_reference(v, f)),
+        Value::Number { .. } | Value::Ident(_) => {}
+    }
+}
+
 /// "1 value" / "3 values".
 fn count(n: usize, what: &str) -> String {
     if n == 1 {
@@ -213,32 +261,38 @@ impl Lowerer<'_> {
 
     // ----- sections -------------------------------------------------------
 
-    fn check_section_names(&mut self, file: &SourceFile) {
+    fn check_section_names(&mut self, file: &SourceFile, source: &str) {
         let mut seen: HashMap<&str, Span> = HashMap::new();
+        let mut lines: Option<crate::diagnostic::LineIndex> = None;
         for section in &file.sections {
             let name = section.name.text.as_str();
             if !SECTIONS.contains(&name) {
                 let mut d = Diagnostic::new(
                     Code::UnknownSection,
                     section.name.span,
-                    format!("unknown section `{name}`"),
+                    format!("unknown section {}", quote(name)),
                 );
-                d = match SECTIONS.iter().find(|s| s.eq_ignore_ascii_case(name)) {
+                d = match section_meant(name) {
+                    Some(s) if s.eq_ignore_ascii_case(name) => d.with_help(format!(
+                        "section names are case-sensitive: did you mean `{s}`? (its contents are checked as `{s}`)"
+                    )),
                     Some(s) => d.with_help(format!(
-                        "section names are case-sensitive: did you mean `{s}`?"
+                        "did you mean `{s}`? (its contents are checked as `{s}`)"
                     )),
                     None => d.with_help(format!("the sections are {}", SECTIONS.join(", "))),
                 };
                 self.report(d);
             } else if let Some(first) = seen.get(name) {
-                let first = *first;
+                let (line, col) = lines
+                    .get_or_insert_with(|| crate::diagnostic::LineIndex::new(source))
+                    .line_col(first.start);
                 self.report(
                     Diagnostic::new(
                         Code::DuplicateSection,
                         section.name.span,
                         format!("section `{name}` appears more than once; its statements are merged in order"),
                     )
-                    .with_help(format!("first `{name}` section starts at byte {}", first.start)),
+                    .with_help(format!("the first `{name}` section starts at line {line}, column {col}")),
                 );
             } else {
                 seen.insert(name, section.name.span);
@@ -247,7 +301,11 @@ impl Lowerer<'_> {
     }
 
     fn points_section(&mut self, section: &Section) {
+        let mut broken = section.broken.iter().peekable();
         for st in &section.statements {
+            while let Some(b) = broken.next_if(|b| b.span.start < st.span.start) {
+                self.broken_point(b);
+            }
             let (name, value) = match (st.label.as_ref(), st.clauses.as_slice()) {
                 (label, [Clause::Value(v)]) => (label.cloned(), v),
                 (None, [Clause::Assign { key, value, .. }]) => (Some(key.clone()), value),
@@ -283,26 +341,65 @@ impl Lowerer<'_> {
                 used: false,
             });
         }
+        for b in broken {
+            self.broken_point(b);
+        }
+    }
+
+    /// A point statement that did not parse (already reported) still takes
+    /// its number and name, so later references do not cascade into errors.
+    fn broken_point(&mut self, b: &BrokenStatement) {
+        let name = b.name.as_ref().map(|n| n.text.clone());
+        if let Some(n) = &name {
+            self.point_names
+                .entry(n.clone())
+                .or_insert(self.points.len());
+        }
+        self.points.push(PointEntry {
+            name,
+            span: b.span,
+            position: None,
+            used: true,
+        });
+    }
+
+    /// A material statement that did not parse (already reported) still
+    /// takes its number and name, like [`Self::broken_point`].
+    fn broken_material(&mut self, b: &BrokenStatement) {
+        let name = b
+            .name
+            .as_ref()
+            .filter(|_| b.labelled)
+            .map(|n| n.text.clone());
+        if let Some(n) = &name {
+            self.material_names
+                .entry(n.clone())
+                .or_insert(self.materials.len());
+        }
+        self.materials.push(MaterialEntry {
+            material: default_material(name),
+            span: b.span,
+            used: true,
+        });
     }
 
     fn brdfs_section(&mut self, section: &Section) {
+        let mut broken = section.broken.iter().peekable();
         for st in &section.statements {
-            let mut m = Material {
-                name: st.label.as_ref().map(|l| l.text.clone()),
-                ambient: Rgb::BLACK,
-                diffuse: Rgb::BLACK,
-                specular: Rgb::BLACK,
-                reflection: 0.0,
-                transmission: 0.0,
-                shininess: 1.0,
-                refraction: 1.0,
-            };
+            while let Some(b) = broken.next_if(|b| b.span.start < st.span.start) {
+                self.broken_material(b);
+            }
+            let mut m = default_material(st.label.as_ref().map(|l| l.text.clone()));
             let mut seen: HashMap<String, Span> = HashMap::new();
             for clause in &st.clauses {
                 let Clause::Assign { key, value, .. } = clause else {
                     self.report(
-                        Diagnostic::new(Code::WrongType, clause.span(), "expected a `field = value` pair")
-                            .with_help("material fields are ambient, diffuse, specular, alpha, trans, shininess, refraction"),
+                        Diagnostic::new(
+                            Code::WrongType,
+                            clause.span(),
+                            "expected a `field = value` pair",
+                        )
+                        .with_help(MATERIAL_FIELDS_HELP),
                     );
                     continue;
                 };
@@ -311,7 +408,7 @@ impl Lowerer<'_> {
                     self.report(Diagnostic::new(
                         Code::DuplicateKey,
                         key.span,
-                        format!("`{}` is set twice; the last value wins", key.text),
+                        format!("{} is set twice; the last value wins", quote(&key.text)),
                     ));
                 }
                 match key.text.as_str() {
@@ -325,7 +422,11 @@ impl Lowerer<'_> {
                             if x >= 0.0 {
                                 m.shininess = x;
                             } else {
-                                self.error(Code::InvalidValue, value.span(), format!("shininess must be non-negative, got {x}"));
+                                self.error(
+                                    Code::InvalidValue,
+                                    value.span(),
+                                    format!("shininess must be non-negative, got {x}"),
+                                );
                             }
                         }
                     }
@@ -334,13 +435,25 @@ impl Lowerer<'_> {
                             if x > 0.0 {
                                 m.refraction = x;
                             } else {
-                                self.error(Code::InvalidValue, value.span(), format!("the index of refraction must be positive, got {x}"));
+                                self.error(
+                                    Code::InvalidValue,
+                                    value.span(),
+                                    format!("the index of refraction must be positive, got {x}"),
+                                );
                             }
                         }
                     }
                     other => self.report(
-                        Diagnostic::new(Code::UnknownKey, key.span, format!("unknown material field `{other}`"))
-                            .with_help("material fields are ambient, diffuse, specular, alpha, trans, shininess, refraction"),
+                        Diagnostic::new(
+                            Code::UnknownKey,
+                            key.span,
+                            format!("unknown material field {}", quote(other)),
+                        )
+                        .with_help(did_you_mean(
+                            other,
+                            MATERIAL_FIELDS,
+                            MATERIAL_FIELDS_HELP,
+                        )),
                     ),
                 }
             }
@@ -352,6 +465,9 @@ impl Lowerer<'_> {
                 span: st.span,
                 used: false,
             });
+        }
+        for b in broken {
+            self.broken_material(b);
         }
     }
 
@@ -417,9 +533,13 @@ impl Lowerer<'_> {
                     Diagnostic::new(
                         Code::UnknownTransformation,
                         name.span,
-                        format!("unknown transformation `{other}`"),
+                        format!("unknown transformation {}", quote(other)),
                     )
-                    .with_help("transformations are hline, hplane, Rotate, Translate and Reflect"),
+                    .with_help(did_you_mean(
+                        other,
+                        TRANSFORMATIONS,
+                        "transformations are hline, hplane, Rotate, Translate and Reflect",
+                    )),
                 ),
             }
         }
@@ -497,7 +617,7 @@ impl Lowerer<'_> {
                     self.report(Diagnostic::new(
                         Code::DuplicateKey,
                         key.span,
-                        format!("`{}` is set twice; the last value wins", key.text),
+                        format!("{} is set twice; the last value wins", quote(&key.text)),
                     ));
                 }
                 self.global(key, value);
@@ -591,9 +711,9 @@ impl Lowerer<'_> {
                 Diagnostic::new(
                     Code::UnknownKey,
                     key.span,
-                    format!("unknown global `{other}`"),
+                    format!("unknown global {}", quote(other)),
                 )
-                .with_help(GLOBAL_KEYS_HELP),
+                .with_help(did_you_mean(other, GLOBAL_KEYS, GLOBAL_KEYS_HELP)),
             ),
         }
     }
@@ -604,6 +724,7 @@ impl Lowerer<'_> {
         match value {
             Value::Reference(r) if r.sigil == RefSigil::Hash => self.resolve_material(r),
             other => {
+                self.material_ref_failed = true;
                 self.report(
                     Diagnostic::new(
                         Code::WrongType,
@@ -835,7 +956,7 @@ impl Lowerer<'_> {
             RefTarget::Index(n) => (*n >= 1 && (*n as usize) <= len).then(|| *n as usize - 1),
             RefTarget::Name(name) => names.get(name).copied(),
         };
-        if found.is_none() {
+        if found.is_none() && !self.index_overflowed(r) {
             let declared = if len == 0 {
                 format!("no {what}s are declared yet")
             } else {
@@ -906,20 +1027,21 @@ impl Lowerer<'_> {
                     reference_text(r)
                 ),
             ));
+            self.point_ref_failed = true;
             return None;
         }
-        let found = match &r.target {
-            RefTarget::Index(n) => {
-                (*n >= 1 && (*n as usize) <= self.points.len()).then(|| *n as usize - 1)
-            }
-            RefTarget::Name(name) => self.point_names.get(name).copied(),
-        };
+        let found = self.lookup_point(r);
         match found {
             Some(i) => {
                 self.points[i].used = true;
                 Some(i)
             }
+            None if self.index_overflowed(r) => {
+                self.point_ref_failed = true;
+                None
+            }
             None => {
+                self.point_ref_failed = true;
                 let help = match (&r.target, self.points.len()) {
                     (RefTarget::Index(0), _) => "points are numbered from %1".to_string(),
                     (_, 0) => {
@@ -929,12 +1051,19 @@ impl Lowerer<'_> {
                         format!("{} declared (%1 to %{n})", count(n, "point"))
                     }
                     (RefTarget::Name(n), _) if self.target_labels.contains(n) => {
+                        let n = shorten(n);
                         format!(
                             "`{n}` is an object or light, not a point: write `@{n}` to transform it"
                         )
                     }
-                    (RefTarget::Name(_), _) => {
-                        "declare it in `Points` as `name = (x, y, z);`".to_string()
+                    (RefTarget::Name(n), _) => {
+                        let mut names: Vec<&str> =
+                            self.point_names.keys().map(String::as_str).collect();
+                        names.sort_unstable();
+                        match objects::closest(n, &names) {
+                            Some(s) => format!("did you mean `%{s}`?"),
+                            None => "declare it in `Points` as `name = (x, y, z);`".to_string(),
+                        }
                     }
                 };
                 self.report(
@@ -967,6 +1096,7 @@ impl Lowerer<'_> {
                     other.span(),
                     format!("expected a point for {role}, found {}", other.describe()),
                 ));
+                self.point_ref_failed = true;
                 return None;
             }
         };
@@ -1005,6 +1135,7 @@ impl Lowerer<'_> {
                     other.span(),
                     format!("expected a point, found {}", other.describe()),
                 ));
+                self.point_ref_failed = true;
                 return None;
             }
         };
@@ -1015,21 +1146,30 @@ impl Lowerer<'_> {
     }
 
     fn resolve_material(&mut self, r: &Reference) -> Option<MaterialId> {
-        let found = match &r.target {
-            RefTarget::Index(n) => {
-                (*n >= 1 && (*n as usize) <= self.materials.len()).then(|| *n as usize - 1)
-            }
-            RefTarget::Name(name) => self.material_names.get(name).copied(),
-        };
+        let found = self.lookup_material(r);
         match found {
             Some(i) => {
                 self.materials[i].used = true;
                 Some(MaterialId(i))
             }
+            None if self.index_overflowed(r) => {
+                self.material_ref_failed = true;
+                None
+            }
             None => {
-                let help = match self.materials.len() {
-                    0 => "no materials are declared: add one to the `BRDFs` section".to_string(),
-                    n => format!("{} declared (#1 to #{n})", count(n, "material")),
+                self.material_ref_failed = true;
+                let mut names: Vec<&str> = self.material_names.keys().map(String::as_str).collect();
+                names.sort_unstable();
+                let suggestion = match &r.target {
+                    RefTarget::Name(n) => objects::closest(n, &names),
+                    RefTarget::Index(_) => None,
+                };
+                let help = match (suggestion, self.materials.len()) {
+                    (Some(s), _) => format!("did you mean `#{s}`?"),
+                    (None, 0) => {
+                        "no materials are declared: add one to the `BRDFs` section".to_string()
+                    }
+                    (None, n) => format!("{} declared (#1 to #{n})", count(n, "material")),
                 };
                 self.report(
                     Diagnostic::new(
@@ -1056,7 +1196,7 @@ impl Lowerer<'_> {
                 Diagnostic::new(
                     Code::DuplicateName,
                     name.span,
-                    format!("`{}` is already declared", name.text),
+                    format!("{} is already declared", quote(&name.text)),
                 )
                 .with_help("give each point, material, line and plane a distinct name"),
             );
@@ -1088,7 +1228,7 @@ impl Lowerer<'_> {
                 Diagnostic::new(
                     Code::DuplicateName,
                     later,
-                    format!("`{}` is already declared", name.text),
+                    format!("{} is already declared", quote(&name.text)),
                 )
                 .with_help("objects and lights share one set of names (`@name`); give each a distinct name"),
             );
@@ -1299,13 +1439,104 @@ impl Lowerer<'_> {
         self.diags.extend(found);
     }
 
+    /// Whether `r` is an index the parser already reported as too large
+    /// (it stands for `u64::MAX`); reporting it as undefined would repeat it.
+    fn index_overflowed(&self, r: &Reference) -> bool {
+        r.target == RefTarget::Index(u64::MAX)
+            && self
+                .diags
+                .iter()
+                .any(|d| d.code == Code::InvalidNumber && d.span == r.span)
+    }
+
+    /// The point `r` names, if any (without reporting).
+    fn lookup_point(&self, r: &Reference) -> Option<usize> {
+        match &r.target {
+            RefTarget::Index(n) => usize::try_from(*n)
+                .ok()
+                .filter(|&n| n >= 1 && n <= self.points.len())
+                .map(|n| n - 1),
+            RefTarget::Name(name) => self.point_names.get(name).copied(),
+        }
+    }
+
+    /// The material `r` names, if any (without reporting).
+    fn lookup_material(&self, r: &Reference) -> Option<usize> {
+        match &r.target {
+            RefTarget::Index(n) => usize::try_from(*n)
+                .ok()
+                .filter(|&n| n >= 1 && n <= self.materials.len())
+                .map(|n| n - 1),
+            RefTarget::Name(name) => self.material_names.get(name).copied(),
+        }
+    }
+
+    /// Statements that did not parse or failed to lower stop early, before
+    /// they resolve all their references: mark what they refer to as used,
+    /// so that one error does not also make its points and materials look
+    /// unused.
+    fn mark_failed_references(&mut self, file: &SourceFile) {
+        let mut error_starts: Vec<usize> = self
+            .diags
+            .iter()
+            .filter(|d| d.is_error())
+            .map(|d| d.span.start)
+            .collect();
+        if error_starts.is_empty() {
+            return;
+        }
+        error_starts.sort_unstable();
+        let has_error = |span: Span| {
+            let i = error_starts.partition_point(|&s| s < span.start);
+            error_starts.get(i).is_some_and(|&s| s < span.end)
+        };
+        let mut refs: Vec<&Reference> = Vec::new();
+        for section in &file.sections {
+            refs.extend(section.broken.iter().flat_map(|b| &b.references));
+            for st in section.statements.iter().filter(|st| has_error(st.span)) {
+                for clause in &st.clauses {
+                    match clause {
+                        Clause::Assign { value, .. } => {
+                            each_reference(value, &mut |r| refs.push(r))
+                        }
+                        Clause::Apply { target, arg, .. } => {
+                            refs.extend(target);
+                            if let Some(v) = arg {
+                                each_reference(v, &mut |r| refs.push(r));
+                            }
+                        }
+                        Clause::Value(v) => each_reference(v, &mut |r| refs.push(r)),
+                    }
+                }
+            }
+        }
+        for r in refs {
+            match r.sigil {
+                RefSigil::Percent => {
+                    if let Some(i) = self.lookup_point(r) {
+                        self.points[i].used = true;
+                    }
+                }
+                RefSigil::Hash => {
+                    if let Some(i) = self.lookup_material(r) {
+                        self.materials[i].used = true;
+                    }
+                }
+                RefSigil::At => {}
+            }
+        }
+    }
+
+    /// Reports unused points and materials, unless a failed reference means
+    /// that one of them was probably meant (the warnings would only add
+    /// noise to the error).
     fn lint_unused(&mut self) {
         let mut found = Vec::new();
         for (i, p) in self.points.iter().enumerate() {
-            if !p.used && p.position.is_some() {
+            if !self.point_ref_failed && !p.used && p.position.is_some() {
                 // The number always identifies it, even when a name is duplicated.
                 let name = match &p.name {
-                    Some(n) => format!("%{} (`{n}`)", i + 1),
+                    Some(n) => format!("%{} ({})", i + 1, quote(n)),
                     None => format!("%{}", i + 1),
                 };
                 found.push(Diagnostic::new(
@@ -1316,9 +1547,9 @@ impl Lowerer<'_> {
             }
         }
         for (i, m) in self.materials.iter().enumerate() {
-            if !m.used {
+            if !self.material_ref_failed && !m.used {
                 let name = match &m.material.name {
-                    Some(n) => format!("#{} (`{n}`)", i + 1),
+                    Some(n) => format!("#{} ({})", i + 1, quote(n)),
                     None => format!("#{}", i + 1),
                 };
                 found.push(Diagnostic::new(
@@ -1396,12 +1627,76 @@ enum NameKind {
 /// Where ideal points may stand, for the help of `IdealPointNotAllowed`.
 const IDEAL_ALLOWED_HELP: &str = "ideal points are allowed only as polygon vertices, rod and cylinder ends, `Plane` and `hplane` points and horosphere centres";
 
+const GLOBAL_KEYS: &[&str] = &[
+    "recursion_depth",
+    "resolution",
+    "window_size",
+    "net_type",
+    "from",
+    "to",
+    "up",
+    "background",
+    "ambient",
+];
+
+const MATERIAL_FIELDS: &[&str] = &[
+    "ambient",
+    "diffuse",
+    "specular",
+    "alpha",
+    "trans",
+    "shininess",
+    "refraction",
+];
+
+const MATERIAL_FIELDS_HELP: &str =
+    "material fields are ambient, diffuse, specular, alpha, trans, shininess, refraction";
+
+const TRANSFORMATIONS: &[&str] = &["hline", "hplane", "Rotate", "Translate", "Reflect"];
+
+/// `help`, preceded by "did you mean `X`?" when `word` is a near miss of
+/// one of `candidates`.
+fn did_you_mean(word: &str, candidates: &[&str], help: &str) -> String {
+    match objects::closest(word, candidates) {
+        Some(s) => format!("did you mean `{s}`? {help}"),
+        None => help.to_string(),
+    }
+}
+
+/// The known section an unknown section name was probably meant to be.
+fn section_meant(name: &str) -> Option<&'static str> {
+    SECTIONS
+        .iter()
+        .find(|s| s.eq_ignore_ascii_case(name))
+        .or_else(|| {
+            let s = objects::closest(name, &SECTIONS)?;
+            SECTIONS.iter().find(|t| **t == s)
+        })
+        .copied()
+}
+
 const GLOBAL_KEYS_HELP: &str = "globals are recursion_depth, resolution, window_size, net_type, from, to, up, background, ambient";
 
+/// A reference as written, shortened like [`quote`] (without the backticks).
 fn reference_text(r: &Reference) -> String {
     let sigil = r.sigil.as_char();
     match &r.target {
         RefTarget::Index(n) => format!("{sigil}{n}"),
-        RefTarget::Name(s) => format!("{sigil}{s}"),
+        RefTarget::Name(s) => format!("{sigil}{}", shorten(s)),
     }
+}
+
+/// A user-written name, shortened so that a very long one does not flood
+/// the message.
+fn shorten(name: &str) -> String {
+    const MAX: usize = 24;
+    match name.char_indices().nth(MAX) {
+        Some((i, _)) => format!("{}…", &name[..i]),
+        None => name.to_string(),
+    }
+}
+
+/// A user-written name in backticks, shortened like [`shorten`].
+fn quote(name: &str) -> String {
+    format!("`{}`", shorten(name))
 }

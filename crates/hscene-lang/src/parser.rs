@@ -22,7 +22,8 @@ use pest_derive::Parser;
 
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::syntax::{
-    Clause, Ident, RefSigil, RefTarget, Reference, Section, SourceFile, Statement, Value,
+    BrokenStatement, Clause, Ident, RefSigil, RefTarget, Reference, Section, SourceFile, Statement,
+    Value,
 };
 
 #[derive(Parser)]
@@ -60,6 +61,7 @@ pub fn parse(source: &str) -> Parsed {
         pos: 0,
         diagnostics: Vec::new(),
         comment_unterminated: false,
+        incomplete: false,
     };
     let file = p.file();
     let mut diagnostics = p.diagnostics;
@@ -217,6 +219,13 @@ impl Stmt {
     }
 }
 
+/// The statements of a section body, good and broken.
+#[derive(Default)]
+struct Body {
+    statements: Vec<Statement>,
+    broken: Vec<BrokenStatement>,
+}
+
 /// The next section header found while scanning: its name and its `{`.
 type Header = (Ident, Span);
 
@@ -228,6 +237,8 @@ struct Scanner<'a> {
     /// problems that follow from it (unclosed section, cut statement) are
     /// then not reported again.
     comment_unterminated: bool,
+    /// Set when text was skipped whole (see [`SourceFile::incomplete`]).
+    incomplete: bool,
 }
 
 impl Scanner<'_> {
@@ -256,6 +267,7 @@ impl Scanner<'_> {
         self.pos = pos;
         if let Some(at) = unterminated {
             self.comment_unterminated = true;
+            self.incomplete = true;
             self.diagnostics.push(
                 Diagnostic::new(
                     Code::UnterminatedComment,
@@ -337,6 +349,7 @@ impl Scanner<'_> {
                         .with_help("a section starts with its name, e.g. `Points {`"),
                     );
                     // Parse the body anyway, to report its syntax errors.
+                    self.incomplete = true;
                     let (_, next) = self.section(None, tok.span);
                     header = next;
                 }
@@ -356,11 +369,15 @@ impl Scanner<'_> {
             junk = Some(junk.map_or(prev.span, |j| j.to(prev.span)));
         }
         self.report_junk(junk);
-        SourceFile { sections }
+        SourceFile {
+            sections,
+            incomplete: self.incomplete,
+        }
     }
 
     fn report_junk(&mut self, junk: Option<Span>) {
         if let Some(span) = junk {
+            self.incomplete = true;
             let found = self.found_at(span.start, false);
             self.diagnostics.push(
                 Diagnostic::new(
@@ -378,7 +395,7 @@ impl Scanner<'_> {
     /// no name) and the header of the next section when one started before
     /// this one was closed.
     fn section(&mut self, name: Option<Ident>, open: Span) -> (Option<Section>, Option<Header>) {
-        let mut statements = Vec::new();
+        let mut statements = Body::default();
         let mut stmt = Stmt::default();
         let mut end = open.end;
         let (close_end, next) = loop {
@@ -424,7 +441,8 @@ impl Scanner<'_> {
         let section = name.map(|name| Section {
             span: name.span.to(Span::new(close_end, close_end)),
             name,
-            statements,
+            statements: statements.statements,
+            broken: statements.broken,
         });
         (section, next)
     }
@@ -450,9 +468,9 @@ impl Scanner<'_> {
     }
 
     /// Parses the statement `stmt` (ending at `end`) and adds it to `out`,
-    /// or reports why it cannot be parsed.
-    fn flush(&mut self, stmt: &Stmt, end: usize, out: &mut Vec<Statement>) {
-        let Some(start) = stmt.start else { return };
+    /// or reports why it cannot be parsed and keeps it as broken.
+    fn flush(&mut self, stmt: &Stmt, end: usize, out: &mut Body) {
+        let Some(mut start) = stmt.start else { return };
         if let Some(span) = stmt.too_deep {
             self.diagnostics.push(
                 Diagnostic::new(
@@ -465,25 +483,168 @@ impl Scanner<'_> {
                     "tuples are at most one or two levels deep; remove the extra parentheses",
                 ),
             );
+            out.broken.push(self.broken(start, end));
             return;
         }
-        let text = &self.src[start..end];
-        match SceneGrammar::parse(Rule::statement_only, text) {
-            Ok(mut pairs) => {
-                let built = pairs
-                    .next()
-                    .and_then(|p| p.into_inner().find(|p| p.as_rule() == Rule::statement))
-                    .and_then(|p| self.statement(p, start));
-                match built {
-                    Some(s) => out.push(s),
-                    None => self.diagnostics.push(Diagnostic::new(
-                        Code::Syntax,
-                        Span::new(start, end),
-                        "internal error: unexpected parse tree for this statement",
-                    )),
+        // A statement missing its `;` at the end of a line is split there
+        // and parsing goes on with the next line; each round consumes at
+        // least one line, and pest stops at the first error, so this stays
+        // linear.
+        loop {
+            let text = &self.src[start..end];
+            match SceneGrammar::parse(Rule::statement_only, text) {
+                Ok(pairs) => {
+                    match self.build_statement(pairs, start) {
+                        Some(s) => out.statements.push(s),
+                        None => {
+                            self.diagnostics.push(Diagnostic::new(
+                                Code::Syntax,
+                                Span::new(start, end),
+                                "internal error: unexpected parse tree for this statement",
+                            ));
+                            out.broken.push(self.broken(start, end));
+                        }
+                    }
+                    return;
+                }
+                Err(err) => {
+                    if let Some(next) = self.split_at_line_end(&err, start, end, out) {
+                        start = next;
+                        continue;
+                    }
+                    self.report_pest_error(&err, start, end);
+                    out.broken.push(self.broken(start, end));
+                    return;
                 }
             }
-            Err(err) => self.report_pest_error(&err, start, end),
+        }
+    }
+
+    fn build_statement(
+        &mut self,
+        mut pairs: pest::iterators::Pairs<'_, Rule>,
+        start: usize,
+    ) -> Option<Statement> {
+        pairs
+            .next()
+            .and_then(|p| p.into_inner().find(|p| p.as_rule() == Rule::statement))
+            .and_then(|p| self.statement(p, start))
+    }
+
+    /// The start of every token of `start..end`, with its end.
+    fn tokens(&self, start: usize, end: usize) -> Vec<(Kind, Span)> {
+        let mut out = Vec::new();
+        let mut pos = start;
+        loop {
+            let (at, unterminated) = Self::skip_trivia(self.src, pos);
+            if unterminated.is_some() || at >= end {
+                return out;
+            }
+            let (kind, tok_end) = lex_at(self.src, at);
+            let tok_end = tok_end.min(end);
+            out.push((kind, Span::new(at, tok_end)));
+            pos = tok_end;
+        }
+    }
+
+    /// When pest expected `;` at a token that starts a new line, the
+    /// statement most likely lacks its `;` at the end of the previous line:
+    /// reports that (just after the previous token), keeps the first part as
+    /// a statement and returns where the rest starts.
+    fn split_at_line_end(
+        &mut self,
+        err: &pest::error::Error<Rule>,
+        start: usize,
+        end: usize,
+        out: &mut Body,
+    ) -> Option<usize> {
+        let ErrorVariant::ParsingError { positives, .. } = &err.variant else {
+            return None;
+        };
+        if !positives.contains(&Rule::semicolon) {
+            return None;
+        }
+        let local = match err.location {
+            InputLocation::Pos(p) => p,
+            InputLocation::Span((p, _)) => p,
+        };
+        let at = start + local;
+        if at >= end {
+            return None;
+        }
+        let prev_end = self
+            .tokens(start, at)
+            .last()
+            .map(|(_, span)| span.end)
+            .filter(|&e| e <= at)?;
+        if !self.src[prev_end..at].contains('\n') {
+            return None;
+        }
+        let text = format!("{};", &self.src[start..prev_end]);
+        let pairs = SceneGrammar::parse(Rule::statement_only, &text).ok()?;
+        let mut statement = self.build_statement(pairs, start)?;
+        // The `;` is not in the source: the statement ends at its last token.
+        statement.span.end = prev_end;
+        let found = self.found_at(at, false);
+        self.diagnostics.push(
+            Diagnostic::new(
+                Code::Syntax,
+                Span::new(prev_end, prev_end),
+                format!("expected `;` at the end of the line, found {found} on the next line"),
+            )
+            .with_label("expected `;` here")
+            .with_help("every statement ends with `;`"),
+        );
+        out.statements.push(statement);
+        Some(at)
+    }
+
+    /// What can be salvaged from a statement that did not parse: a leading
+    /// name and its references.
+    fn broken(&self, start: usize, end: usize) -> BrokenStatement {
+        let tokens = self.tokens(start, end);
+        let text = |span: Span| &self.src[span.start..span.end];
+        let (name, labelled) = match tokens.as_slice() {
+            [(Kind::Ident, name), (Kind::Other, sep), ..] if matches!(text(*sep), ":" | "=") => (
+                Some(self.ident(Tok {
+                    kind: Kind::Ident,
+                    span: *name,
+                })),
+                text(*sep) == ":",
+            ),
+            _ => (None, false),
+        };
+        let references = tokens
+            .iter()
+            .filter(|(kind, _)| *kind == Kind::Other)
+            .filter_map(|&(_, span)| {
+                let t = text(span);
+                let sigil = match t.as_bytes().first() {
+                    Some(b'%') => RefSigil::Percent,
+                    Some(b'#') => RefSigil::Hash,
+                    _ => return None,
+                };
+                let rest = &t[1..];
+                let first = *rest.as_bytes().first()?;
+                let target = if first.is_ascii_digit() {
+                    RefTarget::Index(rest.parse().ok()?)
+                } else if is_ident_start(first) {
+                    RefTarget::Name(rest.to_string())
+                } else {
+                    return None;
+                };
+                Some(Reference {
+                    sigil,
+                    target,
+                    span,
+                })
+            })
+            .collect();
+        BrokenStatement {
+            name,
+            labelled,
+            references,
+            span: Span::new(start, end),
         }
     }
 
@@ -543,6 +704,13 @@ impl Scanner<'_> {
                 .with_help("every statement ends with `;`");
         } else if !expected.is_empty() {
             diag = diag.with_label(format!("expected {expected}"));
+        }
+        let letter = self.src[at.min(end)..end]
+            .chars()
+            .next()
+            .is_some_and(|c| !c.is_ascii() && c.is_alphanumeric());
+        if letter {
+            diag = diag.with_help("names may only use ASCII letters, digits and `_`");
         }
         self.diagnostics.push(diag);
     }
@@ -1359,6 +1527,55 @@ Objects {
             assert_eq!(p.diagnostics.len(), 1, "{src}");
             assert_eq!(p.diagnostics[0].message, msg, "{src}");
         }
+        let p = parse("S { Sphäre %1; }");
+        assert_eq!(
+            p.diagnostics[0].help.as_deref(),
+            Some("names may only use ASCII letters, digits and `_`")
+        );
+    }
+
+    #[test]
+    fn missing_semicolon_at_end_of_line_splits_the_statement() {
+        let src = "Points {\n  a = (0,0,0)\n  (1,1,1);\n  (0,0,0) // c\n  (2,2,2)\n}";
+        let p = parse(src);
+        assert_eq!(codes(&p), [Code::Syntax, Code::Syntax, Code::Syntax]);
+        let d = &p.diagnostics[0];
+        assert_eq!(d.label.as_deref(), Some("expected `;` here"));
+        // Just after `(0,0,0)` on line 2, not at the next line's `(`.
+        assert_eq!(d.span, Span::new(22, 22));
+        assert!(d.message.starts_with("expected `;`"), "{}", d.message);
+        let points = &p.file.sections[0];
+        let kept: Vec<&str> = points
+            .statements
+            .iter()
+            .map(|s| text(src, s.span))
+            .collect();
+        assert_eq!(kept, ["a = (0,0,0)", "(1,1,1);", "(0,0,0)"]);
+        // The last one is cut off by `}`: reported as before, and kept broken.
+        assert!(p.diagnostics[2].message.contains("found `}`"));
+        assert_eq!(points.broken.len(), 1);
+        assert!(points.broken[0].name.is_none());
+    }
+
+    #[test]
+    fn broken_statements_keep_their_name_and_references() {
+        let src = "Points { a = (0,0 0); b: (1,1,1) 2; } Objects { Sphere %a, #glass 0.1 %7; }";
+        let p = parse(src);
+        assert_eq!(codes(&p), [Code::Syntax; 3]);
+        let points = &p.file.sections[0];
+        assert!(points.statements.is_empty());
+        let names: Vec<(&str, bool)> = points
+            .broken
+            .iter()
+            .map(|b| (b.name.as_ref().map_or("", |n| n.as_str()), b.labelled))
+            .collect();
+        assert_eq!(names, [("a", false), ("b", true)]);
+        let refs: Vec<String> = p.file.sections[1].broken[0]
+            .references
+            .iter()
+            .map(ToString::to_string)
+            .collect();
+        assert_eq!(refs, ["%a", "#glass", "%7"]);
     }
 
     #[test]
@@ -1493,7 +1710,17 @@ Objects {
                 assert!(s.span.end <= src.len());
                 assert_eq!(&src[s.name.span.start..s.name.span.end], s.name.text);
                 for st in &s.statements {
-                    assert!(src[st.span.start..st.span.end].ends_with(';'));
+                    // A statement that lacked its `;` at the end of a line
+                    // ends at its last token.
+                    let text = &src[st.span.start..st.span.end];
+                    let after = src[st.span.end..].trim_start_matches([' ', '\t', '\r']);
+                    assert!(
+                        text.ends_with(';') || after.starts_with(['\n', '/']),
+                        "{text:?}"
+                    );
+                }
+                for b in &s.broken {
+                    assert!(b.span.start <= b.span.end && b.span.end <= src.len());
                 }
             }
         }

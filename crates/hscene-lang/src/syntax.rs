@@ -25,6 +25,10 @@ use crate::diagnostic::Span;
 pub struct SourceFile {
     /// Sections in source order (duplicates and unknown names included).
     pub sections: Vec<Section>,
+    /// Some text was skipped whole (an unterminated comment, a section
+    /// without a name, text outside any section), so the tree may lack
+    /// references the author wrote.
+    pub incomplete: bool,
 }
 
 /// `Name { statement* }`.
@@ -34,6 +38,10 @@ pub struct Section {
     pub name: Ident,
     /// The statements that parsed, in source order.
     pub statements: Vec<Statement>,
+    /// The statements that did not parse (each already reported), in source
+    /// order. The semantic layer uses them to keep the numbering of points
+    /// and materials aligned and to know what they referred to.
+    pub broken: Vec<BrokenStatement>,
     /// From the name to the closing `}` (or to the last statement when the
     /// section is not closed).
     pub span: Span,
@@ -63,6 +71,19 @@ pub struct Statement {
     /// At least one clause.
     pub clauses: Vec<Clause>,
     /// The whole statement, label and `;` included.
+    pub span: Span,
+}
+
+/// What is known about a statement that failed to parse.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BrokenStatement {
+    /// A leading `name:` or `name =`, if the statement starts with one.
+    pub name: Option<Ident>,
+    /// Whether `name` was followed by `:` (a label) rather than `=`.
+    pub labelled: bool,
+    /// The well-formed `%` and `#` references in its text.
+    pub references: Vec<Reference>,
+    /// The whole statement as scanned.
     pub span: Span,
 }
 

@@ -860,11 +860,15 @@ fn unknown_section() {
     let src = "Pionts { (0,0,0); }";
     let (_, d) = expect_only(src, "HSC0101", Severity::Error, "Pionts", 0);
     assert!(d.help.unwrap().contains("Points"));
+    // A misspelt section is checked as the section it was meant to be, so
+    // its declarations don't cascade into undefined references.
+    let src = "Pionts { lamp = (0,0,0); } Lights { %lamp, (1,1,1), (1,1,1); }";
+    expect_only(src, "HSC0101", Severity::Error, "Pionts", 0);
 }
 
 #[test]
 fn unknown_section_with_wrong_case_suggests_the_right_name() {
-    let src = "Globals { net_type = 1; }\nlights { %1, (1,1,1), (1,1,1); }";
+    let src = "Globals { net_type = 1; }\nPoints { (0,0,0.1); }\nlights { %1, (1,1,1), (1,1,1); }";
     let (_, d) = expect_only(src, "HSC0101", Severity::Error, "lights", 0);
     let help = d.help.unwrap();
     assert!(help.contains("`Lights`"), "{help}");
@@ -1543,4 +1547,39 @@ fn light_with_an_assignment_points_at_it() {
     let src = "Points { (0,0,0.3); } Lights { %1, (1,1,1); }";
     let (_, d) = expect_diag(src, "HSC0107", Severity::Error, "%1, (1,1,1);", 0);
     assert!(d.message.contains("got 2"), "{}", d.message);
+}
+
+#[test]
+fn a_broken_point_or_material_keeps_the_numbering() {
+    // The second point does not parse: it still is %2, so %3 stays right and
+    // %2 itself gives no second error.
+    let src = "Points { (0,0,0.1); (0,0 0.2); (0,0,0.3); }
+BRDFs { red: diffuse = ; glass: diffuse = (1,1,1); }
+Objects { Sphere %3, 0.05, #glass; Sphere %2, 0.05, #red; Sphere %1, 0.05, #1; }";
+    let c = compile(src);
+    let codes: Vec<&str> = c.diagnostics.iter().map(|d| d.code.as_str()).collect();
+    assert_eq!(codes, ["HSC0001", "HSC0001"], "{:#?}", c.diagnostics);
+}
+
+#[test]
+fn a_failed_statement_does_not_make_its_references_unused() {
+    // The sphere fails (unknown object), so nothing resolves its references;
+    // neither the point nor the material is reported as unused.
+    let src = "Points { (0,0,0.1); } BRDFs { diffuse = (1,1,1); } Objects { Sphear %1, 0.05, #1; }";
+    let (_, d) = expect_only(src, "HSC0105", Severity::Error, "Sphear", 0);
+    assert!(d.help.unwrap().contains("Sphere"));
+    // A line missing its `;` is one error, at the end of that line.
+    let src = "Points { (0,0,0.1)\n (0,0,0.2); } BRDFs { diffuse = (1,1,1); }
+Objects { Sphere %1, 0.05, #1; Sphere %2, 0.05, #1; }";
+    let c = compile(src);
+    assert_eq!(c.diagnostics.len(), 1, "{:#?}", c.diagnostics);
+    let d = &c.diagnostics[0];
+    assert_eq!(d.code.as_str(), "HSC0001");
+    assert!(d.span.is_empty());
+    assert_eq!(LineIndex::new(src).line_col(d.span.start), (1, 19));
+    assert!(c.scene.is_none());
+    // An index too large is one error, not also an undefined point.
+    let src = "Points { (0,0,0.1); } BRDFs { diffuse = (1,1,1); }
+Objects { Sphere %1, 0.05, #1; Sphere %99999999999999999999, 0.05, #1; }";
+    expect_only(src, "HSC0004", Severity::Error, "%99999999999999999999", 0);
 }

@@ -159,7 +159,8 @@ fn hundred_thousand_comment_openers() {
     let c = compile_checked(&src);
     // The first `/*` swallows the rest of the file: one diagnostic.
     assert_eq!(count(&c, Code::UnterminatedComment), 1);
-    assert_eq!(c.diagnostics.len(), 2, "{:?}", c.diagnostics); // + unused point
+    // No unused-point warning: the comment may hide its uses.
+    assert_eq!(c.diagnostics.len(), 1, "{:?}", c.diagnostics);
     // `/*/*/*...`: `/*/*/` is a closed comment, then `*/*/*...` is junk and
     // the last `/*` (or `/`) is left over.
     let src = format!("Points {{ (0,0,0.3); }}\n{}", "/*".repeat(N));

@@ -124,7 +124,7 @@ impl Lowerer<'_> {
         let mut d = Diagnostic::new(
             Code::UndefinedTarget,
             target.span,
-            format!("no object or light is named `{name}`"),
+            format!("no object or light is named {}", super::quote(name)),
         );
         let names: Vec<&str> = self
             .targets
@@ -133,6 +133,7 @@ impl Lowerer<'_> {
             .chain([CAMERA])
             .collect();
         d = if self.point_names.contains_key(name) {
+            let name = super::shorten(name);
             d.with_help(format!(
                 "`{name}` is a point: write `%{name}->...` to move it"
             ))

@@ -328,7 +328,7 @@ impl Lowerer<'_> {
         let mut d = Diagnostic::new(
             Code::UnknownObject,
             name.span,
-            format!("unknown object `{other}`"),
+            format!("unknown object {}", super::quote(other)),
         );
         d = if let Some(s) = names.iter().find(|s| s.eq_ignore_ascii_case(other)) {
             d.with_help(format!(
@@ -847,13 +847,24 @@ pub(super) fn wireframe(shapes: &[Shape], radius: f64) -> Result<Vec<Rod>, GeomE
 
 /// The candidate nearest to `word` by edit distance (ignoring case), if it
 /// is close enough to be a plausible typo.
+///
+/// Ties go to the alphabetically first candidate, so the answer does not
+/// depend on the candidates' order. Long words and very long candidate lists
+/// get no suggestion, which keeps the cost bounded.
 pub(super) fn closest<'a>(word: &str, candidates: &[&'a str]) -> Option<&'a str> {
+    const MAX_WORD: usize = 64;
+    const MAX_CANDIDATES: usize = 1000;
+    if word.len() > MAX_WORD || candidates.len() > MAX_CANDIDATES {
+        return None;
+    }
     let w = word.to_ascii_lowercase();
+    let limit = |c: &str| 2.max(c.len() / 4);
     candidates
         .iter()
+        .filter(|c| c.len().abs_diff(w.len()) <= limit(c))
         .map(|c| (edit_distance(&w, &c.to_ascii_lowercase()), *c))
-        .filter(|(d, c)| *d <= 2.max(c.len() / 4) && *d < c.len())
-        .min_by_key(|(d, _)| *d)
+        .filter(|(d, c)| *d <= limit(c) && *d < c.len())
+        .min_by_key(|&(d, c)| (d, c))
         .map(|(_, c)| c)
 }
 
