@@ -7,7 +7,7 @@ use crate::isometry::Isometry;
 use crate::line::HLine;
 use crate::lorentz;
 use crate::ray::{Hit, Ray};
-use crate::roots::{exp_roots, first_in_range};
+use crate::roots::{exp_roots, hit_at_first_root};
 
 /// The points at hyperbolic distance `radius` from an h-line (an
 /// equidistant surface; in the ball, a "banana" through the line's two
@@ -137,14 +137,7 @@ impl HCylinder {
     /// coefficients' rounding); no input gives NaN
     /// (`tangent_and_grazing_rays_to_a_cylinder`).
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        let (near, far) = self.roots(ray)?;
-        let t = first_in_range(near, far, t_min, t_max)?;
-        let point = ray.at(t);
-        Some(Hit {
-            t,
-            point,
-            normal: self.normal_at(point),
-        })
+        hit_at_first_root(ray, self.roots(ray)?, t_min, t_max, |x| self.normal_at(x))
     }
 
     /// Both arc lengths at which the ray's geodesic meets the surface,

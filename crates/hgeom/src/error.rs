@@ -87,3 +87,25 @@ pub enum GeomError {
         limit: usize,
     },
 }
+
+/// `Ok` for a positive finite length (a radius, side or circumradius), else
+/// [`GeomError::BadRadius`].
+pub(crate) fn positive_length(x: f64) -> Result<(), GeomError> {
+    if x.is_finite() && x > 0.0 {
+        Ok(())
+    } else {
+        Err(GeomError::BadRadius(x))
+    }
+}
+
+/// A point that f64 can hold with usable ball coordinates, or the reason it
+/// cannot (a figure so large that a vertex lies beyond distance ~37).
+pub(crate) fn representable(p: crate::point::Point) -> Result<crate::point::Point, GeomError> {
+    if p.is_representable() {
+        Ok(p)
+    } else {
+        Err(GeomError::NotInBall {
+            norm: p.coords().length(),
+        })
+    }
+}

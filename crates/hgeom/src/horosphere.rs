@@ -7,7 +7,7 @@ use crate::isometry::Isometry;
 use crate::lorentz;
 use crate::point::{IdealPoint, Point};
 use crate::ray::{Hit, Ray};
-use crate::roots::{exp_roots, first_in_range};
+use crate::roots::{exp_roots, hit_at_first_root};
 
 /// A horosphere centred at an ideal point.
 ///
@@ -129,14 +129,8 @@ impl Horosphere {
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         let a = -lorentz::dot(ray.origin, self.null);
         let b = -lorentz::dot(ray.dir, self.null);
-        let (near, far) = exp_roots(a + b, self.k, a - b)?;
-        let t = first_in_range(near, far, t_min, t_max)?;
-        let point = ray.at(t);
-        Some(Hit {
-            t,
-            point,
-            normal: self.normal_at(point),
-        })
+        let roots = exp_roots(a + b, self.k, a - b)?;
+        hit_at_first_root(ray, roots, t_min, t_max, |x| self.normal_at(x))
     }
 
     /// Unit normal out of the horoball at a point of the horosphere: the

@@ -18,7 +18,7 @@ use std::ops::RangeInclusive;
 
 use glam::{DVec3, DVec4};
 
-use crate::error::GeomError;
+use crate::error::{GeomError, positive_length, representable};
 use crate::point::{IdealPoint, Point, Vertex};
 use crate::polygon::ConvexPolygon;
 
@@ -34,26 +34,6 @@ fn check_count(n: usize) -> Result<(), GeomError> {
             got: n,
             min: *REGULAR_POLYGON_VERTICES.start(),
             max: *REGULAR_POLYGON_VERTICES.end(),
-        })
-    }
-}
-
-fn check_length(x: f64) -> Result<(), GeomError> {
-    if x.is_finite() && x > 0.0 {
-        Ok(())
-    } else {
-        Err(GeomError::BadRadius(x))
-    }
-}
-
-/// A point that f64 can hold with usable ball coordinates, or the reason it
-/// cannot (a figure so large that a vertex lies beyond distance ~37).
-fn representable(p: Point) -> Result<Point, GeomError> {
-    if p.is_representable() {
-        Ok(p)
-    } else {
-        Err(GeomError::NotInBall {
-            norm: p.coords().length(),
         })
     }
 }
@@ -110,7 +90,7 @@ fn regular_directions(n: usize) -> Vec<DVec3> {
 /// ```
 pub fn regular_polygon(n: usize, circumradius: f64) -> Result<ConvexPolygon, GeomError> {
     check_count(n)?;
-    check_length(circumradius)?;
+    positive_length(circumradius)?;
     let vertices = regular_directions(n)
         .into_iter()
         .map(|d| Point::at_distance_from_origin(d, circumradius).and_then(representable))
@@ -134,7 +114,7 @@ pub fn regular_polygon(n: usize, circumradius: f64) -> Result<ConvexPolygon, Geo
 /// (`regular_polygon_by_side` in `tests/figures.rs`).
 pub fn regular_polygon_with_side(n: usize, side: f64) -> Result<ConvexPolygon, GeomError> {
     check_count(n)?;
-    check_length(side)?;
+    positive_length(side)?;
     let circumradius = ((0.5 * side).sinh() / (PI / n as f64).sin()).asinh();
     regular_polygon(n, circumradius)
 }
@@ -185,8 +165,8 @@ pub fn ideal_regular_polygon(n: usize) -> Result<ConvexPolygon, GeomError> {
 /// 1e-12, and the sides `OA`, `OB` are `a`, `b` to 1e-14 relative
 /// (`lambert_quadrilateral_has_three_right_angles` in `tests/figures.rs`).
 pub fn lambert_quadrilateral(a: f64, b: f64) -> Result<ConvexPolygon, GeomError> {
-    check_length(a)?;
-    check_length(b)?;
+    positive_length(a)?;
+    positive_length(b)?;
     let p = a.sinh() * b.sinh();
     if !(p < 1.0) {
         return Err(GeomError::LambertOpen { sinh_product: p });
@@ -229,8 +209,8 @@ pub fn lambert_quadrilateral(a: f64, b: f64) -> Result<ConvexPolygon, GeomError>
 /// (`saccheri_quadrilateral_has_right_base_angles_and_equal_summit_angles`
 /// in `tests/figures.rs`).
 pub fn saccheri_quadrilateral(base: f64, leg: f64) -> Result<ConvexPolygon, GeomError> {
-    check_length(base)?;
-    check_length(leg)?;
+    positive_length(base)?;
+    positive_length(leg)?;
     let half = 0.5 * base;
     let (sh, ch) = (half.sinh(), half.cosh());
     let (sl, cl) = (leg.sinh(), leg.cosh());

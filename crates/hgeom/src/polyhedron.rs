@@ -4,7 +4,7 @@ use std::collections::{HashMap, HashSet};
 
 use glam::{DVec3, DVec4};
 
-use crate::error::GeomError;
+use crate::error::{GeomError, positive_length, representable};
 use crate::isometry::Isometry;
 use crate::lorentz;
 use crate::point::{IdealPoint, Point, Vertex};
@@ -246,24 +246,6 @@ fn cyclic(v: DVec3) -> [DVec3; 3] {
     [v, DVec3::new(v.z, v.x, v.y), DVec3::new(v.y, v.z, v.x)]
 }
 
-fn check_radius(r: f64) -> Result<(), GeomError> {
-    if r.is_finite() && r > 0.0 {
-        Ok(())
-    } else {
-        Err(GeomError::BadRadius(r))
-    }
-}
-
-fn representable(p: Point) -> Result<Point, GeomError> {
-    if p.is_representable() {
-        Ok(p)
-    } else {
-        Err(GeomError::NotInBall {
-            norm: p.coords().length(),
-        })
-    }
-}
-
 /// The polygons with the given vertex index lists.
 fn polygons(verts: &[Vertex], faces: &[Vec<usize>]) -> Result<Vec<ConvexPolygon>, GeomError> {
     faces
@@ -275,7 +257,7 @@ fn polygons(verts: &[Vertex], faces: &[Vec<usize>]) -> Result<Vec<ConvexPolygon>
 /// The solid with vertices on the rays `dirs` at hyperbolic distance
 /// `circumradius` and the given faces, centred at the origin.
 fn solid(dirs: &[DVec3], faces: &[Vec<usize>], circumradius: f64) -> Result<Polyhedron, GeomError> {
-    check_radius(circumradius)?;
+    positive_length(circumradius)?;
     let verts = dirs
         .iter()
         .map(|d| {
@@ -471,7 +453,7 @@ impl Polyhedron {
     /// (`small_stellated_dodecahedron_has_sixty_spike_triangles` in
     /// `tests/figures.rs`).
     pub fn small_stellated_dodecahedron(circumradius: f64) -> Result<Polyhedron, GeomError> {
-        check_radius(circumradius)?;
+        positive_length(circumradius)?;
         let tips: Vec<DVec3> = Platonic::Icosahedron
             .template()
             .into_iter()
@@ -553,7 +535,7 @@ impl Polyhedron {
     /// three planes orthogonal to 1e-15 and the vertices the icosahedron's
     /// to 1e-13 (`golden_rectangles_are_three_orthogonal_quadrilaterals`).
     pub fn golden_rectangles(circumradius: f64) -> Result<Polyhedron, GeomError> {
-        check_radius(circumradius)?;
+        positive_length(circumradius)?;
         let corners = [
             DVec3::new(0.0, 1.0, PHI),
             DVec3::new(0.0, -1.0, PHI),

@@ -2,6 +2,10 @@
 //! fixed vector `C` is `a cosh t + b sinh t`, so a level set becomes a
 //! quadratic in `u = e^t` (or in `e^{2t}` for the equidistant surface).
 
+use glam::DVec4;
+
+use crate::ray::{Hit, Ray};
+
 /// The roots `u_near <= u_far` of `alpha u^2 - 2 k u + beta = 0`, returned as
 /// `(ln u_near, ln u_far)`, for `alpha, beta >= 0` and `k > 0`.
 ///
@@ -21,6 +25,25 @@ pub(crate) fn exp_roots(alpha: f64, k: f64, beta: f64) -> Option<(f64, f64)> {
         return None;
     }
     Some(((beta / big).ln(), (big / alpha).ln()))
+}
+
+/// The hit at the first of the two roots inside `(t_min, t_max)`, with the
+/// surface's normal there: what every `e^t`-quadric's `intersect` returns.
+#[inline]
+pub(crate) fn hit_at_first_root(
+    ray: &Ray,
+    roots: (f64, f64),
+    t_min: f64,
+    t_max: f64,
+    normal_at: impl Fn(DVec4) -> DVec4,
+) -> Option<Hit> {
+    let t = first_in_range(roots.0, roots.1, t_min, t_max)?;
+    let point = ray.at(t);
+    Some(Hit {
+        t,
+        point,
+        normal: normal_at(point),
+    })
 }
 
 /// The first of the two roots strictly inside `(t_min, t_max)`.

@@ -7,7 +7,7 @@ use crate::isometry::Isometry;
 use crate::lorentz;
 use crate::point::Point;
 use crate::ray::{Hit, Ray};
-use crate::roots::{exp_roots, first_in_range};
+use crate::roots::{exp_roots, hit_at_first_root};
 
 /// An h-sphere with hyperbolic centre and radius.
 ///
@@ -171,14 +171,7 @@ impl HSphere {
     /// tangent to rounding (`|<N,N> - 1| < 1e-13 + 100 eps |N|^2` in
     /// `sphere_hits_lie_on_the_sphere`).
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        let (near, far) = self.roots(ray)?;
-        let t = first_in_range(near, far, t_min, t_max)?;
-        let point = ray.at(t);
-        Some(Hit {
-            t,
-            point,
-            normal: self.normal_at(point),
-        })
+        hit_at_first_root(ray, self.roots(ray)?, t_min, t_max, |x| self.normal_at(x))
     }
 
     /// Both arc lengths (possibly negative or infinite, never NaN) at which
