@@ -1,13 +1,17 @@
 //! Criterion micro-benchmarks of the intersection kernels and a small render.
 //!
-//! Speed only; the accuracy of the same kernels is measured by hgeom's tests
-//! and (issue 3/6) by the accuracy report, printed next to these timings.
+//! Speed only; the accuracy of the same kernels is measured against a 320-bit
+//! reference by `cargo run --release -p hgeom --example accuracy`, which
+//! prints each kernel's error next to its ns per call.
 
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use hgeom::glam::DVec3;
-use hgeom::{HSphere, Platonic, Point, Polyhedron, Ray};
+use hgeom::{
+    ConvexPolygon, HCylinder, HLine, HPlane, HSphere, Horosphere, IdealPoint, Platonic, Point,
+    Polyhedron, Ray, Rod,
+};
 
 fn rays(n: usize) -> Vec<Ray> {
     (0..n)
@@ -18,32 +22,49 @@ fn rays(n: usize) -> Vec<Ray> {
         .collect()
 }
 
+/// Count the rays of `rs` that hit, through `hit`: the shape of every kernel
+/// benchmark below.
+fn bench_kernel(c: &mut Criterion, name: &str, rs: &[Ray], hit: impl Fn(&Ray) -> bool) {
+    c.bench_function(name, |b| {
+        b.iter(|| rs.iter().filter(|r| hit(black_box(r))).count())
+    });
+}
+
 fn kernels(c: &mut Criterion) {
     let rs = rays(1024);
-    let sphere =
-        HSphere::try_new(Point::try_new(DVec3::new(0.02, -0.01, 0.2)).unwrap(), 0.1).unwrap();
-    c.bench_function("sphere_intersect_x1024", |b| {
-        b.iter(|| {
-            rs.iter()
-                .filter(|r| {
-                    sphere
-                        .intersect(black_box(r), 1e-9, f64::INFINITY)
-                        .is_some()
-                })
-                .count()
-        })
+    let p = |x: f64, y: f64, z: f64| Point::try_new(DVec3::new(x, y, z)).unwrap();
+    let sphere = HSphere::try_new(p(0.02, -0.01, 0.2), 0.1).unwrap();
+    bench_kernel(c, "sphere_intersect_x1024", &rs, |r| {
+        sphere.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
     let dodeca = Polyhedron::platonic(Platonic::Dodecahedron, 0.5).unwrap();
-    c.bench_function("dodecahedron_intersect_x1024", |b| {
-        b.iter(|| {
-            rs.iter()
-                .filter(|r| {
-                    dodeca
-                        .intersect(black_box(r), 1e-9, f64::INFINITY)
-                        .is_some()
-                })
-                .count()
-        })
+    bench_kernel(c, "dodecahedron_intersect_x1024", &rs, |r| {
+        dodeca.intersect(r, 1e-9, f64::INFINITY).is_some()
+    });
+    let (a, b, q) = (p(-0.2, 0.05, 0.3), p(0.2, -0.05, 0.3), p(0.0, 0.2, 0.3));
+    let plane = HPlane::through(&a.into(), &b.into(), &q.into()).unwrap();
+    bench_kernel(c, "plane_intersect_x1024", &rs, |r| {
+        plane.intersect(r, 1e-9, f64::INFINITY).is_some()
+    });
+    let polygon = ConvexPolygon::try_new(vec![a.into(), b.into(), q.into()]).unwrap();
+    bench_kernel(c, "triangle_intersect_x1024", &rs, |r| {
+        polygon.intersect(r, 1e-9, f64::INFINITY).is_some()
+    });
+    let cylinder = HCylinder::try_new(HLine::through(&a.into(), &b.into()).unwrap(), 0.05).unwrap();
+    bench_kernel(c, "cylinder_intersect_x1024", &rs, |r| {
+        cylinder.intersect(r, 1e-9, f64::INFINITY).is_some()
+    });
+    let rod = Rod::try_new(a.into(), b.into(), 0.05).unwrap();
+    bench_kernel(c, "rod_intersect_x1024", &rs, |r| {
+        rod.intersect(r, 1e-9, f64::INFINITY).is_some()
+    });
+    let horosphere = Horosphere::try_new(
+        IdealPoint::from_direction(DVec3::Z).unwrap(),
+        &p(0.0, 0.0, 0.3),
+    )
+    .unwrap();
+    bench_kernel(c, "horosphere_intersect_x1024", &rs, |r| {
+        horosphere.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
 }
 
