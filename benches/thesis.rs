@@ -415,6 +415,10 @@ fn main() -> ExitCode {
             },
         });
     }
+    let povray_cell = |r: &Row, none: &str, digits: usize| {
+        r.povray_s
+            .map_or(none.to_string(), |s| format!("{s:.digits$}"))
+    };
     if json {
         let items: Vec<String> = rows
             .iter()
@@ -431,7 +435,7 @@ fn main() -> ExitCode {
                     r.max_error,
                     r.median_error,
                     r.sampled,
-                    r.povray_s.map_or("null".to_string(), |s| format!("{s:.4}"))
+                    povray_cell(r, "null", 4)
                 )
             })
             .collect();
@@ -468,7 +472,7 @@ fn main() -> ExitCode {
                 r.max_error,
                 r.median_error,
                 r.sampled,
-                r.povray_s.map_or("-".to_string(), |s| format!("{s:.3}"))
+                povray_cell(r, "-", 3)
             );
         }
     }

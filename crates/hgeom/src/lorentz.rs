@@ -99,17 +99,20 @@ pub fn distance(x: DVec4, y: DVec4) -> f64 {
 /// of a short segment far out inherits the rounding of `X` and `Y`
 /// (`orthogonal_plane_contains_start` in `plane.rs`).
 pub fn direction_towards(x: DVec4, y: DVec4) -> Option<(DVec4, f64)> {
+    unit_tangent_towards(x, y).map(|t| (t, distance(x, y)))
+}
+
+/// [`direction_towards`] without the distance, for hot paths (surface
+/// normals) that need only the tangent. Same accuracy.
+#[inline]
+pub fn unit_tangent_towards(x: DVec4, y: DVec4) -> Option<DVec4> {
     // Component of y orthogonal to x: y + <x,y> x. Written via the difference
     // d = y - x as d + <x,d> x (since <x,x> = -1), which avoids cancellation
     // for nearby points.
     let d = y - x;
     let t = d + dot(x, d) * x;
     let len = norm(t);
-    if len > 0.0 && len.is_finite() {
-        Some((t / len, distance(x, y)))
-    } else {
-        None
-    }
+    (len > 0.0 && len.is_finite()).then(|| t / len)
 }
 
 /// The point at arc length `t` along the geodesic from `x` with unit tangent `v`.

@@ -135,7 +135,7 @@ impl HPlane {
     /// far out it inherits the rounding of the hyperboloid vectors, about
     /// `eps |X|^2 / sinh(len)`.
     pub fn orthogonal_at(start: &Point, towards: &Point) -> Result<HPlane, GeomError> {
-        let (v, _) = lorentz::direction_towards(start.to_hyperboloid(), towards.to_hyperboloid())
+        let v = lorentz::unit_tangent_towards(start.to_hyperboloid(), towards.to_hyperboloid())
             .ok_or(GeomError::Coincident)?;
         // v is a unit tangent at start, hence a unit spacelike vector with <start,v> = 0.
         HPlane::from_normal(v)

@@ -190,13 +190,13 @@ impl HSphere {
     ///
     /// # Accuracy
     ///
-    /// [`lorentz::direction_towards`] from the point to the centre, negated:
+    /// [`lorentz::unit_tangent_towards`] from the point to the centre, negated:
     /// a unit tangent to about `eps |X|^2`, pointing along the geodesic from
     /// the centre to within the rounding of `X` (`sphere_hits_lie_on_the_sphere`
     /// checks `<N,C> = -sinh r`).
     pub fn normal_at(&self, x: DVec4) -> DVec4 {
-        match lorentz::direction_towards(x, self.center_h) {
-            Some((towards_center, _)) => -towards_center,
+        match lorentz::unit_tangent_towards(x, self.center_h) {
+            Some(towards_center) => -towards_center,
             // Only reachable for a degenerate sphere; any unit tangent will do.
             None => DVec4::X,
         }

@@ -101,7 +101,7 @@ impl Bound {
             return *other;
         }
         let big = 0.5 * (d + self.radius + other.radius);
-        let Some((towards, _)) = lorentz::direction_towards(self.center, other.center) else {
+        let Some(towards) = lorentz::unit_tangent_towards(self.center, other.center) else {
             // Coincident centres: the larger ball contains both.
             return if self.radius >= other.radius {
                 *self

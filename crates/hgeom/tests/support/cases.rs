@@ -142,10 +142,10 @@ pub fn boundary_pairs(rng: &mut Rng, n: usize) -> Vec<(Point, Point)> {
         .collect()
 }
 
-/// Relative error of `distance` on pairs near the absolute.
-pub fn distance_boundary(rng: &mut Rng, n: usize) -> Family {
+/// Relative error of `distance` over point pairs, timed.
+fn distance_family(operation: &'static str, pairs: &[(Point, Point)]) -> Family {
     let mut clock = Clock::default();
-    let errors = boundary_pairs(rng, n)
+    let errors = pairs
         .iter()
         .map(|(a, b)| {
             rel(
@@ -155,11 +155,16 @@ pub fn distance_boundary(rng: &mut Rng, n: usize) -> Family {
         })
         .collect();
     Family {
-        operation: "distance (1-|x| down to 1e-15)",
+        operation,
         unit: "relative",
         errors,
         ns_per_op: clock.mean(),
     }
+}
+
+/// Relative error of `distance` on pairs near the absolute.
+pub fn distance_boundary(rng: &mut Rng, n: usize) -> Family {
+    distance_family("distance (1-|x| down to 1e-15)", &boundary_pairs(rng, n))
 }
 
 /// Pairs `1e-12` apart (Euclidean) anywhere in the ball.
@@ -176,22 +181,7 @@ pub fn near_pairs(rng: &mut Rng, n: usize) -> Vec<(Point, Point)> {
 
 /// Relative error of `distance` on nearly coincident points.
 pub fn distance_near(rng: &mut Rng, n: usize) -> Family {
-    let mut clock = Clock::default();
-    let errors = near_pairs(rng, n)
-        .iter()
-        .map(|(a, b)| {
-            rel(
-                clock.run(|| distance(a, b)),
-                &r::distance(a.coords(), b.coords()),
-            )
-        })
-        .collect();
-    Family {
-        operation: "distance (points 1e-12 apart)",
-        unit: "relative",
-        errors,
-        ns_per_op: clock.mean(),
-    }
+    distance_family("distance (points 1e-12 apart)", &near_pairs(rng, n))
 }
 
 /// Segments with ends up to distance `reach` from the origin.
