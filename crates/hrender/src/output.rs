@@ -91,8 +91,29 @@ pub fn write_image(image: &Image, path: &Path, depth: SampleDepth) -> Result<(),
         out.flush().map_err(io)?;
     }
     tmp.as_file().sync_all().map_err(io)?;
+    // Temporary files are created private (0600); an image replacing an
+    // existing one keeps that file's permissions, a new one gets the usual
+    // 0644, so the result reads like any file the user wrote.
+    let permissions = match std::fs::metadata(path) {
+        Ok(m) => Some(m.permissions()),
+        Err(_) => default_permissions(),
+    };
+    if let Some(p) = permissions {
+        tmp.as_file().set_permissions(p).map_err(io)?;
+    }
     tmp.persist(path).map_err(|e| io(e.error))?;
     Ok(())
+}
+
+#[cfg(unix)]
+fn default_permissions() -> Option<std::fs::Permissions> {
+    use std::os::unix::fs::PermissionsExt;
+    Some(std::fs::Permissions::from_mode(0o644))
+}
+
+#[cfg(not(unix))]
+fn default_permissions() -> Option<std::fs::Permissions> {
+    None
 }
 
 fn encode_png(
@@ -171,6 +192,21 @@ mod tests {
         }
         // Only the outputs remain: no temporary files left behind.
         assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 5);
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn outputs_are_not_left_private() {
+        use std::os::unix::fs::PermissionsExt;
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("new.png");
+        write_image(&tiny(), &path, SampleDepth::Eight).unwrap();
+        let mode = |p: &Path| std::fs::metadata(p).unwrap().permissions().mode() & 0o777;
+        assert_eq!(mode(&path), 0o644);
+        // Replacing a file keeps its permissions.
+        std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o640)).unwrap();
+        write_image(&tiny(), &path, SampleDepth::Eight).unwrap();
+        assert_eq!(mode(&path), 0o640);
     }
 
     #[test]
