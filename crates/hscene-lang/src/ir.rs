@@ -5,7 +5,8 @@
 //! carries no source text and no spans; the renderer needs nothing else.
 
 use hgeom::{
-    ConvexPolygon, HCylinder, HPlane, HSphere, Horosphere, IdealPoint, Point, Polyhedron, Rod,
+    ConvexPolygon, HCylinder, HPlane, HSphere, Horosphere, IdealPoint, Isometry, Point, Polyhedron,
+    Rod,
 };
 
 /// A linear RGB triple.
@@ -105,6 +106,9 @@ pub struct Settings {
     pub background: Rgb,
     /// Ambient light intensity `I_a`.
     pub ambient: Rgb,
+    /// Number of animation frames (`frames = N`); 1 for a still scene.
+    /// Invariant: at least 1.
+    pub frames: u32,
 }
 
 /// The observer.
@@ -142,6 +146,35 @@ pub struct Material {
     pub shininess: f64,
     /// Index of refraction.
     pub refraction: f64,
+    /// A pattern that replaces the diffuse and ambient reflectances in part
+    /// of the surface; `None` for a uniform material.
+    pub texture: Option<Texture>,
+}
+
+/// The pattern of a [`Texture`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Pattern {
+    /// A solid checker: the object's local space is cut into cells of side
+    /// `scale` in Fermi coordinates (`hgeom::fermi_coordinates`), and the
+    /// cells whose integer coordinates have an odd sum take the texture's
+    /// colours.
+    Checker,
+}
+
+/// A solid texture, fixed in its object's local frame ([`Object::frame`]),
+/// so it moves with the object.
+///
+/// Invariant: `scale` positive and finite.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Texture {
+    /// Which pattern.
+    pub pattern: Pattern,
+    /// The cell size: a hyperbolic length.
+    pub scale: f64,
+    /// Diffuse reflectance in the pattern's second colour.
+    pub diffuse: Rgb,
+    /// Ambient reflectance in the pattern's second colour.
+    pub ambient: Rgb,
 }
 
 /// Index into [`Scene::materials`].
@@ -159,6 +192,12 @@ pub struct Light {
     pub specular: Rgb,
     /// The light's name (`sun: %1, ...;`), if it has one.
     pub name: Option<String>,
+    /// Hyperbolic radius of a spherical area light (`radius = r`); 0 for a
+    /// point light. Invariant: finite and non-negative.
+    pub radius: f64,
+    /// Shadow rays per shading point for an area light (`samples = n`);
+    /// 1 for a point light. Invariant: at least 1.
+    pub samples: u32,
 }
 
 /// The geometry of a scene object.
@@ -197,6 +236,13 @@ pub struct Object {
     /// `edges = t` gives its faces and its edges (a wireframe), a
     /// tessellation one polyhedron per cell; they share the name.
     pub name: Option<String>,
+    /// The object's local frame: the isometry from its local space to the
+    /// world. Textures are fixed in the local space. It is the identity for
+    /// objects given by world points (polygons, planes, rods, cylinders,
+    /// horospheres), the translation from the origin to the centre for a
+    /// sphere, the `at` translation for figures and meshes (built about the
+    /// origin), each followed by the object's own `@name` transformations.
+    pub frame: Isometry,
 }
 
 /// The final position of a declared point, for inspection (`--emit ir`).
@@ -234,4 +280,6 @@ pub struct Scene {
     pub objects: Vec<Object>,
     /// Every declared point with its final position.
     pub points: Vec<PointRecord>,
+    /// Which animation frame this is (0-based, below `settings.frames`).
+    pub frame: u32,
 }

@@ -72,6 +72,7 @@ fn default_settings() -> Settings {
         net: Net::Euclidean,
         background: Rgb::BLACK,
         ambient: Rgb::new(0.1, 0.1, 0.1),
+        frames: 1,
     }
 }
 
@@ -215,6 +216,7 @@ pub(crate) fn lower(file: &SourceFile, source: &str, diags: &mut Vec<Diagnostic>
                 })
             })
             .collect(),
+        frame: 0,
     })
 }
 
@@ -229,6 +231,7 @@ fn default_material(name: Option<String>) -> Material {
         transmission: 0.0,
         shininess: 1.0,
         refraction: 1.0,
+        texture: None,
     }
 }
 
@@ -596,6 +599,8 @@ impl Lowerer<'_> {
                 diffuse,
                 specular,
                 name: st.label.as_ref().map(|l| l.text.clone()),
+                radius: 0.0,
+                samples: 1,
             },
             st.span,
         ));

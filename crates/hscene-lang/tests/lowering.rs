@@ -288,6 +288,7 @@ fn appendix_a_compiles_with_one_warning() {
             net: Net::Euclidean,
             background: Rgb::BLACK,
             ambient: Rgb::new(0.1, 0.1, 0.1),
+            frames: 1,
         }
     );
     assert_eq!(scene.camera.eye, Point::ORIGIN);
@@ -560,6 +561,7 @@ fn empty_file_gets_the_documented_defaults() {
                 net: Net::Euclidean,
                 background: Rgb::new(0.0, 0.0, 0.0),
                 ambient: Rgb::new(0.1, 0.1, 0.1),
+                frames: 1,
             }
         );
         assert_eq!(
@@ -632,6 +634,7 @@ fn material_fields_default_when_absent() {
             transmission: 0.0,
             shininess: 1.0,
             refraction: 1.0,
+            texture: None,
         }
     );
 }

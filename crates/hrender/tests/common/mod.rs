@@ -41,6 +41,7 @@ pub fn matte(r: f64, g: f64, b: f64) -> Material {
         transmission: 0.0,
         shininess: 20.0,
         refraction: 1.0,
+        texture: None,
     }
 }
 
@@ -55,6 +56,7 @@ pub fn flat(r: f64, g: f64, b: f64) -> Material {
         transmission: 0.0,
         shininess: 1.0,
         refraction: 1.0,
+        texture: None,
     }
 }
 
@@ -73,6 +75,7 @@ pub fn settings(net: Net, size: u32, window: f64) -> Settings {
         net,
         background: Rgb::new(0.05, 0.05, 0.1),
         ambient: Rgb::new(0.2, 0.2, 0.2),
+        frames: 1,
     }
 }
 
@@ -92,6 +95,8 @@ pub fn light(at: Point, intensity: f64) -> Light {
         diffuse: Rgb::new(intensity, intensity, intensity),
         specular: Rgb::new(intensity, intensity, intensity),
         name: None,
+        radius: 0.0,
+        samples: 1,
     }
 }
 
@@ -101,6 +106,7 @@ pub fn obj(shape: Shape, m: usize) -> Object {
         shape,
         material: MaterialId(m),
         name: None,
+        frame: hgeom::Isometry::IDENTITY,
     }
 }
 
@@ -119,6 +125,7 @@ pub fn scene(
         lights,
         objects,
         points: Vec::new(),
+        frame: 0,
     }
 }
 

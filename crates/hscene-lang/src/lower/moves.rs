@@ -102,7 +102,11 @@ impl Lowerer<'_> {
                 TargetSlot::Objects(indices) => {
                     for i in indices {
                         match transform_shape(&self.objects[i].0.shape, &iso) {
-                            Some(s) => self.objects[i].0.shape = s,
+                            Some(s) => {
+                                let object = &mut self.objects[i].0;
+                                object.shape = s;
+                                object.frame = iso.compose(&object.frame);
+                            }
                             None => {
                                 self.out_of_range(&target, "this object");
                                 break;
