@@ -9,8 +9,8 @@ use std::hint::black_box;
 use criterion::{Criterion, criterion_group, criterion_main};
 use hgeom::glam::DVec3;
 use hgeom::{
-    ConvexPolygon, HCylinder, HLine, HPlane, HSphere, Horosphere, IdealPoint, Platonic, Point,
-    Polyhedron, Ray, Rod,
+    ConvexPolygon, HCylinder, HLine, HPlane, HSphere, Horosphere, IdealPoint, Isometry, Platonic,
+    Point, Polyhedron, Ray, Rod, TriangleMesh,
 };
 
 fn rays(n: usize) -> Vec<Ray> {
@@ -68,6 +68,105 @@ fn kernels(c: &mut Criterion) {
     });
 }
 
+/// A latitude-longitude sphere of hyperbolic radius `radius` about the
+/// origin: `rings` circles of `segments` vertices between the poles,
+/// `2 segments rings` triangles, wound outward.
+fn sphere_mesh(rings: u32, segments: u32, radius: f64) -> TriangleMesh {
+    let at = |d: DVec3| Point::at_distance_from_origin(d, radius).unwrap();
+    let mut vertices = vec![at(DVec3::Z), at(-DVec3::Z)];
+    for i in 1..=rings {
+        let theta = std::f64::consts::PI * f64::from(i) / f64::from(rings + 1);
+        for j in 0..segments {
+            let phi = std::f64::consts::TAU * f64::from(j) / f64::from(segments);
+            let d = DVec3::new(
+                theta.sin() * phi.cos(),
+                theta.sin() * phi.sin(),
+                theta.cos(),
+            );
+            vertices.push(at(d));
+        }
+    }
+    let ring = |i: u32, j: u32| 2 + (i - 1) * segments + j % segments;
+    let mut triangles = Vec::new();
+    for j in 0..segments {
+        triangles.push([0, ring(1, j), ring(1, j + 1)]);
+        triangles.push([1, ring(rings, j + 1), ring(rings, j)]);
+        for i in 1..rings {
+            let (a, b) = (ring(i, j), ring(i, j + 1));
+            let (c, d) = (ring(i + 1, j), ring(i + 1, j + 1));
+            triangles.push([a, c, d]);
+            triangles.push([a, d, b]);
+        }
+    }
+    TriangleMesh::new(vertices, triangles).expect("a valid sphere mesh")
+}
+
+/// A 2016-triangle sphere-like mesh: the BVH against testing every
+/// triangle, for rays from the origin inside it (every ray hits) and for the
+/// mesh moved 2 away (most rays hit; the others are culled by the boxes).
+fn mesh(c: &mut Criterion) {
+    let rs = rays(1024);
+    let sphere = sphere_mesh(24, 42, 1.0);
+    assert_eq!(sphere.triangle_count(), 2016);
+    let away =
+        Isometry::transvection_from_origin(Point::at_distance_from_origin(DVec3::Z, 2.0).unwrap());
+    let far = sphere.transformed(&away);
+    let mut group = c.benchmark_group("mesh");
+    group.bench_function("bvh_x1024", |b| {
+        b.iter(|| {
+            rs.iter()
+                .filter(|r| {
+                    sphere
+                        .intersect(black_box(r), 1e-9, f64::INFINITY)
+                        .is_some()
+                })
+                .count()
+        })
+    });
+    group.bench_function("brute_force_x1024", |b| {
+        b.iter(|| {
+            rs.iter()
+                .filter(|r| {
+                    sphere
+                        .intersect_exhaustive(black_box(r), 1e-9, f64::INFINITY)
+                        .is_some()
+                })
+                .count()
+        })
+    });
+    group.bench_function("blocks_x1024", |b| {
+        b.iter(|| {
+            rs.iter()
+                .filter(|r| sphere.blocks(black_box(r), 1e-9, f64::INFINITY))
+                .count()
+        })
+    });
+    group.bench_function("moved_bvh_x1024", |b| {
+        b.iter(|| {
+            rs.iter()
+                .filter(|r| far.intersect(black_box(r), 1e-9, f64::INFINITY).is_some())
+                .count()
+        })
+    });
+    group.bench_function("moved_brute_force_x1024", |b| {
+        b.iter(|| {
+            rs.iter()
+                .filter(|r| {
+                    far.intersect_exhaustive(black_box(r), 1e-9, f64::INFINITY)
+                        .is_some()
+                })
+                .count()
+        })
+    });
+    group.bench_function("build_2016", |b| {
+        b.iter(|| sphere_mesh(24, 42, black_box(1.0)).triangle_count())
+    });
+    group.bench_function("transformed", |b| {
+        b.iter(|| sphere.transformed(black_box(&away)).triangle_count())
+    });
+    group.finish();
+}
+
 fn appendix_render(c: &mut Criterion) {
     let source = include_str!("../scenes/thesis-appendix-a.hsc");
     let scene = hscene_lang::compile(source)
@@ -88,5 +187,5 @@ fn appendix_render(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, kernels, appendix_render);
+criterion_group!(benches, kernels, mesh, appendix_render);
 criterion_main!(benches);

@@ -51,6 +51,11 @@ pub struct RenderArgs {
     /// quantisation (and in float TIFF output).
     #[arg(long, value_name = "EV", default_value_t = 0.0, allow_negative_numbers = true, value_parser = parse_exposure)]
     pub exposure: f64,
+    /// Render only this animation frame (0-based) to exactly OUTPUT. Without
+    /// it, a scene with `frames = N` (N > 1) renders every frame to
+    /// OUTPUT-0000.png, OUTPUT-0001.png, ...
+    #[arg(long, value_name = "K")]
+    pub frame: Option<u32>,
 }
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -75,6 +80,9 @@ pub struct CheckArgs {
     /// scene to stdout (schema: docs/ir-schema.md); diagnostics then go to stderr.
     #[arg(long, value_name = "WHAT")]
     pub emit: Option<Emit>,
+    /// The animation frame (0-based) to check and emit; default 0.
+    #[arg(long, value_name = "K", default_value_t = 0)]
+    pub frame: u32,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]

@@ -26,7 +26,9 @@ pub fn scene_to_json(path: &Path, scene: &Scene) -> Value {
             "net_type": s.net.index(),
             "background": rgb(s.background),
             "ambient": rgb(s.ambient),
+            "frames": s.frames,
         },
+        "frame": scene.frame,
         "camera": camera(&scene.camera),
         "points": scene.points.iter().map(|p| {
             let (position, ideal) = match p.position {
@@ -81,6 +83,11 @@ fn material(i: usize, m: &Material) -> Value {
         "trans": m.transmission,
         "shininess": m.shininess,
         "refraction": m.refraction,
+        "checker": m.texture.map(|t| json!({
+            "size": t.scale,
+            "diffuse": rgb(t.diffuse),
+            "ambient": rgb(t.ambient),
+        })),
     })
 }
 
@@ -91,6 +98,18 @@ fn light(i: usize, l: &Light) -> Value {
         "position": point(&l.position),
         "diffuse": rgb(l.diffuse),
         "specular": rgb(l.specular),
+        "radius": l.radius,
+        "samples": l.samples,
+    })
+}
+
+/// An isometry `x -> a (+) Q x`: the Möbius translation part `a` (where
+/// the origin goes) and the rotation `Q`, row by row.
+fn isometry(iso: &hgeom::Isometry) -> Value {
+    let q = iso.linear_part().transpose();
+    json!({
+        "translation": point(&iso.translation_part()),
+        "rotation": [vec3(q.x_axis), vec3(q.y_axis), vec3(q.z_axis)],
     })
 }
 
@@ -107,6 +126,7 @@ fn object(i: usize, o: &Object) -> Value {
         "number": i + 1,
         "name": o.name,
         "material": o.material.0 + 1,
+        "frame": isometry(&o.frame),
     });
     let (kind, params) = match &o.shape {
         Shape::Sphere(s) => {
@@ -169,6 +189,14 @@ fn object(i: usize, o: &Object) -> Value {
         Shape::Wireframe(rods) => (
             "wireframe",
             json!({ "rods": rods.iter().map(rod).collect::<Vec<_>>() }),
+        ),
+        Shape::Mesh(m) => (
+            "mesh",
+            json!({
+                "vertices": m.vertices().iter().map(point).collect::<Vec<_>>(),
+                "triangles": m.triangles().iter().map(|t| json!(t)).collect::<Vec<_>>(),
+                "dropped_triangles": m.dropped_triangles(),
+            }),
         ),
     };
     if let (Value::Object(out), Value::Object(params)) = (&mut v, params) {

@@ -29,6 +29,14 @@ fn main() -> ExitCode {
     }
 }
 
+/// Mesh files are found relative to the scene file.
+fn compile_options(scene: &Path, frame: u32) -> hscene_lang::Options {
+    hscene_lang::Options {
+        base_dir: scene.parent().map(Path::to_path_buf),
+        frame,
+    }
+}
+
 fn read_scene(path: &Path) -> Result<String, ExitCode> {
     std::fs::read_to_string(path).map_err(|e| {
         eprintln!("error: cannot read {}: {e}", path.display());
@@ -60,7 +68,7 @@ fn check(args: &CheckArgs) -> ExitCode {
                 continue;
             }
         };
-        let compiled = hscene_lang::compile(&source);
+        let compiled = hscene_lang::compile_with(&source, &compile_options(path, args.frame));
         any_errors |= compiled.has_errors();
         let text =
             report::format_diagnostics(path, &source, &compiled.diagnostics, format, diag_tty);
@@ -97,7 +105,8 @@ fn render(args: &RenderArgs) -> ExitCode {
         return ExitCode::from(EXIT_USAGE_OR_IO);
     }
     let stderr_tty = std::io::stderr().is_terminal();
-    let compiled = hscene_lang::compile(&source);
+    let first = args.frame.unwrap_or(0);
+    let compiled = hscene_lang::compile_with(&source, &compile_options(&args.scene, first));
     if !compiled.diagnostics.is_empty() {
         let format = if stderr_tty {
             Format::Human
@@ -118,6 +127,72 @@ fn render(args: &RenderArgs) -> ExitCode {
     let Some(scene) = compiled.scene else {
         return ExitCode::from(EXIT_SCENE_ERRORS);
     };
+    let frames = scene.settings.frames;
+    if let Some(k) = args.frame
+        && k >= frames
+    {
+        eprintln!(
+            "error: --frame {k} is past the scene's last frame ({} of `frames = {frames}`, counted from 0)",
+            frames - 1
+        );
+        return ExitCode::from(EXIT_USAGE_OR_IO);
+    }
+    if args.frame.is_some() || frames == 1 {
+        return render_frame(args, &scene, &args.output, stderr_tty);
+    }
+    // Every frame, each compiled on its own: the animated transformations
+    // are applied per frame. Diagnostics were shown for frame 0; those of
+    // later frames are shown only if they are errors.
+    for k in 0..frames {
+        let scene = if k == 0 {
+            scene.clone()
+        } else {
+            let compiled = hscene_lang::compile_with(&source, &compile_options(&args.scene, k));
+            match compiled.scene {
+                Some(s) => s,
+                None => {
+                    eprintln!("error: frame {k}:");
+                    eprint!(
+                        "{}",
+                        report::format_diagnostics(
+                            &args.scene,
+                            &source,
+                            &compiled.diagnostics,
+                            Format::Short,
+                            false
+                        )
+                    );
+                    return ExitCode::from(EXIT_SCENE_ERRORS);
+                }
+            }
+        };
+        let code = render_frame(args, &scene, &frame_path(&args.output, k), stderr_tty);
+        if code != ExitCode::SUCCESS {
+            return code;
+        }
+    }
+    ExitCode::SUCCESS
+}
+
+/// `out.png` -> `out-0007.png` for frame 7 (at least four digits).
+fn frame_path(output: &Path, frame: u32) -> std::path::PathBuf {
+    let stem = output
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let name = match output.extension() {
+        Some(ext) => format!("{stem}-{frame:04}.{}", ext.to_string_lossy()),
+        None => format!("{stem}-{frame:04}"),
+    };
+    output.with_file_name(name)
+}
+
+fn render_frame(
+    args: &RenderArgs,
+    scene: &hscene_lang::ir::Scene,
+    output: &Path,
+    stderr_tty: bool,
+) -> ExitCode {
     let options = RenderOptions {
         net: args.net.and_then(|n| Net::from_index(u64::from(n))),
         resolution: args
@@ -149,7 +224,7 @@ fn render(args: &RenderArgs) -> ExitCode {
             bar.set_position(u64::from(rows));
         }
     };
-    let rendered = match hrender::render(&scene, &options, &progress) {
+    let rendered = match hrender::render(scene, &options, &progress) {
         Ok(r) => r,
         Err(e) => {
             eprintln!("error: {e}");
@@ -173,7 +248,7 @@ fn render(args: &RenderArgs) -> ExitCode {
         Depth::Sixteen => SampleDepth::Sixteen,
         Depth::Float32 => SampleDepth::Float32,
     };
-    if let Err(e) = hrender::write_image(&rendered.image, &args.output, depth) {
+    if let Err(e) = hrender::write_image(&rendered.image, output, depth) {
         eprintln!("error: {e}");
         return ExitCode::from(EXIT_USAGE_OR_IO);
     }
@@ -187,7 +262,7 @@ fn render(args: &RenderArgs) -> ExitCode {
         let secs = started.elapsed().as_secs_f64();
         eprintln!(
             "wrote {} ({}x{}, {} rays in {secs:.2} s)",
-            args.output.display(),
+            output.display(),
             rendered.image.width(),
             rendered.image.height(),
             rendered.stats.rays

@@ -86,6 +86,22 @@ pub enum GeomError {
         /// The cell budget.
         limit: usize,
     },
+    /// A mesh triangle refers to a vertex that does not exist.
+    #[error("triangle {triangle} refers to vertex {index}, but the mesh has {vertices} vertices")]
+    MeshIndexOutOfRange {
+        /// Zero-based index of the offending triangle.
+        triangle: usize,
+        /// The vertex index it gives.
+        index: u32,
+        /// How many vertices there are.
+        vertices: usize,
+    },
+    /// A mesh needs vertices and at least one triangle of non-zero area.
+    #[error("the mesh has no triangle of non-zero area ({dropped} degenerate triangles dropped)")]
+    EmptyMesh {
+        /// How many degenerate triangles were dropped.
+        dropped: usize,
+    },
 }
 
 /// `Ok` for a positive finite length (a radius, side or circumradius), else

@@ -78,8 +78,10 @@
 //! | `polygon` | [`ConvexPolygon`]: validation, edge planes, ray intersection |
 //! | `polygons` | predefined polygons: regular, ideal, Lambert, Saccheri |
 //! | `polyhedron` | [`Polyhedron`], [`Platonic`] solids, uniform and star figures, [`unique_edges`] |
+//! | `mesh` | [`TriangleMesh`]: triangle meshes with a Klein-coordinate BVH and a watertight exact test |
 //! | `honeycomb` | the {4,3,5} cube and tessellation by reflections |
 //! | `error` | [`GeomError`] |
+//! | `fermi` | [`fermi_coordinates`] about the origin and their inverse (solid textures) |
 
 // `!(x > 0.0)` is deliberate throughout: it sends NaN down the failure path,
 // which `x <= 0.0` would not.
@@ -90,11 +92,13 @@ pub mod accurate;
 mod cylinder;
 mod distance;
 mod error;
+mod fermi;
 mod honeycomb;
 mod horosphere;
 mod isometry;
 mod line;
 pub mod lorentz;
+mod mesh;
 pub mod mobius;
 mod plane;
 mod point;
@@ -110,6 +114,7 @@ mod sphere;
 pub use cylinder::HCylinder;
 pub use distance::distance;
 pub use error::GeomError;
+pub use fermi::{fermi_coordinates, from_fermi_coordinates};
 pub use honeycomb::{
     CUBE_435_DIHEDRAL, HoneycombCell, MAX_TESSELLATION_CELLS, SAME_CELL_DISTANCE, cube_435,
     cube_435_circumradius, honeycomb_435, tessellate,
@@ -117,6 +122,7 @@ pub use honeycomb::{
 pub use horosphere::Horosphere;
 pub use isometry::Isometry;
 pub use line::HLine;
+pub use mesh::TriangleMesh;
 pub use plane::{BallShape, HPlane};
 pub use point::{IdealPoint, Point, Vertex};
 pub use polygon::ConvexPolygon;

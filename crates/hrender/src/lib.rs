@@ -41,7 +41,7 @@ pub use error::RenderError;
 pub use image::Image;
 pub use nets::{PixelNet, Sample};
 pub use output::{ImageFormat, SampleDepth, write_image};
-pub use sampling::Sampler;
+pub use sampling::{SampleStream, Sampler};
 pub use scene::{Nearest, PreparedScene};
 pub use tracer::{TraceStats, Tracer};
 
@@ -164,12 +164,20 @@ struct Frame<'a> {
 }
 
 impl Frame<'_> {
-    /// The colour of one net sample, and whether it had a numeric failure.
-    fn shade(&self, sample: Sample, stats: &mut TraceStats) -> (Color, bool) {
+    /// The colour of one net sample, and whether it had a numeric failure;
+    /// area lights draw their sample points from `stream`.
+    fn shade(
+        &self,
+        sample: Sample,
+        stream: &mut SampleStream,
+        stats: &mut TraceStats,
+    ) -> (Color, bool) {
         match sample {
             Sample::Ray(dir) => {
                 let before = stats.failures;
-                let c = self.tracer.primary(&Ray::from_origin(dir), stats);
+                let c = self
+                    .tracer
+                    .primary_sampled(&Ray::from_origin(dir), stream, stats);
                 (c, stats.failures > before)
             }
             Sample::Outside => (self.background, false),
@@ -193,7 +201,10 @@ impl Frame<'_> {
                         Net::EquidistantInterpolated => {
                             self.interpolated(sx, sy, &mut nodes, stats)
                         }
-                        _ => self.shade(self.pixel_net.sample(sx, sy), stats),
+                        _ => {
+                            let mut stream = self.sampler.stream(i, j, k);
+                            self.shade(self.pixel_net.sample(sx, sy), &mut stream, stats)
+                        }
                     };
                     sum += c;
                     failed |= f;
@@ -265,7 +276,10 @@ impl Frame<'_> {
                     let sample = self
                         .pixel_net
                         .equidistant_node((ni + 0.5) * da, (nk + 0.5) * db);
-                    let shaded = self.shade(sample, stats);
+                    // A node's light samples depend on the node, not on
+                    // the pixel that first needs it.
+                    let mut stream = self.sampler.node_stream(key.0, key.1);
+                    let shaded = self.shade(sample, &mut stream, stats);
                     nodes.0.insert(key, shaded);
                     shaded
                 }

@@ -3,10 +3,11 @@
 //! and bounding h-spheres around everything finite, in a hierarchy, so a ray
 //! pays the exact intersection only for what it may actually meet.
 
-use hgeom::glam::DVec4;
+use hgeom::glam::{DVec3, DVec4};
 use hgeom::lorentz;
 use hgeom::{
-    ConvexPolygon, HCylinder, HPlane, HSphere, Hit, Horosphere, Isometry, Ray, Rod, Vertex,
+    ConvexPolygon, HCylinder, HPlane, HSphere, Hit, Horosphere, Isometry, Point, Ray, Rod,
+    TriangleMesh, Vertex,
 };
 use hscene_lang::ir::{self, Material, Rgb, Scene};
 
@@ -39,6 +40,9 @@ pub enum Primitive {
     Horosphere(Horosphere),
     /// A set of rods, with a hierarchy over them.
     Wireframe(Composite<Rod>),
+    /// A triangle mesh, with its own hierarchy (in Klein coordinates of the
+    /// mesh's local frame; boxed: the mesh's header is large).
+    Mesh(Box<TriangleMesh>),
 }
 
 /// What a composite primitive is made of.
@@ -285,6 +289,7 @@ impl Primitive {
             ir::Shape::Wireframe(rods) => Primitive::Wireframe(Composite::new(
                 rods.iter().map(|r| r.transformed(iso)).collect(),
             )),
+            ir::Shape::Mesh(m) => Primitive::Mesh(Box::new(m.transformed(iso))),
         }
     }
 
@@ -313,6 +318,14 @@ impl Primitive {
                 c.is_finite() && r.is_finite()
             }
             Primitive::Wireframe(w) => w.parts().iter().all(rod_ok),
+            // The placement's translation part is the mesh's centre; the
+            // vertices are within the bounding radius of it.
+            Primitive::Mesh(m) => {
+                let (centre, radius) = m.bounding_ball();
+                m.placement().translation_part().is_representable()
+                    && centre.is_finite()
+                    && radius.is_finite()
+            }
         }
     }
 
@@ -324,6 +337,10 @@ impl Primitive {
             Primitive::Polyhedron(p) => p.accel.bound(),
             Primitive::Rod(r) => rod_bound(r),
             Primitive::Wireframe(w) => w.accel.bound(),
+            Primitive::Mesh(m) => {
+                let (centre, radius) = m.bounding_ball();
+                Bound::new(centre, radius)
+            }
             Primitive::Plane(_) | Primitive::Cylinder(_) | Primitive::Horosphere(_) => None,
         }
     }
@@ -340,6 +357,7 @@ impl Primitive {
             Primitive::Cylinder(c) => c.intersect(ray, t_min, t_max),
             Primitive::Horosphere(h) => h.intersect(ray, t_min, t_max),
             Primitive::Wireframe(w) => w.intersect(ray, t_min, t_max),
+            Primitive::Mesh(m) => m.intersect(ray, t_min, t_max),
         }
     }
 
@@ -350,6 +368,7 @@ impl Primitive {
         match self {
             Primitive::Polyhedron(p) => p.blocks(ray, t_min, t_max),
             Primitive::Wireframe(w) => w.blocks(ray, t_min, t_max),
+            Primitive::Mesh(m) => m.blocks(ray, t_min, t_max),
             _ => self.intersect(ray, t_min, t_max).is_some(),
         }
     }
@@ -362,17 +381,24 @@ pub struct PreparedObject {
     pub primitive: Primitive,
     /// Index into the materials.
     pub material: usize,
+    /// From the canonical frame to the object's local space, where its
+    /// texture is fixed: `(to_canonical ∘ frame)^-1`.
+    pub to_local: Isometry,
 }
 
-/// A point light on the hyperboloid.
+/// A light on the hyperboloid: a point, or an h-sphere about it.
 #[derive(Clone, Copy, Debug)]
 pub struct PreparedLight {
-    /// Position.
+    /// Position (the centre of an area light).
     pub position: DVec4,
     /// Diffuse intensity.
     pub diffuse: Rgb,
     /// Specular intensity.
     pub specular: Rgb,
+    /// Hyperbolic radius of an area light; 0 for a point light.
+    pub radius: f64,
+    /// Shadow rays per shading point for an area light (at least 1).
+    pub samples: u32,
 }
 
 /// The outcome of looking for the nearest hit.
@@ -433,19 +459,49 @@ impl PreparedScene {
             objects.push(PreparedObject {
                 primitive,
                 material: o.material.0,
+                to_local: to_canonical.compose(&o.frame).inverse(),
             });
+        }
+        for (index, m) in scene.materials.iter().enumerate() {
+            let bad_scale = m
+                .texture
+                .map(|t| t.scale)
+                .filter(|s| !(*s > 0.0 && s.is_finite()));
+            if let Some(scale) = bad_scale {
+                return Err(RenderError::InvalidScene(format!(
+                    "material {} has a texture scale of {scale}; it must be positive and finite",
+                    index + 1,
+                )));
+            }
         }
         let mut lights = Vec::with_capacity(scene.lights.len());
         for (index, l) in scene.lights.iter().enumerate() {
+            if !(l.radius >= 0.0 && l.radius.is_finite()) || l.samples == 0 {
+                return Err(RenderError::InvalidScene(format!(
+                    "light {} has radius {} and {} samples; the radius must be finite and \
+                     non-negative, the samples at least 1",
+                    index + 1,
+                    l.radius,
+                    l.samples
+                )));
+            }
+            let out_of_range = || RenderError::OutOfRange {
+                what: format!("light {}", index + 1),
+            };
             let p = to_canonical
                 .try_apply(&l.position)
-                .map_err(|_| RenderError::OutOfRange {
-                    what: format!("light {}", index + 1),
-                })?;
+                .map_err(|_| out_of_range())?;
+            // Every point of an area light must be placeable too.
+            if l.radius > 0.0 {
+                Point::at_distance_from_origin(DVec3::Z, p.distance_from_origin() + l.radius)
+                    .map_err(|_| out_of_range())?;
+            }
             lights.push(PreparedLight {
                 position: p.to_hyperboloid(),
                 diffuse: l.diffuse,
                 specular: l.specular,
+                radius: l.radius,
+                samples: l.samples,
             });
         }
         // One leaf per object, so a shadow ray meets each object once.
@@ -507,8 +563,6 @@ impl PreparedScene {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use hgeom::Point;
-    use hgeom::glam::DVec3;
 
     fn p(x: f64, y: f64, z: f64) -> Point {
         Point::try_new(DVec3::new(x, y, z)).unwrap()

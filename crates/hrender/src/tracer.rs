@@ -1,15 +1,18 @@
 //! Whitted ray tracing with the Phong model and hyperbolic attenuation
-//! (SPEC 3.3, thesis Eq. 4, 7 and 9).
+//! (SPEC 3.3, thesis Eq. 4, 7 and 9), solid checker textures and spherical
+//! area lights (soft shadows).
 
-use std::f64::consts::PI;
+use std::f64::consts::{PI, TAU};
 
-use hgeom::Ray;
 use hgeom::glam::DVec4;
 use hgeom::lorentz;
 use hgeom::ray::{reflect, refract};
+use hgeom::{Hit, Point, Ray, fermi_coordinates};
+use hscene_lang::ir::{Material, Pattern, Rgb, Texture};
 
 use crate::color::Color;
-use crate::scene::{Nearest, PreparedScene};
+use crate::sampling::SampleStream;
+use crate::scene::{Nearest, PreparedLight, PreparedObject, PreparedScene};
 
 /// Secondary rays ignore hits closer than this (hyperbolic length), so a ray
 /// leaving a surface does not hit the same surface at its own origin.
@@ -20,6 +23,10 @@ const UNIT_TOLERANCE: f64 = 1e-2;
 
 /// Rays whose weight in the final pixel falls below this are not traced.
 const MIN_WEIGHT: f64 = 1e-3;
+
+/// The golden ratio's fractional part: successive area-light samples turn
+/// by this share of a full turn about the axis towards the shading point.
+const GOLDEN_TURN: f64 = 0.618_033_988_749_894_8;
 
 /// Per-ray outcome counters.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -53,9 +60,24 @@ impl<'s> Tracer<'s> {
         Tracer { scene }
     }
 
-    /// Radiance along a primary ray.
+    /// Radiance along a primary ray, with area lights sampled from a fixed
+    /// stream ([`Tracer::primary_sampled`] takes the pixel sample's own).
     pub fn primary(&self, ray: &Ray, stats: &mut TraceStats) -> Color {
-        let c = self.trace(ray, 0, 1.0, stats);
+        self.primary_sampled(ray, &mut SampleStream::new(0), stats)
+    }
+
+    /// Radiance along a primary ray; the points sampled on area lights are
+    /// drawn from `stream` (the renderer passes
+    /// [`Sampler::stream`](crate::Sampler::stream) of the pixel sample, so
+    /// the image does not depend on the thread count). Point lights draw
+    /// nothing.
+    pub fn primary_sampled(
+        &self,
+        ray: &Ray,
+        stream: &mut SampleStream,
+        stats: &mut TraceStats,
+    ) -> Color {
+        let c = self.trace(ray, 0, 1.0, stream, stats);
         if c.is_finite() {
             c
         } else {
@@ -66,7 +88,14 @@ impl<'s> Tracer<'s> {
 
     /// Whitted recursion:
     /// `I = k_a I_a + sum_i S_i f_att(r_i) (k_d L_d cos(theta) + k_s L_s cos^n(alpha)) + k_r I_r + k_t I_t`.
-    fn trace(&self, ray: &Ray, depth: u32, weight: f64, stats: &mut TraceStats) -> Color {
+    fn trace(
+        &self,
+        ray: &Ray,
+        depth: u32,
+        weight: f64,
+        stream: &mut SampleStream,
+        stats: &mut TraceStats,
+    ) -> Color {
         stats.rays += 1;
         let (hit, index) = match self.scene.nearest(ray, T_MIN) {
             Nearest::Miss => return self.scene.background.into(),
@@ -95,15 +124,32 @@ impl<'s> Tracer<'s> {
         // The normal on the side the ray came from, for shading.
         let n = if entering { hit.normal } else { -hit.normal };
         let p = hit.point;
+        // A texture replaces the ambient and diffuse reflectances in part of
+        // the surface; only textured materials pay for finding out where.
+        let (ambient, diffuse) = match &m.texture {
+            None => (m.ambient, m.diffuse),
+            Some(t) => texture_colours(object, m, t, &hit),
+        };
 
-        let mut color = Color::from(m.ambient).tint(self.scene.ambient.into());
+        let mut color = Color::from(ambient).tint(self.scene.ambient.into());
         let view = -d;
         // A material without diffuse and specular terms ignores the lights:
         // skip their shadow rays.
-        let lit = [m.diffuse, m.specular]
+        let lit = [diffuse, m.specular]
             .iter()
             .any(|c| c.r != 0.0 || c.g != 0.0 || c.b != 0.0);
+        let shading = Shading {
+            p,
+            n,
+            view,
+            diffuse,
+            m,
+        };
         for light in self.scene.lights.iter().filter(|_| lit) {
+            if light.radius > 0.0 {
+                color += self.area_light(light, &shading, stream, stats);
+                continue;
+            }
             // A light exactly at the hit point has no direction: it lights
             // nothing there (its attenuation would be infinite).
             let Some((to_light, dist)) = lorentz::direction_towards(p, light.position) else {
@@ -129,15 +175,7 @@ impl<'s> Tracer<'s> {
             // The area of the hyperbolic sphere of radius r is 4 pi sinh^2 r.
             let sinh = dist.sinh();
             let f_att = 1.0 / (4.0 * PI * sinh * sinh);
-            let mirrored = reflect(-to_light, n);
-            // A cosine of unit vectors: at most 1 up to the rounding that
-            // `is_unit` bounds; keep rounding from being raised to a high
-            // Phong exponent.
-            let cos_alpha = lorentz::dot(mirrored, view).clamp(0.0, 1.0);
-            let diffuse = Color::from(m.diffuse).tint(light.diffuse.into()) * cos_theta;
-            let specular =
-                Color::from(m.specular).tint(light.specular.into()) * cos_alpha.powf(m.shininess);
-            color += (diffuse + specular) * (shadow * f_att);
+            color += shading.phong(light, to_light, cos_theta) * (shadow * f_att);
         }
 
         if depth < self.scene.max_depth {
@@ -146,8 +184,8 @@ impl<'s> Tracer<'s> {
                 dir: renormalize(p, reflect(d, n)),
             };
             if m.reflection > 0.0 && weight * m.reflection > MIN_WEIGHT {
-                color +=
-                    self.trace(&reflected, depth + 1, weight * m.reflection, stats) * m.reflection;
+                color += self.trace(&reflected, depth + 1, weight * m.reflection, stream, stats)
+                    * m.reflection;
             }
             if m.transmission > 0.0 && weight * m.transmission > MIN_WEIGHT {
                 let (n1, n2) = if entering {
@@ -162,12 +200,176 @@ impl<'s> Tracer<'s> {
                     origin: p,
                     dir: renormalize(p, dir),
                 };
-                color +=
-                    self.trace(&next, depth + 1, weight * m.transmission, stats) * m.transmission;
+                color += self.trace(&next, depth + 1, weight * m.transmission, stream, stats)
+                    * m.transmission;
             }
         }
         color
     }
+
+    /// Direct light from a spherical area light: the light is the h-sphere
+    /// of radius `r` about its position, each surface element of which
+    /// emits its share of the light's power uniformly into its outer
+    /// half-space. Only the cap visible from the shading point (angle `phi`
+    /// at the centre with `cos phi >= tanh r / tanh D`, `D` the distance of
+    /// the centre) can light it; `samples` points uniform in area on that
+    /// cap, stratified in `cos phi` and turned by the golden angle, each
+    /// lit like a point light (own direction, attenuation, shadow ray),
+    /// averaged and weighted by the cap's share of the light's power,
+    /// `1 - tanh r / tanh D`. The estimate is unbiased, gives a surface
+    /// facing the light exactly the point light's `1/(4 pi sinh^2 D)`, and
+    /// tends to the point light as `r -> 0`. A shading point inside the
+    /// sphere receives nothing (the emission faces outward).
+    /// `docs/rendering.md` has the derivation.
+    fn area_light(
+        &self,
+        light: &PreparedLight,
+        at: &Shading<'_>,
+        stream: &mut SampleStream,
+        stats: &mut TraceStats,
+    ) -> Color {
+        let centre = light.position;
+        let r = light.radius;
+        // At the centre itself there is no direction: the point is inside.
+        let Some((towards, dist)) = lorentz::direction_towards(centre, at.p) else {
+            return Color::default();
+        };
+        if !(dist > r) {
+            return Color::default();
+        }
+        // 1 - tanh r / tanh D, written without cancellation.
+        let cap = (dist - r).sinh() / (dist.sinh() * r.cosh());
+        let (b1, b2) = tangent_basis(centre, towards);
+        let (sinh_r, cosh_r) = (r.sinh(), r.cosh());
+        let count = f64::from(light.samples);
+        let turn = stream.next_unit();
+        let mut sum = Color::default();
+        for k in 0..light.samples {
+            let k = f64::from(k);
+            // 1 - cos(phi), uniform over the cap (area on the sphere is
+            // proportional to 1 - cos(phi)), one sample per stratum.
+            let h = (k + stream.next_unit()) / count * cap;
+            let (cos_phi, sin_phi) = (1.0 - h, (h * (2.0 - h)).sqrt());
+            let psi = TAU * (turn + k * GOLDEN_TURN).fract();
+            let u = towards * cos_phi + (b1 * psi.cos() + b2 * psi.sin()) * sin_phi;
+            let q = cosh_r * centre + sinh_r * u;
+            // A sample that coincides with the shading point (a point on
+            // the light's surface, to rounding) has no direction; like a
+            // point light at the hit, it lights nothing there.
+            let Some((to_q, d)) = lorentz::direction_towards(at.p, q) else {
+                continue;
+            };
+            let cos_theta = lorentz::dot(at.n, to_q);
+            if !(cos_theta > 0.0) {
+                continue;
+            }
+            let cos_theta = cos_theta.min(1.0);
+            stats.rays += 1;
+            let shadow = self.scene.transmittance(
+                &Ray {
+                    origin: at.p,
+                    dir: to_q,
+                },
+                T_MIN,
+                d,
+            );
+            if shadow == 0.0 {
+                continue;
+            }
+            let sinh = d.sinh();
+            let f_att = 1.0 / (4.0 * PI * sinh * sinh);
+            sum += at.phong(light, to_q, cos_theta) * (shadow * f_att);
+        }
+        sum * (cap / count)
+    }
+}
+
+/// What the lights see of a shading point.
+struct Shading<'m> {
+    /// The hit point.
+    p: DVec4,
+    /// The normal on the side the ray came from.
+    n: DVec4,
+    /// Towards the eye (the reversed ray).
+    view: DVec4,
+    /// The diffuse reflectance there (the texture's or the material's).
+    diffuse: Rgb,
+    /// The material (specular reflectance and exponent).
+    m: &'m Material,
+}
+
+impl Shading<'_> {
+    /// Diffuse plus specular Phong terms for light arriving from the unit
+    /// tangent `to_light` with `cos_theta = <n, to_light> > 0`, before
+    /// attenuation and shadowing.
+    #[inline]
+    fn phong(&self, light: &PreparedLight, to_light: DVec4, cos_theta: f64) -> Color {
+        let mirrored = reflect(-to_light, self.n);
+        // A cosine of unit vectors: at most 1 up to the rounding that
+        // `is_unit` bounds; keep rounding from being raised to a high
+        // Phong exponent.
+        let cos_alpha = lorentz::dot(mirrored, self.view).clamp(0.0, 1.0);
+        let diffuse = Color::from(self.diffuse).tint(light.diffuse.into()) * cos_theta;
+        let specular = Color::from(self.m.specular).tint(light.specular.into())
+            * cos_alpha.powf(self.m.shininess);
+        diffuse + specular
+    }
+}
+
+/// The ambient and diffuse reflectances of a textured material at a hit:
+/// the hit taken to the object's local space, its Fermi coordinates `c`
+/// ([`fermi_coordinates`]), the cell `floor(c / scale)`; cells with an odd
+/// sum of indices take the texture's colours, the others the material's.
+/// A hit whose local point f64 cannot represent keeps the material's own
+/// colours (it is drawn, only not patterned).
+fn texture_colours(object: &PreparedObject, m: &Material, t: &Texture, hit: &Hit) -> (Rgb, Rgb) {
+    let own = (m.ambient, m.diffuse);
+    let Some(local) = Point::from_hyperboloid(hit.point).map(|w| object.to_local.apply(&w)) else {
+        return own;
+    };
+    if !local.is_representable() {
+        return own;
+    }
+    match t.pattern {
+        Pattern::Checker => {
+            if checker_is_odd(fermi_coordinates(&local), t.scale) {
+                (t.ambient, t.diffuse)
+            } else {
+                own
+            }
+        }
+    }
+}
+
+/// True when the checker cell `floor(c / scale)` of local Fermi coordinates
+/// `c` has an odd sum of indices. Indices are exact integers in f64 below
+/// 2^53 (beyond, every f64 is even); a non-finite cell counts as even.
+#[inline]
+fn checker_is_odd(c: hgeom::glam::DVec3, scale: f64) -> bool {
+    let cell = (c / scale).floor();
+    (cell.x + cell.y + cell.z).rem_euclid(2.0) == 1.0
+}
+
+/// Two unit tangents at `c` that complete the unit tangent `e` to a Lorentz
+/// orthonormal basis of the tangent space. The first is a coordinate axis
+/// projected into the tangent space and away from `e` (the axis that keeps
+/// most of its length, so the projection never degenerates); the second is
+/// orthogonal to `c`, `e` and the first.
+fn tangent_basis(c: DVec4, e: DVec4) -> (DVec4, DVec4) {
+    let project = |a: DVec4| {
+        let v = a + lorentz::dot(c, a) * c;
+        v - lorentz::dot(e, v) * e
+    };
+    let mut b1 = project(DVec4::X);
+    for a in [DVec4::Y, DVec4::Z] {
+        let v = project(a);
+        if lorentz::dot(v, v) > lorentz::dot(b1, b1) {
+            b1 = v;
+        }
+    }
+    let b1 = b1 / lorentz::norm(b1);
+    let b2 = lorentz::orthogonal_complement(c, e, b1);
+    (b1, b2 / lorentz::norm(b2))
 }
 
 /// True if the tangent vector's Lorentz norm is 1 up to a tolerance far
@@ -184,4 +386,56 @@ fn is_unit(v: DVec4) -> bool {
 fn renormalize(p: DVec4, v: DVec4) -> DVec4 {
     let t = v + lorentz::dot(p, v) * p;
     t / lorentz::norm(t)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use hgeom::glam::DVec3;
+
+    /// The checker uses the parity of the cell of the local Fermi
+    /// coordinates: the middle of the cell at the origin is even (material
+    /// colours), its neighbours along each axis odd, diagonal neighbours
+    /// even again.
+    #[test]
+    fn checker_parity_is_that_of_the_fermi_cell() {
+        let s = 0.3;
+        let middle = |i: f64, j: f64, k: f64| {
+            let c = fermi_coordinates(&hgeom::from_fermi_coordinates(
+                (DVec3::new(i, j, k) + 0.5) * s,
+            ));
+            checker_is_odd(c, s)
+        };
+        assert!(!middle(0.0, 0.0, 0.0));
+        assert!(middle(1.0, 0.0, 0.0) && middle(0.0, -1.0, 0.0) && middle(0.0, 0.0, 1.0));
+        assert!(!middle(1.0, 1.0, 0.0) && !middle(-1.0, 0.0, 1.0));
+        assert!(middle(1.0, 1.0, 1.0) && middle(-3.0, 2.0, 4.0));
+        assert!(!checker_is_odd(DVec3::new(f64::NAN, 0.0, 0.0), s));
+        assert!(!checker_is_odd(DVec3::splat(1e300), 1e-300));
+    }
+
+    /// The tangent basis is Lorentz orthonormal and tangent, also for a
+    /// centre away from the origin and every direction.
+    #[test]
+    fn tangent_basis_is_orthonormal() {
+        let centre = Point::at_distance_from_origin(DVec3::new(0.3, -1.0, 0.4), 2.5)
+            .unwrap()
+            .to_hyperboloid();
+        for e3 in [DVec3::X, DVec3::Y, DVec3::Z, DVec3::new(1.0, 2.0, -0.5)] {
+            let e =
+                hgeom::ray::hyperboloid_direction(&Point::from_hyperboloid(centre).unwrap(), e3);
+            let (b1, b2) = tangent_basis(centre, e);
+            for (a, b, expect) in [
+                (b1, b1, 1.0),
+                (b2, b2, 1.0),
+                (b1, b2, 0.0),
+                (b1, e, 0.0),
+                (b2, e, 0.0),
+                (b1, centre, 0.0),
+                (b2, centre, 0.0),
+            ] {
+                assert!((lorentz::dot(a, b) - expect).abs() < 1e-12, "{e3}");
+            }
+        }
+    }
 }

@@ -137,10 +137,14 @@ codes! {
     IdealPointRequired = "HSC0309", Error, "ideal point required";
     DegeneratePlane = "HSC0310", Error, "degenerate plane";
     ImpossibleFigure = "HSC0311", Error, "impossible figure";
+    NotAnimatable = "HSC0312", Error, "transformation cannot be animated";
     // Settings.
     ZeroResolution = "HSC0401", Error, "zero resolution";
     UnknownNetType = "HSC0402", Error, "unknown net type";
     InvalidValue = "HSC0403", Error, "invalid value";
+    // Files.
+    MeshFileUnreadable = "HSC0501", Error, "mesh file cannot be read";
+    MeshFileInvalid = "HSC0502", Error, "invalid mesh file";
     // Lints.
     UnusedPoint = "HSC1001", Warning, "unused point";
     UnusedMaterial = "HSC1002", Warning, "unused material";
@@ -149,6 +153,8 @@ codes! {
     ObjectBehindEye = "HSC1005", Warning, "object behind the eye";
     EyeInsideObject = "HSC1006", Warning, "eye inside an object";
     IneffectiveOption = "HSC1007", Warning, "option without effect";
+    StillAnimation = "HSC1008", Warning, "animation in a still scene";
+    DegenerateTriangles = "HSC1009", Warning, "degenerate mesh triangles";
 }
 
 impl Code {
@@ -315,7 +321,7 @@ mod tests {
     #[test]
     fn code_table_is_consistent() {
         assert_eq!(Code::ALL.len(), CODES.len());
-        assert_eq!(Code::ALL.len(), 40);
+        assert_eq!(Code::ALL.len(), 45);
         let mut strings = HashSet::new();
         for &(code, s, sev, title) in CODES {
             assert_eq!(code.as_str(), s);

@@ -6,7 +6,7 @@
 
 use hgeom::{
     ConvexPolygon, HCylinder, HPlane, HSphere, Horosphere, IdealPoint, Isometry, Point, Polyhedron,
-    Rod,
+    Rod, TriangleMesh,
 };
 
 /// A linear RGB triple.
@@ -222,6 +222,8 @@ pub enum Shape {
     Horosphere(Horosphere),
     /// A wireframe: the edges of a polygon or polyhedron as rods.
     Wireframe(Vec<Rod>),
+    /// A triangle mesh (from an OBJ or PLY file).
+    Mesh(TriangleMesh),
 }
 
 /// A renderable object.

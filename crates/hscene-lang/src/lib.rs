@@ -18,11 +18,12 @@
 pub mod diagnostic;
 pub mod ir;
 mod lower;
+pub mod mesh_file;
 mod parser;
 pub mod syntax;
 
 pub use diagnostic::{Code, Diagnostic, LineIndex, Severity, Span};
-pub use lower::MAX_PIXELS;
+pub use lower::{MAX_FRAMES, MAX_PIXELS};
 pub use parser::{Parsed, parse};
 
 /// The result of compiling a scene: the IR if there were no errors, and every
@@ -42,11 +43,30 @@ impl Compiled {
     }
 }
 
-/// Parse, validate and lower a scene.
+/// What [`compile_with`] needs besides the source text.
+#[derive(Clone, Debug, Default)]
+pub struct Options {
+    /// The directory that relative mesh file names are resolved from
+    /// (normally the scene file's own); `None`: the current directory.
+    pub base_dir: Option<std::path::PathBuf>,
+    /// The animation frame to lower, 0-based (`frames = N` in `Globals`);
+    /// past the last frame means the last. Every frame reports the same
+    /// diagnostics except those about where things end up (lints on the
+    /// final positions, numeric failures of the moves).
+    pub frame: u32,
+}
+
+/// Parse, validate and lower a scene: frame 0, mesh files relative to the
+/// current directory.
 pub fn compile(source: &str) -> Compiled {
+    compile_with(source, &Options::default())
+}
+
+/// Parse, validate and lower a scene with explicit [`Options`].
+pub fn compile_with(source: &str, options: &Options) -> Compiled {
     let parsed = parse(source);
     let mut diagnostics = parsed.diagnostics;
-    let scene = lower::lower(&parsed.file, source, &mut diagnostics);
+    let scene = lower::lower(&parsed.file, source, options, &mut diagnostics);
     diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
     Compiled { scene, diagnostics }
 }

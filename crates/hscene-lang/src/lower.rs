@@ -12,14 +12,15 @@ mod moves;
 mod objects;
 
 use std::collections::HashMap;
+use std::path::Path;
 
 use hgeom::glam::DVec3;
 use hgeom::{HPlane, IdealPoint, Isometry, Point, Rod, Segment, Vertex, lorentz};
 
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::{
-    Camera, Light, Material, MaterialId, Net, Object, PointPosition, PointRecord, Resolution, Rgb,
-    Scene, Settings, Shape, Window,
+    Camera, Light, Material, MaterialId, Net, Object, Pattern, PointPosition, PointRecord,
+    Resolution, Rgb, Scene, Settings, Shape, Texture, Window,
 };
 use crate::syntax::{
     BrokenStatement, Clause, Ident, RefSigil, RefTarget, Reference, Section, SourceFile, Value,
@@ -53,6 +54,19 @@ const IDEAL_TOLERANCE: f64 = 1e-12;
 
 /// Largest accepted image side, to keep allocations sane.
 const MAX_RESOLUTION: u64 = 32_768;
+
+/// Most animation frames a scene may declare.
+pub const MAX_FRAMES: u32 = 100_000;
+
+/// Largest hyperbolic radius of an area light (a sphere of radius 20 is
+/// already e^20 times larger than its distance to anything inside).
+const MAX_LIGHT_RADIUS: f64 = 20.0;
+
+/// Most shadow rays per shading point for an area light.
+const MAX_LIGHT_SAMPLES: u32 = 4096;
+
+/// Shadow rays per shading point when an area light gives no `samples`.
+const DEFAULT_LIGHT_SAMPLES: u32 = 16;
 
 /// Largest accepted pixel count (about 1.6 GB of HDR samples).
 pub const MAX_PIXELS: u64 = 1 << 27;
@@ -119,6 +133,15 @@ struct Lowerer<'d> {
     point_ref_failed: bool,
     /// The same for materials.
     material_ref_failed: bool,
+    /// Where mesh file names are resolved from; `None`: the current
+    /// directory.
+    base_dir: Option<&'d Path>,
+    /// The frame being lowered, and its time in `0..=1` (the fraction of
+    /// every animated transformation applied).
+    frame: u32,
+    time: f64,
+    /// The `animate` clauses seen.
+    animations: Vec<Span>,
 }
 
 #[derive(Default)]
@@ -136,8 +159,23 @@ struct CameraParts {
 ///
 /// `source` is the text `file` was parsed from; it is used only to turn
 /// offsets into line and column numbers in messages.
-pub(crate) fn lower(file: &SourceFile, source: &str, diags: &mut Vec<Diagnostic>) -> Option<Scene> {
+pub(crate) fn lower(
+    file: &SourceFile,
+    source: &str,
+    options: &crate::Options,
+    diags: &mut Vec<Diagnostic>,
+) -> Option<Scene> {
+    let frames = declared_frames(file);
+    let frame = options.frame.min(frames - 1);
     let mut lw = Lowerer {
+        base_dir: options.base_dir.as_deref(),
+        frame,
+        time: if frames > 1 {
+            f64::from(frame) / f64::from(frames - 1)
+        } else {
+            0.0
+        },
+        animations: Vec::new(),
         diags,
         points: Vec::new(),
         point_names: HashMap::new(),
@@ -195,6 +233,18 @@ pub(crate) fn lower(file: &SourceFile, source: &str, diags: &mut Vec<Diagnostic>
     }
     lw.mark_failed_references(file);
     lw.lint_unused();
+    if lw.settings.frames == 1
+        && let Some(&at) = lw.animations.first()
+    {
+        lw.report(
+            Diagnostic::new(
+                Code::StillAnimation,
+                at,
+                "this scene has one frame, so the animated transformations stay at their start",
+            )
+            .with_help("set `frames = 48;` (say) in `Globals` to render the animation, or remove `, animate` to apply the transformation in full"),
+        );
+    }
     if lw.diags.iter().any(Diagnostic::is_error) {
         return None;
     }
@@ -216,8 +266,59 @@ pub(crate) fn lower(file: &SourceFile, source: &str, diags: &mut Vec<Diagnostic>
                 })
             })
             .collect(),
-        frame: 0,
+        frame: lw.frame,
     })
+}
+
+/// The frame count a file declares (`frames = N` in `Globals`), read before
+/// lowering because the transformations need it; 1 if absent or invalid
+/// (the invalid value is reported when `Globals` is lowered).
+fn declared_frames(file: &SourceFile) -> u32 {
+    file.sections
+        .iter()
+        .filter(|s| s.name.text == "Globals")
+        .flat_map(|s| &s.statements)
+        .flat_map(|st| &st.clauses)
+        .filter_map(|c| match c {
+            Clause::Assign {
+                key,
+                value: Value::Number { value, .. },
+                ..
+            } if key.text == "frames" => Some(*value),
+            _ => None,
+        })
+        .rfind(|x| x.fract() == 0.0 && (1.0..=f64::from(MAX_FRAMES)).contains(x))
+        .map_or(1, |x| x as u32)
+}
+
+/// The checker fields of one material statement, as given.
+#[derive(Default)]
+struct CheckerFields {
+    scale: Option<f64>,
+    diffuse: Option<Rgb>,
+    ambient: Option<Rgb>,
+}
+
+/// `c` with every channel multiplied by `k`.
+fn scaled(c: Rgb, k: f64) -> Rgb {
+    Rgb::new(c.r * k, c.g * k, c.b * k)
+}
+
+/// The translation along `line` by `fraction` of its length: the whole
+/// translation (first point to second) at 1, the identity at 0.
+fn partial_translation(line: &Segment, fraction: f64) -> Result<Isometry, hgeom::GeomError> {
+    if fraction == 1.0 {
+        return Isometry::translation(line);
+    }
+    if fraction == 0.0 {
+        return Ok(Isometry::IDENTITY);
+    }
+    let (a, b) = (line.start(), line.end());
+    let geodesic = hgeom::HLine::through(&Vertex::Interior(a), &Vertex::Interior(b))?;
+    let from = geodesic.foot_parameter(&a);
+    let to = geodesic.foot_parameter(&b);
+    let end = geodesic.point_at(from + fraction * (to - from))?;
+    Isometry::translation(&Segment::try_new(a, end)?)
 }
 
 /// A material with every field at its default.
@@ -240,7 +341,7 @@ fn each_reference<'a>(value: &'a Value, f: &mut impl FnMut(&'a Reference)) {
     match value {
         Value::Reference(r) => f(r),
         Value::Tuple { items, .. } => items.iter().for_each(|v| each_reference(v, f)),
-        Value::Number { .. } | Value::Ident(_) => {}
+        Value::Number { .. } | Value::Ident(_) | Value::Str { .. } => {}
     }
 }
 
@@ -394,6 +495,7 @@ impl Lowerer<'_> {
             }
             let mut m = default_material(st.label.as_ref().map(|l| l.text.clone()));
             let mut seen: HashMap<String, Span> = HashMap::new();
+            let mut checker = CheckerFields::default();
             for clause in &st.clauses {
                 let Clause::Assign { key, value, .. } = clause else {
                     self.report(
@@ -446,6 +548,13 @@ impl Lowerer<'_> {
                             }
                         }
                     }
+                    "checker" => {
+                        if let Some(x) = self.positive(value, "the checker cell size") {
+                            checker.scale = Some(x);
+                        }
+                    }
+                    "checker_diffuse" => checker.diffuse = self.rgb(value),
+                    "checker_ambient" => checker.ambient = self.rgb(value),
                     other => self.report(
                         Diagnostic::new(
                             Code::UnknownKey,
@@ -459,6 +568,26 @@ impl Lowerer<'_> {
                         )),
                     ),
                 }
+            }
+            m.texture = checker.scale.map(|scale| Texture {
+                pattern: Pattern::Checker,
+                scale,
+                diffuse: checker.diffuse.unwrap_or(scaled(m.diffuse, 0.25)),
+                ambient: checker.ambient.unwrap_or(scaled(m.ambient, 0.25)),
+            });
+            if m.texture.is_none()
+                && let Some(key) = ["checker_diffuse", "checker_ambient"]
+                    .iter()
+                    .find_map(|k| seen.get(*k))
+            {
+                self.report(
+                    Diagnostic::new(
+                        Code::IneffectiveOption,
+                        *key,
+                        "the checker colours have no effect without `checker = size`",
+                    )
+                    .with_help("add `checker = 0.25` (the cell size, a hyperbolic length) or remove the checker colours"),
+                );
             }
             if let Some(label) = &st.label {
                 self.declare_name(NameKind::Material, label);
@@ -476,21 +605,46 @@ impl Lowerer<'_> {
 
     fn transformations_section(&mut self, section: &Section) {
         for st in &section.statements {
-            let [
-                Clause::Apply {
-                    target,
-                    name,
-                    arg,
-                    span,
-                },
-            ] = st.clauses.as_slice()
+            let (first, animate) = match st.clauses.as_slice() {
+                [first] => (Some(first), None),
+                [
+                    first,
+                    Clause::Apply {
+                        target: None,
+                        name,
+                        arg: None,
+                        ..
+                    },
+                ] if name.text == "animate" => (Some(first), Some(name.span)),
+                _ => (None, None),
+            };
+            let Some(Clause::Apply {
+                target,
+                name,
+                arg,
+                span,
+            }) = first
             else {
                 self.report(
                     Diagnostic::new(Code::WrongType, st.span, "expected a transformation statement")
-                        .with_help("write `hline (%A, %B);`, `hplane (%A, %B, %C);`, `%P->Rotate(L, angle);`, `%P->Translate(L);` or `%P->Reflect(S);`"),
+                        .with_help("write `hline (%A, %B);`, `hplane (%A, %B, %C);`, `%P->Rotate(L, angle);`, `%P->Translate(L);` or `%P->Reflect(S);`; a rotation or translation may end in `, animate`"),
                 );
                 continue;
             };
+            if let Some(at) = animate
+                && !matches!(name.text.as_str(), "Rotate" | "Translate" | "Reflect")
+            {
+                self.report(
+                    Diagnostic::new(
+                        Code::NotAnimatable,
+                        at,
+                        format!("`{}` cannot be animated", name.text),
+                    )
+                    .with_help(
+                        "only the transformations `Rotate` and `Translate` can end in `, animate`",
+                    ),
+                );
+            }
             match (target, name.text.as_str()) {
                 (None, "hline") => self.declare_line(st.label.as_ref(), name, arg.as_ref(), *span),
                 (None, "hplane") => {
@@ -498,7 +652,7 @@ impl Lowerer<'_> {
                 }
                 (Some(target), "Rotate" | "Translate" | "Reflect") => match target.sigil {
                     RefSigil::At => {
-                        let iso = self.transformation(name, arg.as_ref(), *span);
+                        let iso = self.transformation(name, arg.as_ref(), *span, animate);
                         self.moves.push(moves::PendingMove {
                             target: target.clone(),
                             iso,
@@ -513,10 +667,10 @@ impl Lowerer<'_> {
                             )
                             .with_help("transformations act on points (`%P`), named objects and lights (`@name`) and the camera (`@camera`)"),
                         );
-                        let _ = self.transformation(name, arg.as_ref(), *span);
+                        let _ = self.transformation(name, arg.as_ref(), *span, animate);
                     }
                     RefSigil::Percent => {
-                        if let Some(iso) = self.transformation(name, arg.as_ref(), *span) {
+                        if let Some(iso) = self.transformation(name, arg.as_ref(), *span, animate) {
                             self.move_point(target, &iso);
                         } else {
                             // Still mark the target as used so errors don't cascade into lints.
@@ -559,24 +713,38 @@ impl Lowerer<'_> {
 
     /// Lowers one light; returns its index, or `None` after reporting why not.
     fn light_statement(&mut self, st: &crate::syntax::Statement) -> Option<usize> {
-        let values: Vec<&Value> = st
-            .clauses
-            .iter()
-            .filter_map(|c| match c {
-                Clause::Value(v) => Some(v),
-                _ => None,
-            })
-            .collect();
-        if let Some(bad) = st.clauses.iter().find(|c| !matches!(c, Clause::Value(_))) {
-            self.report(
-                Diagnostic::new(
-                    Code::WrongType,
-                    bad.span(),
-                    "a light's parts are plain values, not `key = value` or names",
-                )
-                .with_help("write `%P, (diffuse r, g, b), (specular r, g, b);`"),
-            );
-            return None;
+        const USAGE: &str = "write `%P, (diffuse r, g, b), (specular r, g, b);`, optionally followed by `radius = r, samples = n` for an area light";
+        let mut values: Vec<&Value> = Vec::new();
+        let mut options: Vec<(&Ident, &Value)> = Vec::new();
+        for clause in &st.clauses {
+            match clause {
+                Clause::Value(v) if options.is_empty() => values.push(v),
+                Clause::Assign { key, .. }
+                    if values.len() < 3 && !matches!(key.text.as_str(), "radius" | "samples") =>
+                {
+                    self.report(
+                        Diagnostic::new(
+                            Code::WrongType,
+                            clause.span(),
+                            "a light's point and colours are plain values, not `key = value`",
+                        )
+                        .with_help(USAGE),
+                    );
+                    return None;
+                }
+                Clause::Assign { key, value, .. } => options.push((key, value)),
+                bad => {
+                    let message = if matches!(bad, Clause::Value(_)) {
+                        "a light's options (`radius = r`, `samples = n`) must come after its point and colours"
+                    } else {
+                        "a light's parts are plain values and `key = value` options, not names"
+                    };
+                    self.report(
+                        Diagnostic::new(Code::WrongType, bad.span(), message).with_help(USAGE),
+                    );
+                    return None;
+                }
+            }
         }
         if values.len() != 3 {
             self.wrong_arity(
@@ -585,13 +753,14 @@ impl Lowerer<'_> {
                     "a light takes 3 values (a point and two colours), got {}",
                     values.len()
                 ),
-                "write `%P, (diffuse r, g, b), (specular r, g, b);`",
+                USAGE,
             );
             return None;
         }
         let position = self.point_arg(values[0], "a light");
         let diffuse = self.rgb(values[1]);
         let specular = self.rgb(values[2]);
+        let (radius, samples) = self.light_options(&options)?;
         let (position, diffuse, specular) = (position?, diffuse?, specular?);
         self.lights.push((
             Light {
@@ -599,12 +768,93 @@ impl Lowerer<'_> {
                 diffuse,
                 specular,
                 name: st.label.as_ref().map(|l| l.text.clone()),
-                radius: 0.0,
-                samples: 1,
+                radius,
+                samples,
             },
             st.span,
         ));
         Some(self.lights.len() - 1)
+    }
+
+    /// The area-light options `radius = r` and `samples = n`: a point light
+    /// (radius 0, one sample) when neither is given, 16 samples when only
+    /// the radius is.
+    fn light_options(&mut self, options: &[(&Ident, &Value)]) -> Option<(f64, u32)> {
+        let mut radius: Option<(f64, Span)> = None;
+        let mut samples: Option<(u32, Span)> = None;
+        let mut seen: HashMap<&str, Span> = HashMap::new();
+        let mut ok = true;
+        for (key, value) in options {
+            if seen.insert(key.text.as_str(), key.span).is_some() {
+                self.report(Diagnostic::new(
+                    Code::DuplicateKey,
+                    key.span,
+                    format!("{} is set twice; the last value wins", quote(&key.text)),
+                ));
+            }
+            match key.text.as_str() {
+                "radius" => match self.number(value) {
+                    Some(r) if (0.0..=MAX_LIGHT_RADIUS).contains(&r) => {
+                        radius = Some((r, key.span))
+                    }
+                    Some(r) => {
+                        ok = false;
+                        self.report(
+                            Diagnostic::new(
+                                Code::InvalidValue,
+                                value.span(),
+                                format!(
+                                    "a light's radius must be from 0 to {MAX_LIGHT_RADIUS}, got {r}"
+                                ),
+                            )
+                            .with_help("the radius is a hyperbolic length; 0 makes a point light"),
+                        );
+                    }
+                    None => ok = false,
+                },
+                "samples" => {
+                    match self.integer(value, 1, u64::from(MAX_LIGHT_SAMPLES), "samples") {
+                        Some(n) => samples = Some((n as u32, key.span)),
+                        None => ok = false,
+                    }
+                }
+                other => {
+                    ok = false;
+                    self.report(
+                        Diagnostic::new(
+                            Code::UnknownKey,
+                            key.span,
+                            format!("unknown light option {}", quote(other)),
+                        )
+                        .with_help(did_you_mean(
+                            other,
+                            &["radius", "samples"],
+                            "the options of a light are `radius` (hyperbolic, 0 for a point light) and `samples` (shadow rays per shading point)",
+                        )),
+                    );
+                }
+            }
+        }
+        if !ok {
+            return None;
+        }
+        let r = radius.map_or(0.0, |(r, _)| r);
+        match samples {
+            Some((_, span)) if r == 0.0 => {
+                self.report(
+                    Diagnostic::new(
+                        Code::IneffectiveOption,
+                        span,
+                        "`samples` has no effect on a point light",
+                    )
+                    .with_help("add `radius = 0.05` (a hyperbolic radius) to make it an area light, or remove `samples`"),
+                );
+                Some((0.0, 1))
+            }
+            Some((n, _)) => Some((r, n)),
+            None if r > 0.0 => Some((r, DEFAULT_LIGHT_SAMPLES)),
+            None => Some((0.0, 1)),
+        }
     }
 
     fn globals_section(&mut self, section: &Section) {
@@ -692,6 +942,11 @@ impl Lowerer<'_> {
                                 .with_help("net_type is 0 (Euclidean), 1 (hyperparallel h-lines), 2 (great disk), 3 (h-equidistants) or 4 (h-equidistants, interpolated)"),
                         ),
                     }
+                }
+            }
+            "frames" => {
+                if let Some(n) = self.integer(value, 1, u64::from(MAX_FRAMES), "frames") {
+                    self.settings.frames = n as u32;
                 }
             }
             "background" => {
@@ -841,26 +1096,38 @@ impl Lowerer<'_> {
         self.planes.push(plane);
     }
 
+    /// The isometry of a `Rotate`, `Translate` or `Reflect` statement. With
+    /// `animate` (the span of the `animate` clause), only the fraction of it
+    /// that belongs to this frame: the angle, or the distance along the
+    /// line, times the frame's time in `0..=1`.
     fn transformation(
         &mut self,
         name: &Ident,
         arg: Option<&Value>,
         span: Span,
+        animate: Option<Span>,
     ) -> Option<Isometry> {
         let items: Vec<&Value> = match arg {
             Some(Value::Tuple { items, .. }) => items.iter().collect(),
             Some(v) => vec![v],
             None => Vec::new(),
         };
+        let fraction = match animate {
+            Some(at) => {
+                self.animations.push(at);
+                self.time
+            }
+            None => 1.0,
+        };
         match (name.text.as_str(), items.as_slice()) {
             ("Rotate", [line, angle]) => {
                 let line = self.resolve_line(line);
                 let angle = self.number(angle);
-                Some(Isometry::rotation(&line?, angle?))
+                Some(Isometry::rotation(&line?, fraction * angle?))
             }
             ("Translate", [line]) => {
                 let line = self.resolve_line(line)?;
-                match Isometry::translation(&line) {
+                match partial_translation(&line, fraction) {
                     Ok(t) => Some(t),
                     Err(e) => {
                         self.error(
@@ -872,7 +1139,15 @@ impl Lowerer<'_> {
                     }
                 }
             }
-            ("Reflect", [plane]) => Some(Isometry::reflection(&self.resolve_plane(plane)?)),
+            ("Reflect", [plane]) => {
+                if let Some(at) = animate {
+                    self.report(
+                        Diagnostic::new(Code::NotAnimatable, at, "a reflection cannot be animated")
+                            .with_help("a reflection has no halfway state; animate a rotation or translation instead, or remove `, animate`"),
+                    );
+                }
+                Some(Isometry::reflection(&self.resolve_plane(plane)?))
+            }
             (n, _) => {
                 let usage = match n {
                     "Rotate" => "`%P->Rotate(L, angle);` (L: an h-line number, angle in radians)",
@@ -1590,6 +1865,8 @@ fn contains(shape: &Shape, x: hgeom::glam::DVec4) -> bool {
         Shape::Cylinder(c) => c.contains(x),
         Shape::Horosphere(h) => h.contains(x),
         Shape::Wireframe(rods) => rods.iter().any(|r| r.contains(x)),
+        // Whether a mesh is closed, and so has an inside, is not checked.
+        Shape::Mesh(_) => false,
     }
 }
 
@@ -1606,6 +1883,7 @@ fn entirely_behind(shape: &Shape, plane: &HPlane) -> bool {
         Shape::Plane(_) | Shape::Cylinder(_) | Shape::Horosphere(_) => false,
         Shape::Rod(r) => rod_behind(r, plane),
         Shape::Wireframe(rods) => rods.iter().all(|r| rod_behind(r, plane)),
+        Shape::Mesh(m) => m.vertices().iter().all(|p| plane.signed_distance(p) < 0.0),
     }
 }
 
@@ -1637,6 +1915,7 @@ const GLOBAL_KEYS: &[&str] = &[
     "resolution",
     "window_size",
     "net_type",
+    "frames",
     "from",
     "to",
     "up",
@@ -1651,11 +1930,13 @@ const MATERIAL_FIELDS: &[&str] = &[
     "alpha",
     "trans",
     "shininess",
+    "checker",
+    "checker_diffuse",
+    "checker_ambient",
     "refraction",
 ];
 
-const MATERIAL_FIELDS_HELP: &str =
-    "material fields are ambient, diffuse, specular, alpha, trans, shininess, refraction";
+const MATERIAL_FIELDS_HELP: &str = "material fields are ambient, diffuse, specular, alpha, trans, shininess, refraction, checker, checker_diffuse, checker_ambient";
 
 const TRANSFORMATIONS: &[&str] = &["hline", "hplane", "Rotate", "Translate", "Reflect"];
 
@@ -1680,7 +1961,7 @@ fn section_meant(name: &str) -> Option<&'static str> {
         .copied()
 }
 
-const GLOBAL_KEYS_HELP: &str = "globals are recursion_depth, resolution, window_size, net_type, from, to, up, background, ambient";
+const GLOBAL_KEYS_HELP: &str = "globals are recursion_depth, resolution, window_size, net_type, frames, from, to, up, background, ambient";
 
 /// A reference as written, shortened like [`quote`] (without the backticks).
 fn reference_text(r: &Reference) -> String {

@@ -115,6 +115,16 @@ fn lex_at(src: &str, pos: usize) -> (Kind, usize) {
             run(pos + 1, |b| is_ident_continue(b) || b == b'.'),
         ),
         b'%' | b'#' | b'@' => (Kind::Other, run(pos + 1, is_ident_continue)),
+        // A string runs to its closing quote; an unterminated one stops at
+        // the line end, so a stray `"` cannot swallow the rest of the file.
+        b'"' => {
+            let rest = &bytes[pos + 1..];
+            match rest.iter().position(|&b| matches!(b, b'"' | b'\n' | b'\r')) {
+                Some(i) if rest[i] == b'"' => (Kind::Other, pos + 1 + i + 1),
+                Some(i) => (Kind::Other, pos + 1 + i),
+                None => (Kind::Other, src.len()),
+            }
+        }
         _ => {
             let len = src[pos..].chars().next().map_or(1, char::len_utf8);
             (Kind::Other, pos + len)
@@ -167,6 +177,7 @@ fn rule_words(rule: Rule) -> &'static str {
         Rule::number => "a number",
         Rule::reference => "a reference",
         Rule::tuple => "a tuple",
+        Rule::string | Rule::string_inner => "a string",
         Rule::ident | Rule::label | Rule::assignment | Rule::application => "a name",
         Rule::sigil => "`%`, `#` or `@`",
         Rule::ref_index | Rule::ref_name => "an index or a name after the sigil",
@@ -512,6 +523,17 @@ impl Scanner<'_> {
                         start = next;
                         continue;
                     }
+                    if let Some(open) = self.unterminated_string(start, end) {
+                        self.diagnostics.push(
+                            Diagnostic::new(Code::Syntax, open, "unterminated string")
+                                .with_label("this string has no closing `\"` on its line")
+                                .with_help(
+                                    "end the file name with `\"`; a string cannot span lines",
+                                ),
+                        );
+                        out.broken.push(self.broken(start, end));
+                        return;
+                    }
                     self.report_pest_error(&err, start, end);
                     out.broken.push(self.broken(start, end));
                     return;
@@ -529,6 +551,17 @@ impl Scanner<'_> {
             .next()
             .and_then(|p| p.into_inner().find(|p| p.as_rule() == Rule::statement))
             .and_then(|p| self.statement(p, start))
+    }
+
+    /// The first string token of `start..end` without its closing quote.
+    fn unterminated_string(&self, start: usize, end: usize) -> Option<Span> {
+        self.tokens(start, end)
+            .into_iter()
+            .map(|(_, span)| span)
+            .find(|span| {
+                let text = &self.src[span.start..span.end];
+                text.starts_with('"') && (text.len() == 1 || !text.ends_with('"'))
+            })
     }
 
     /// The start of every token of `start..end`, with its end.
@@ -812,6 +845,10 @@ impl Scanner<'_> {
                 Some(Value::Tuple { items, span })
             }
             Rule::ident => Some(Value::Ident(pair_ident(pair, off))),
+            Rule::string => Some(Value::Str {
+                text: pair.into_inner().next()?.as_str().to_string(),
+                span,
+            }),
             _ => None,
         }
     }
@@ -1678,8 +1715,27 @@ Objects {
     }
 
     #[test]
+    fn strings_are_values_and_may_hold_any_punctuation() {
+        let st = only_statement("Objects { Mesh \"dir/a b;{}(%1)//.ply\", 0.5, #1; }");
+        let Clause::Apply {
+            arg: Some(Value::Str { text, .. }),
+            ..
+        } = &st.clauses[0]
+        else {
+            panic!("{st:?}")
+        };
+        assert_eq!(text, "dir/a b;{}(%1)//.ply");
+        // An unterminated string ends at its line, so it cannot swallow the
+        // rest of the file: one diagnostic for the statement it breaks.
+        let src = "Objects { Mesh \"a.obj, 1, #1;\nSphere (0,0,0), 0.1, #1; }";
+        let p = parse(src);
+        assert_eq!(codes(&p), [Code::Syntax]);
+        assert_eq!(section(&p.file, "Objects").broken.len(), 1);
+    }
+
+    #[test]
     fn diagnostics_are_sorted_and_line_columns_count_chars() {
-        let src = "// ünïcödé comment €€€\nPoints { (0,0,0); /* é€ */ \"x\"; }\nbad";
+        let src = "// ünïcödé comment €€€\nPoints { (0,0,0); /* é€ */ `x`; }\nbad";
         let p = parse(src);
         assert_eq!(codes(&p), [Code::Syntax, Code::Syntax]);
         assert!(

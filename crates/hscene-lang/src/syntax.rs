@@ -11,7 +11,8 @@
 //! clause     = Ident "=" value                     -- Clause::Assign
 //!            | (reference "->")? Ident value?      -- Clause::Apply
 //!            | value                               -- Clause::Value
-//! value      = number | reference | tuple          -- (inside tuples also Ident)
+//! value      = number | reference | tuple | string -- (inside tuples also Ident)
+//! string     = '"' (any character but '"' and line breaks)* '"'
 //! tuple      = "(" item ("," item)* ")"
 //! reference  = ("%" | "#" | "@") (digits | Ident)  -- no whitespace inside
 //! ```
@@ -147,13 +148,22 @@ pub enum Value {
     },
     /// A bare identifier; only occurs as a tuple item.
     Ident(Ident),
+    /// `"text"`: a string literal (file names). No escapes, one line.
+    Str {
+        /// The text between the quotes.
+        text: String,
+        /// From the opening to the closing quote.
+        span: Span,
+    },
 }
 
 impl Value {
     /// Where the value is.
     pub fn span(&self) -> Span {
         match self {
-            Value::Number { span, .. } | Value::Tuple { span, .. } => *span,
+            Value::Number { span, .. } | Value::Tuple { span, .. } | Value::Str { span, .. } => {
+                *span
+            }
             Value::Reference(r) => r.span,
             Value::Ident(i) => i.span,
         }
@@ -171,6 +181,7 @@ impl Value {
             },
             Value::Tuple { .. } => "a tuple",
             Value::Ident(_) => "a name",
+            Value::Str { .. } => "a string",
         }
     }
 }

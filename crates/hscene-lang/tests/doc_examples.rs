@@ -10,7 +10,20 @@
 
 use std::path::Path;
 
-use hscene_lang::compile;
+use hscene_lang::{Compiled, Options, compile_with};
+
+/// Compiles a documentation example: mesh file names in the docs are
+/// relative to the repository root, where a reader runs `hscene`.
+fn compile(source: &str) -> Compiled {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    compile_with(
+        source,
+        &Options {
+            base_dir: Some(root),
+            frame: 0,
+        },
+    )
+}
 
 const LANGUAGE: &str = include_str!("../../../docs/language.md");
 
@@ -135,7 +148,11 @@ fn example_scenes_compile_without_errors() {
         let path = entry.unwrap().path();
         if path.extension().is_some_and(|e| e == "hsc") {
             let src = std::fs::read_to_string(&path).unwrap();
-            let c = compile(&src);
+            let options = Options {
+                base_dir: path.parent().map(Path::to_path_buf),
+                frame: 0,
+            };
+            let c = compile_with(&src, &options);
             assert!(!c.has_errors(), "{}: {:#?}", path.display(), c.diagnostics);
             checked += 1;
         }

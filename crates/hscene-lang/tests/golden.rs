@@ -19,7 +19,20 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use hscene_lang::diagnostic::CODES;
-use hscene_lang::{Compiled, LineIndex, compile};
+use hscene_lang::{Compiled, LineIndex, Options, compile_with};
+
+/// Compiles a broken scene as `hscene check` would: mesh files relative to
+/// the scene's directory.
+fn compile(src: &str) -> Compiled {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/broken");
+    compile_with(
+        src,
+        &Options {
+            base_dir: Some(dir),
+            frame: 0,
+        },
+    )
+}
 
 /// At most this many source lines are shown for a multi-line span.
 const MAX_EXCERPT_LINES: usize = 4;

@@ -11,8 +11,8 @@ use hgeom::{
     Point, Polyhedron, Rod, Vertex,
 };
 use hscene_lang::ir::{
-    Camera, Light, Material, MaterialId, Net, Object, Resolution, Rgb, Scene, Settings, Shape,
-    Window,
+    Camera, Light, Material, MaterialId, Net, Object, Pattern, Resolution, Rgb, Scene, Settings,
+    Shape, Texture, Window,
 };
 
 /// An h-point from ball coordinates.
@@ -100,6 +100,38 @@ pub fn light(at: Point, intensity: f64) -> Light {
     }
 }
 
+/// A white spherical area light of hyperbolic radius `radius` sampled by
+/// `samples` shadow rays per shading point.
+pub fn area_light(at: Point, intensity: f64, radius: f64, samples: u32) -> Light {
+    Light {
+        radius,
+        samples,
+        ..light(at, intensity)
+    }
+}
+
+/// `material` with a checker texture of cell size `scale` whose odd cells
+/// take `colour` as their ambient and diffuse reflectance.
+pub fn checkered(material: Material, scale: f64, colour: Rgb) -> Material {
+    Material {
+        texture: Some(Texture {
+            pattern: Pattern::Checker,
+            scale,
+            diffuse: colour,
+            ambient: colour,
+        }),
+        ..material
+    }
+}
+
+/// An object with material index `m` and local frame `frame`.
+pub fn obj_in(shape: Shape, m: usize, frame: Isometry) -> Object {
+    Object {
+        frame,
+        ..obj(shape, m)
+    }
+}
+
 /// An object with material index `m`.
 pub fn obj(shape: Shape, m: usize) -> Object {
     Object {
@@ -184,7 +216,8 @@ pub fn mixed_scene(net: Net, size: u32, window: f64) -> Scene {
 }
 
 /// Apply one isometry to everything in a scene: camera (eye, target, up),
-/// every object and every light.
+/// every object (its shape and its local frame, so textures move with it)
+/// and every light.
 pub fn moved(scene: &Scene, iso: &Isometry) -> Scene {
     let mut s = scene.clone();
     let up = s.camera.up.expect("tests use an explicit up point");
@@ -195,6 +228,7 @@ pub fn moved(scene: &Scene, iso: &Isometry) -> Scene {
         l.position = iso.apply(&l.position);
     }
     for o in &mut s.objects {
+        o.frame = iso.compose(&o.frame);
         o.shape = match &o.shape {
             Shape::Sphere(x) => Shape::Sphere(x.transformed(iso)),
             Shape::Polygon(x) => Shape::Polygon(x.transformed(iso)),
@@ -206,6 +240,7 @@ pub fn moved(scene: &Scene, iso: &Isometry) -> Scene {
             Shape::Wireframe(rods) => {
                 Shape::Wireframe(rods.iter().map(|r| r.transformed(iso)).collect())
             }
+            Shape::Mesh(x) => Shape::Mesh(x.transformed(iso)),
         };
     }
     s

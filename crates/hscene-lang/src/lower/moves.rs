@@ -202,6 +202,7 @@ pub(super) fn transform_shape(shape: &Shape, iso: &Isometry) -> Option<Shape> {
         Shape::Rod(r) => Shape::Rod(r.transformed(iso)),
         Shape::Cylinder(c) => Shape::Cylinder(c.transformed(iso)),
         Shape::Horosphere(h) => Shape::Horosphere(h.transformed(iso)),
+        Shape::Mesh(m) => Shape::Mesh(m.transformed(iso)),
         Shape::Wireframe(rods) => {
             Shape::Wireframe(rods.iter().map(|r| r.transformed(iso)).collect())
         }
@@ -232,6 +233,7 @@ pub(super) fn representable(shape: &Shape) -> bool {
             let (c, r) = h.euclidean();
             c.is_finite() && r.is_finite() && r > 0.0
         }
+        Shape::Mesh(m) => m.vertices().iter().all(Point::is_representable),
         Shape::Wireframe(rods) => rods
             .iter()
             .all(|r| vertex_ok(&r.start()) && vertex_ok(&r.end())),

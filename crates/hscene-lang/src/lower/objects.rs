@@ -16,13 +16,17 @@ use std::collections::HashMap;
 
 use hgeom::{
     ConvexPolygon, GeomError, HCylinder, HLine, HSphere, Horosphere, IdealPoint, Isometry,
-    Platonic, Point, Polyhedron, Rod, Vertex,
+    Platonic, Point, Polyhedron, Rod, TriangleMesh, Vertex,
 };
+
+/// Largest mesh size: its farthest vertex must stay representable.
+const MAX_MESH_SIZE: f64 = 36.0;
 
 use super::figures::{self, Figure};
 use super::{Lowerer, TargetSlot};
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::{MaterialId, Object, Shape};
+use crate::mesh_file::{self, MeshFileError};
 use crate::syntax::{Clause, Ident, Statement, Value};
 
 /// What an object keyword builds.
@@ -35,6 +39,8 @@ pub(super) enum Kind {
     Plane,
     Horosphere,
     Platonic(Platonic),
+    /// A triangle mesh read from an OBJ or PLY file.
+    Mesh,
     /// A predefined figure centred at the origin (see `figures.rs`).
     Figure(Figure),
 }
@@ -48,6 +54,7 @@ pub(super) fn object_names() -> Vec<&'static str> {
         "Cylinder",
         "Plane",
         "Horosphere",
+        "Mesh",
         "Tetrahedron",
         "Cube",
         "Hexahedron",
@@ -67,6 +74,7 @@ fn kind_by_name(name: &str) -> Option<Kind> {
         "Cylinder" => Kind::Cylinder,
         "Plane" => Kind::Plane,
         "Horosphere" => Kind::Horosphere,
+        "Mesh" => Kind::Mesh,
         "Tetrahedron" => Kind::Platonic(Platonic::Tetrahedron),
         "Cube" | "Hexahedron" => Kind::Platonic(Platonic::Cube),
         "Octahedron" => Kind::Platonic(Platonic::Octahedron),
@@ -92,6 +100,8 @@ pub(super) enum Param {
     Count(&'static str, u64, u64),
     /// A parenthesised vertex list `(%1, %2, ...)`.
     Vertices,
+    /// A file name in quotes.
+    File(&'static str),
 }
 
 /// A checked positional argument.
@@ -102,6 +112,7 @@ pub(super) enum Arg {
     Ideal(IdealPoint),
     Number(f64),
     Vertices(Vec<Vertex>),
+    File(String),
 }
 
 impl Arg {
@@ -187,6 +198,13 @@ fn spec(kind: Kind) -> Spec {
             usage: "write `Horosphere %ideal, %through, #M;` (the centre is a point on the absolute)",
             faceted: false,
             centred: false,
+        },
+        Kind::Mesh => Spec {
+            params: &[Param::File("the mesh file"), Param::Length("the mesh size")],
+            takes: "a file name, a size and a material",
+            usage: "write `Mesh \"bunny.ply\", size, #M;` (an OBJ or PLY file, relative to the scene file; size: the hyperbolic distance from the mesh's centre to its farthest vertex)",
+            faceted: false,
+            centred: true,
         },
         Kind::Platonic(_) => Spec {
             params: &[Param::Length("the size")],
@@ -365,6 +383,23 @@ impl Lowerer<'_> {
                     None
                 }
             }
+            Param::File(role) => match value {
+                Value::Str { text, .. } => Some(Arg::File(text.clone())),
+                _ => {
+                    self.report(
+                        Diagnostic::new(
+                            Code::WrongType,
+                            value.span(),
+                            format!(
+                                "expected {role} as a name in quotes, found {}",
+                                value.describe()
+                            ),
+                        )
+                        .with_help(usage.to_string()),
+                    );
+                    None
+                }
+            },
             Param::Vertices => {
                 let Value::Tuple { items, .. } = value else {
                     self.report(
@@ -610,6 +645,9 @@ impl Lowerer<'_> {
                     }
                 }
             }
+            (Kind::Mesh, [Arg::File(file), Arg::Number(size)]) => {
+                self.mesh(file, *size, values).map(|m| vec![Shape::Mesh(m)])
+            }
             (Kind::Platonic(k), [Arg::Number(size)]) => match Polyhedron::platonic(k, *size) {
                 Ok(p) => Some(vec![Shape::Polyhedron(p)]),
                 Err(e) => {
@@ -630,6 +668,86 @@ impl Lowerer<'_> {
             },
             // The arguments were checked against the same table.
             _ => None,
+        }
+    }
+
+    /// Reads and lays out a mesh file (see `mesh_file.rs`).
+    fn mesh(&mut self, file: &str, size: f64, values: &[&Value]) -> Option<TriangleMesh> {
+        let (file_span, size_span) = (values[0].span(), values[1].span());
+        if size > MAX_MESH_SIZE {
+            self.report(
+                Diagnostic::new(
+                    Code::InvalidValue,
+                    size_span,
+                    format!("a mesh size must be at most {MAX_MESH_SIZE}, got {size}"),
+                )
+                .with_help("f64 holds ball points out to about distance 37 from the origin; the size is the distance of the mesh's farthest vertex from its centre"),
+            );
+            return None;
+        }
+        let path = match self.base_dir {
+            Some(dir) => dir.join(file),
+            None => std::path::PathBuf::from(file),
+        };
+        let data = match mesh_file::load(&path) {
+            Ok(data) => data,
+            Err(MeshFileError::Io(e)) => {
+                self.report(
+                    Diagnostic::new(
+                        Code::MeshFileUnreadable,
+                        file_span,
+                        format!("cannot read the mesh file {}: {e}", super::quote(file)),
+                    )
+                    .with_help("a relative file name is taken from the scene file's directory"),
+                );
+                return None;
+            }
+            Err(e) => {
+                self.report(
+                    Diagnostic::new(
+                        Code::MeshFileInvalid,
+                        file_span,
+                        format!("cannot use the mesh file {}: {e}", super::quote(file)),
+                    )
+                    .with_help("meshes are read from Wavefront OBJ (`.obj`) and PLY (`.ply`, ASCII or binary) files with triangle or polygon faces"),
+                );
+                return None;
+            }
+        };
+        let Some(vertices) = data.layout(size) else {
+            self.report(
+                Diagnostic::new(
+                    Code::MeshFileInvalid,
+                    file_span,
+                    format!(
+                        "the mesh in {} has no extent: all its vertices coincide",
+                        super::quote(file)
+                    ),
+                )
+                .with_help("use a file whose vertices span a surface"),
+            );
+            return None;
+        };
+        let total = data.triangles.len();
+        match TriangleMesh::new(vertices, data.triangles) {
+            Ok(mesh) => {
+                let dropped = mesh.dropped_triangles();
+                if dropped > 0 {
+                    self.report(
+                        Diagnostic::new(
+                            Code::DegenerateTriangles,
+                            file_span,
+                            format!("{dropped} of the {total} triangles of this mesh have no area and are left out"),
+                        )
+                        .with_help("such triangles (repeated or collinear vertices) draw nothing; clean the mesh to silence this"),
+                    );
+                }
+                Some(mesh)
+            }
+            Err(e) => {
+                self.geom_failure(file_span, "this mesh", &e);
+                None
+            }
         }
     }
 

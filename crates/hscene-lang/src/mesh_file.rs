@@ -1,0 +1,372 @@
+//! Reading triangle meshes from OBJ and PLY files, and laying them out in
+//! the ball.
+//!
+//! A mesh file holds Euclidean coordinates in units of its own. `Mesh
+//! "file", size, #M;` centres the mesh on the centre of its bounding box,
+//! scales it so that its farthest vertex lies at distance 1, and maps each
+//! vertex `u` to the h-point at hyperbolic distance `size * |u|` from the
+//! origin in the direction of `u` (geodesic polar coordinates about the
+//! origin). Distances from the centre and angles at the centre are kept, up
+//! to the factor `size`; the faces become h-triangles (the convex hulls of
+//! their vertices). Polygonal faces are split into fans of triangles first.
+//!
+//! The loader knows about files, the layout about hyperbolic space; neither
+//! knows about spans or diagnostics.
+
+use std::fmt;
+use std::path::Path;
+
+use hgeom::Point;
+use hgeom::glam::DVec3;
+
+/// The vertices and triangles read from a mesh file, in file coordinates.
+///
+/// Invariants: every coordinate is finite, every index is below
+/// `positions.len()`, and there is at least one triangle.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshData {
+    /// Vertex positions as written in the file.
+    pub positions: Vec<DVec3>,
+    /// Triangles as vertex indices, in the file's winding order.
+    pub triangles: Vec<[u32; 3]>,
+}
+
+/// Why a mesh file could not be used.
+#[derive(Debug)]
+pub enum MeshFileError {
+    /// The file could not be opened or read.
+    Io(std::io::Error),
+    /// The extension is neither `.obj` nor `.ply`.
+    UnknownFormat,
+    /// The file is not valid OBJ/PLY, or lacks what a mesh needs.
+    Invalid(String),
+}
+
+impl fmt::Display for MeshFileError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            MeshFileError::Io(e) => write!(f, "{e}"),
+            MeshFileError::UnknownFormat => {
+                f.write_str("the file name does not end in .obj or .ply")
+            }
+            MeshFileError::Invalid(why) => f.write_str(why),
+        }
+    }
+}
+
+impl std::error::Error for MeshFileError {}
+
+/// Reads an OBJ or PLY file (chosen by extension, case-insensitively).
+///
+/// Every object of an OBJ file is merged into one mesh; materials, normals
+/// and texture coordinates are ignored. A PLY file needs a `vertex` element
+/// with `x`, `y`, `z` and a `face` element with a `vertex_indices` (or
+/// `vertex_index`) list.
+pub fn load(path: &Path) -> Result<MeshData, MeshFileError> {
+    let extension = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    let data = match extension.as_deref() {
+        Some("obj") => load_obj(path)?,
+        Some("ply") => load_ply(path)?,
+        _ => return Err(MeshFileError::UnknownFormat),
+    };
+    data.check()?;
+    Ok(data)
+}
+
+impl MeshData {
+    /// Checks the invariants of [`MeshData`].
+    fn check(&self) -> Result<(), MeshFileError> {
+        if let Some(i) = self.positions.iter().position(|p| !p.is_finite()) {
+            return Err(MeshFileError::Invalid(format!(
+                "vertex {} has a coordinate that is not a finite number",
+                i + 1
+            )));
+        }
+        let n = self.positions.len();
+        if let Some((i, t)) = self
+            .triangles
+            .iter()
+            .enumerate()
+            .find(|(_, t)| t.iter().any(|&v| v as usize >= n))
+        {
+            return Err(MeshFileError::Invalid(format!(
+                "face {} refers to vertex {} but the file has {n} vertices",
+                i + 1,
+                t.iter().map(|&v| v as usize).max().unwrap_or(0) + 1
+            )));
+        }
+        if self.triangles.is_empty() {
+            return Err(MeshFileError::Invalid("the file has no faces".into()));
+        }
+        Ok(())
+    }
+
+    /// The centre of the bounding box and the largest distance of a vertex
+    /// from it (`None` if every vertex is the same point).
+    pub fn bounding_ball(&self) -> Option<(DVec3, f64)> {
+        let (lo, hi) = self.positions.iter().fold(
+            (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
+            |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+        );
+        let centre = 0.5 * (lo + hi);
+        let radius = self
+            .positions
+            .iter()
+            .map(|p| (*p - centre).length())
+            .fold(0.0, f64::max);
+        (radius > 0.0 && radius.is_finite()).then_some((centre, radius))
+    }
+
+    /// The vertices laid out in the ball: centred, scaled to unit size, and
+    /// mapped by geodesic polar coordinates so that the farthest vertex is
+    /// at hyperbolic distance `size` from the origin (see the module docs).
+    /// `None` if the mesh has no extent.
+    pub fn layout(&self, size: f64) -> Option<Vec<Point>> {
+        let (centre, radius) = self.bounding_ball()?;
+        self.positions
+            .iter()
+            .map(|p| {
+                let u = (*p - centre) / radius;
+                let len = u.length();
+                if len == 0.0 {
+                    return Some(Point::ORIGIN);
+                }
+                Point::at_distance_from_origin(u, size * len).ok()
+            })
+            .collect()
+    }
+}
+
+/// Splits a polygon `face` (vertex indices in order) into a fan.
+fn fan(face: &[u32], out: &mut Vec<[u32; 3]>) {
+    if let Some((&first, rest)) = face.split_first() {
+        for pair in rest.windows(2) {
+            out.push([first, pair[0], pair[1]]);
+        }
+    }
+}
+
+fn load_obj(path: &Path) -> Result<MeshData, MeshFileError> {
+    let options = tobj::LoadOptions {
+        single_index: false,
+        triangulate: false,
+        ignore_points: true,
+        ignore_lines: true,
+    };
+    // Materials are irrelevant here; a missing .mtl must not fail the load.
+    let (models, _) = tobj::load_obj(path, &options).map_err(|e| match e {
+        tobj::LoadError::OpenFileFailed | tobj::LoadError::ReadError => MeshFileError::Io(
+            std::fs::File::open(path)
+                .err()
+                .unwrap_or_else(|| std::io::Error::other(e.to_string())),
+        ),
+        other => MeshFileError::Invalid(format!("not a valid OBJ file: {other}")),
+    })?;
+    let mut positions = Vec::new();
+    let mut triangles = Vec::new();
+    for model in &models {
+        let mesh = &model.mesh;
+        let base = u32::try_from(positions.len())
+            .map_err(|_| MeshFileError::Invalid("too many vertices".into()))?;
+        positions.extend(
+            mesh.positions
+                .chunks_exact(3)
+                .map(|c| DVec3::new(f64::from(c[0]), f64::from(c[1]), f64::from(c[2]))),
+        );
+        let shifted = |i: u32| i.saturating_add(base);
+        if mesh.face_arities.is_empty() {
+            for t in mesh.indices.chunks_exact(3) {
+                triangles.push([shifted(t[0]), shifted(t[1]), shifted(t[2])]);
+            }
+        } else {
+            let mut at = 0usize;
+            for &arity in &mesh.face_arities {
+                let end = at + arity as usize;
+                let face: Vec<u32> = mesh
+                    .indices
+                    .get(at..end)
+                    .ok_or_else(|| MeshFileError::Invalid("a face is cut short".into()))?
+                    .iter()
+                    .map(|&i| shifted(i))
+                    .collect();
+                fan(&face, &mut triangles);
+                at = end;
+            }
+        }
+    }
+    Ok(MeshData {
+        positions,
+        triangles,
+    })
+}
+
+fn load_ply(path: &Path) -> Result<MeshData, MeshFileError> {
+    use ply_rs_bw::parser::Parser;
+    use ply_rs_bw::ply::{DefaultElement, Property};
+
+    let file = std::fs::File::open(path).map_err(MeshFileError::Io)?;
+    let mut reader = std::io::BufReader::new(file);
+    let ply = Parser::<DefaultElement>::new()
+        .read_ply(&mut reader)
+        .map_err(|e| MeshFileError::Invalid(format!("not a valid PLY file: {e}")))?;
+    let scalar = |p: &Property| -> Option<f64> {
+        Some(match *p {
+            Property::Char(x) => f64::from(x),
+            Property::UChar(x) => f64::from(x),
+            Property::Short(x) => f64::from(x),
+            Property::UShort(x) => f64::from(x),
+            Property::Int(x) => f64::from(x),
+            Property::UInt(x) => f64::from(x),
+            Property::Float(x) => f64::from(x),
+            Property::Double(x) => x,
+            _ => return None,
+        })
+    };
+    let list = |p: &Property| -> Option<Vec<u32>> {
+        let ints: Vec<i64> = match p {
+            Property::ListChar(v) => v.iter().map(|&x| i64::from(x)).collect(),
+            Property::ListUChar(v) => v.iter().map(|&x| i64::from(x)).collect(),
+            Property::ListShort(v) => v.iter().map(|&x| i64::from(x)).collect(),
+            Property::ListUShort(v) => v.iter().map(|&x| i64::from(x)).collect(),
+            Property::ListInt(v) => v.iter().map(|&x| i64::from(x)).collect(),
+            Property::ListUInt(v) => v.iter().map(|&x| i64::from(x)).collect(),
+            _ => return None,
+        };
+        // A negative index becomes u32::MAX, which the range check rejects.
+        Some(
+            ints.into_iter()
+                .map(|i| u32::try_from(i).unwrap_or(u32::MAX))
+                .collect(),
+        )
+    };
+    let vertices = ply
+        .payload
+        .get("vertex")
+        .ok_or_else(|| MeshFileError::Invalid("the PLY file has no `vertex` element".into()))?;
+    let mut positions = Vec::with_capacity(vertices.len());
+    for (i, v) in vertices.iter().enumerate() {
+        let coord = |name: &str| v.get(name).and_then(scalar);
+        match (coord("x"), coord("y"), coord("z")) {
+            (Some(x), Some(y), Some(z)) => positions.push(DVec3::new(x, y, z)),
+            _ => {
+                return Err(MeshFileError::Invalid(format!(
+                    "PLY vertex {} lacks a numeric x, y or z",
+                    i + 1
+                )));
+            }
+        }
+    }
+    let faces = ply
+        .payload
+        .get("face")
+        .ok_or_else(|| MeshFileError::Invalid("the PLY file has no `face` element".into()))?;
+    let mut triangles = Vec::with_capacity(faces.len());
+    for (i, f) in faces.iter().enumerate() {
+        let face = f
+            .get("vertex_indices")
+            .or_else(|| f.get("vertex_index"))
+            .and_then(list)
+            .ok_or_else(|| {
+                MeshFileError::Invalid(format!(
+                    "PLY face {} has no `vertex_indices` list of integers",
+                    i + 1
+                ))
+            })?;
+        fan(&face, &mut triangles);
+    }
+    Ok(MeshData {
+        positions,
+        triangles,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn write(dir: &Path, name: &str, text: &str) -> std::path::PathBuf {
+        let path = dir.join(name);
+        std::fs::write(&path, text).expect("write test file");
+        path
+    }
+
+    #[test]
+    fn obj_and_ply_give_the_same_mesh() {
+        let dir = tempfile::tempdir().expect("tempdir");
+        let obj = write(
+            dir.path(),
+            "quad.obj",
+            "# a square and a triangle\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nf 1 2 3 4\nf 1 2 5\n",
+        );
+        let ply = write(
+            dir.path(),
+            "quad.PLY",
+            "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n\
+             element face 2\nproperty list uchar int vertex_indices\nend_header\n\
+             0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n4 0 1 2 3\n3 0 1 4\n",
+        );
+        let a = load(&obj).expect("obj loads");
+        let b = load(&ply).expect("ply loads");
+        assert_eq!(a, b);
+        assert_eq!(a.triangles, vec![[0, 1, 2], [0, 2, 3], [0, 1, 4]]);
+        assert_eq!(a.positions.len(), 5);
+    }
+
+    #[test]
+    fn bad_files_are_errors_not_panics() {
+        let dir = tempfile::tempdir().expect("tempdir");
+        let missing = load(&dir.path().join("none.obj"));
+        assert!(matches!(missing, Err(MeshFileError::Io(_))), "{missing:?}");
+        let txt = write(dir.path(), "mesh.txt", "v 0 0 0\n");
+        assert!(matches!(load(&txt), Err(MeshFileError::UnknownFormat)));
+        let no_faces = write(dir.path(), "empty.obj", "v 0 0 0\nv 1 0 0\n");
+        assert!(matches!(load(&no_faces), Err(MeshFileError::Invalid(_))));
+        let out_of_range = write(
+            dir.path(),
+            "range.obj",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n",
+        );
+        assert!(load(&out_of_range).is_err());
+        let garbage = write(
+            dir.path(),
+            "garbage.ply",
+            "ply\nformat ascii 1.0\nelement vertex x\n",
+        );
+        assert!(matches!(load(&garbage), Err(MeshFileError::Invalid(_))));
+        let no_xyz = write(
+            dir.path(),
+            "noxyz.ply",
+            "ply\nformat ascii 1.0\nelement vertex 1\nproperty float u\nelement face 0\n\
+             property list uchar int vertex_indices\nend_header\n0\n",
+        );
+        assert!(matches!(load(&no_xyz), Err(MeshFileError::Invalid(_))));
+    }
+
+    #[test]
+    fn layout_puts_the_farthest_vertex_at_the_size() {
+        let data = MeshData {
+            positions: vec![
+                DVec3::new(-2.0, 0.0, 0.0),
+                DVec3::new(2.0, 0.0, 0.0),
+                DVec3::new(0.0, 1.0, 0.0),
+            ],
+            triangles: vec![[0, 1, 2]],
+        };
+        let pts = data.layout(3.0).expect("layout");
+        // Box centre (0, 0.5, 0); farthest vertices at sqrt(4.25).
+        let far = pts[0].distance_from_origin();
+        assert!((far - 3.0).abs() < 1e-12, "{far}");
+        let near = pts[2].distance_from_origin();
+        assert!((near - 3.0 * 0.5 / 4.25f64.sqrt()).abs() < 1e-12, "{near}");
+        // Directions are kept.
+        assert!(pts[2].coords().normalize().abs_diff_eq(DVec3::Y, 1e-15));
+        let flat = MeshData {
+            positions: vec![DVec3::ONE; 3],
+            triangles: vec![[0, 1, 2]],
+        };
+        assert!(flat.layout(1.0).is_none());
+    }
+}
