@@ -107,7 +107,7 @@ fn render(args: &RenderArgs) -> ExitCode {
     let stderr_tty = std::io::stderr().is_terminal();
     let first = args.frame.unwrap_or(0);
     let compiled = hscene_lang::compile_with(&source, &compile_options(&args.scene, first));
-    if !compiled.diagnostics.is_empty() {
+    let show = |diagnostics: &[hscene_lang::Diagnostic]| {
         let format = if stderr_tty {
             Format::Human
         } else {
@@ -115,14 +115,11 @@ fn render(args: &RenderArgs) -> ExitCode {
         };
         eprint!(
             "{}",
-            report::format_diagnostics(
-                &args.scene,
-                &source,
-                &compiled.diagnostics,
-                format,
-                stderr_tty
-            )
+            report::format_diagnostics(&args.scene, &source, diagnostics, format, stderr_tty)
         );
+    };
+    if !compiled.diagnostics.is_empty() {
+        show(&compiled.diagnostics);
     }
     let Some(scene) = compiled.scene else {
         return ExitCode::from(EXIT_SCENE_ERRORS);
@@ -151,17 +148,8 @@ fn render(args: &RenderArgs) -> ExitCode {
             match compiled.scene {
                 Some(s) => s,
                 None => {
-                    eprintln!("error: frame {k}:");
-                    eprint!(
-                        "{}",
-                        report::format_diagnostics(
-                            &args.scene,
-                            &source,
-                            &compiled.diagnostics,
-                            Format::Short,
-                            false
-                        )
-                    );
+                    eprintln!("error: frame {k} of the animation has errors:");
+                    show(&compiled.diagnostics);
                     return ExitCode::from(EXIT_SCENE_ERRORS);
                 }
             }

@@ -150,32 +150,7 @@ impl<'s> Tracer<'s> {
                 color += self.area_light(light, &shading, stream, stats);
                 continue;
             }
-            // A light exactly at the hit point has no direction: it lights
-            // nothing there (its attenuation would be infinite).
-            let Some((to_light, dist)) = lorentz::direction_towards(p, light.position) else {
-                continue;
-            };
-            let cos_theta = lorentz::dot(n, to_light);
-            if !(cos_theta > 0.0) {
-                continue;
-            }
-            let cos_theta = cos_theta.min(1.0);
-            stats.rays += 1;
-            let shadow = self.scene.transmittance(
-                &Ray {
-                    origin: p,
-                    dir: to_light,
-                },
-                T_MIN,
-                dist,
-            );
-            if shadow == 0.0 {
-                continue;
-            }
-            // The area of the hyperbolic sphere of radius r is 4 pi sinh^2 r.
-            let sinh = dist.sinh();
-            let f_att = 1.0 / (4.0 * PI * sinh * sinh);
-            color += shading.phong(light, to_light, cos_theta) * (shadow * f_att);
+            color += self.point_light(light, light.position, &shading, stats);
         }
 
         if depth < self.scene.max_depth {
@@ -205,6 +180,43 @@ impl<'s> Tracer<'s> {
             }
         }
         color
+    }
+
+    /// What `light`, emitting from `from` as a point source, gives the
+    /// shading point: Phong times the shadow ray's transmittance times the
+    /// attenuation `1/(4 pi sinh^2 r)` (the area of the hyperbolic sphere of
+    /// radius r). Nothing when `from` is the shading point itself (no
+    /// direction; the attenuation would be infinite) or lies behind the
+    /// surface.
+    fn point_light(
+        &self,
+        light: &PreparedLight,
+        from: DVec4,
+        at: &Shading<'_>,
+        stats: &mut TraceStats,
+    ) -> Color {
+        let Some((to_light, dist)) = lorentz::direction_towards(at.p, from) else {
+            return Color::default();
+        };
+        let cos_theta = lorentz::dot(at.n, to_light);
+        if !(cos_theta > 0.0) {
+            return Color::default();
+        }
+        stats.rays += 1;
+        let shadow = self.scene.transmittance(
+            &Ray {
+                origin: at.p,
+                dir: to_light,
+            },
+            T_MIN,
+            dist,
+        );
+        if shadow == 0.0 {
+            return Color::default();
+        }
+        let sinh = dist.sinh();
+        let f_att = 1.0 / (4.0 * PI * sinh * sinh);
+        at.phong(light, to_light, cos_theta.min(1.0)) * (shadow * f_att)
     }
 
     /// Direct light from a spherical area light: the light is the h-sphere
@@ -254,31 +266,9 @@ impl<'s> Tracer<'s> {
             let u = towards * cos_phi + (b1 * psi.cos() + b2 * psi.sin()) * sin_phi;
             let q = cosh_r * centre + sinh_r * u;
             // A sample that coincides with the shading point (a point on
-            // the light's surface, to rounding) has no direction; like a
-            // point light at the hit, it lights nothing there.
-            let Some((to_q, d)) = lorentz::direction_towards(at.p, q) else {
-                continue;
-            };
-            let cos_theta = lorentz::dot(at.n, to_q);
-            if !(cos_theta > 0.0) {
-                continue;
-            }
-            let cos_theta = cos_theta.min(1.0);
-            stats.rays += 1;
-            let shadow = self.scene.transmittance(
-                &Ray {
-                    origin: at.p,
-                    dir: to_q,
-                },
-                T_MIN,
-                d,
-            );
-            if shadow == 0.0 {
-                continue;
-            }
-            let sinh = d.sinh();
-            let f_att = 1.0 / (4.0 * PI * sinh * sinh);
-            sum += at.phong(light, to_q, cos_theta) * (shadow * f_att);
+            // the light's surface, to rounding) lights nothing there, like a
+            // point light at the hit.
+            sum += self.point_light(light, q, at, stats);
         }
         sum * (cap / count)
     }

@@ -8,30 +8,8 @@ mod common;
 use common::*;
 use hgeom::HPlane;
 use hgeom::glam::DVec3;
-use hrender::{Image, RenderOptions, render};
+use hrender::RenderOptions;
 use hscene_lang::ir::{Light, Material, Net, Rgb, Scene, Shape};
-
-fn draw_with(scene: &Scene, options: &RenderOptions) -> Image {
-    let out = render(scene, options, &|_| {}).expect("render");
-    assert_eq!(out.stats.numeric_failures, 0);
-    assert!(out.image.pixels().iter().flatten().all(|c| c.is_finite()));
-    out.image
-}
-
-fn draw(scene: &Scene) -> Image {
-    draw_with(scene, &RenderOptions::default())
-}
-
-/// Fraction of pixels whose channels all agree within `tol`.
-fn agreement(a: &Image, b: &Image, tol: f32) -> f64 {
-    let good = a
-        .pixels()
-        .iter()
-        .zip(b.pixels())
-        .filter(|(p, q)| (0..3).all(|c| (p[c] - q[c]).abs() <= tol))
-        .count();
-    good as f64 / a.pixels().len() as f64
-}
 
 /// A grey Lambertian material (no highlights), with a little ambient.
 fn grey() -> Material {

@@ -6,15 +6,8 @@ mod common;
 
 use common::*;
 use hgeom::glam::DVec3;
-use hrender::{Image, RenderOptions, render};
-use hscene_lang::ir::{Net, Rgb, Scene};
-
-fn draw(scene: &Scene) -> Image {
-    let out = render(scene, &RenderOptions::default(), &|_| {}).expect("render");
-    assert_eq!(out.stats.numeric_failures, 0);
-    assert!(out.image.pixels().iter().flatten().all(|c| c.is_finite()));
-    out.image
-}
+use hrender::Image;
+use hscene_lang::ir::{Net, Rgb};
 
 /// Fraction of pixels whose channels all agree within `tol`; `flip` compares
 /// pixel `(x, y)` of `a` with `(W-1-x, y)` of `b`.

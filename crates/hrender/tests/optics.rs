@@ -10,19 +10,8 @@ mod common;
 
 use common::*;
 use hgeom::glam::{DVec3, DVec4};
-use hrender::{Image, RenderOptions, render};
-use hscene_lang::ir::{Material, Net, Rgb, Scene};
-
-fn draw_with(scene: &Scene, options: &RenderOptions) -> Image {
-    let out = render(scene, options, &|_| {}).expect("render");
-    assert_eq!(out.stats.numeric_failures, 0);
-    assert!(out.image.pixels().iter().flatten().all(|c| c.is_finite()));
-    out.image
-}
-
-fn draw(scene: &Scene) -> Image {
-    draw_with(scene, &RenderOptions::default())
-}
+use hrender::RenderOptions;
+use hscene_lang::ir::{Material, Net, Rgb};
 
 /// A material that only mirrors.
 fn mirror() -> Material {

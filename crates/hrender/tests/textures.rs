@@ -7,26 +7,8 @@ mod common;
 use common::*;
 use hgeom::glam::{DMat3, DVec3};
 use hgeom::{HPlane, Isometry, from_fermi_coordinates};
-use hrender::{Image, RenderOptions, render};
+use hrender::Image;
 use hscene_lang::ir::{Material, Net, Rgb, Scene, Shape};
-
-fn draw(scene: &Scene) -> Image {
-    let out = render(scene, &RenderOptions::default(), &|_| {}).expect("render");
-    assert_eq!(out.stats.numeric_failures, 0);
-    assert!(out.image.pixels().iter().flatten().all(|c| c.is_finite()));
-    out.image
-}
-
-/// Fraction of pixels whose channels all agree within `tol`.
-fn agreement(a: &Image, b: &Image, tol: f32) -> f64 {
-    let good = a
-        .pixels()
-        .iter()
-        .zip(b.pixels())
-        .filter(|(p, q)| (0..3).all(|c| (p[c] - q[c]).abs() <= tol))
-        .count();
-    good as f64 / a.pixels().len() as f64
-}
 
 /// A light grey material without highlights, so hue tells the cells apart.
 fn pale() -> Material {

@@ -15,6 +15,30 @@ use hscene_lang::ir::{
     Shape, Texture, Window,
 };
 
+/// Renders with `options`, checking that no pixel failed or is non-finite.
+pub fn draw_with(scene: &Scene, options: &hrender::RenderOptions) -> hrender::Image {
+    let out = hrender::render(scene, options, &|_| {}).expect("render");
+    assert_eq!(out.stats.numeric_failures, 0);
+    assert!(out.image.pixels().iter().flatten().all(|c| c.is_finite()));
+    out.image
+}
+
+/// Renders with the default options (see [`draw_with`]).
+pub fn draw(scene: &Scene) -> hrender::Image {
+    draw_with(scene, &hrender::RenderOptions::default())
+}
+
+/// Fraction of pixels whose channels all agree within `tol`.
+pub fn agreement(a: &hrender::Image, b: &hrender::Image, tol: f32) -> f64 {
+    let good = a
+        .pixels()
+        .iter()
+        .zip(b.pixels())
+        .filter(|(p, q)| (0..3).all(|c| (p[c] - q[c]).abs() <= tol))
+        .count();
+    good as f64 / a.pixels().len() as f64
+}
+
 /// An h-point from ball coordinates.
 pub fn p(x: f64, y: f64, z: f64) -> Point {
     Point::try_new(DVec3::new(x, y, z)).expect("test point inside the ball")
