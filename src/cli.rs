@@ -40,10 +40,11 @@ pub struct RenderArgs {
     /// Worker threads (default: all cores).
     #[arg(long)]
     pub threads: Option<usize>,
-    /// Samples per pixel for anti-aliasing (1 = the pixel centre; a square
-    /// number is stratified, any other jittered; box-filtered).
-    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=i64::from(hrender::MAX_SAMPLES)))]
-    pub samples: u32,
+    /// Samples per pixel for anti-aliasing, overriding the scene's
+    /// `samples` (default 1 = the pixel centre; a square number is
+    /// stratified, any other jittered; box-filtered).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=i64::from(hrender::MAX_SAMPLES)))]
+    pub samples: Option<u32>,
     /// Seed of the sample jitter; the same seed gives the same image.
     #[arg(long, default_value_t = 0)]
     pub seed: u64,

@@ -26,6 +26,7 @@ pub fn scene_to_json(path: &Path, scene: &Scene) -> Value {
             "net_type": s.net.index(),
             "background": rgb(s.background),
             "ambient": rgb(s.ambient),
+            "samples": s.samples,
             "frames": s.frames,
         },
         "frame": scene.frame,

@@ -213,3 +213,35 @@ fn every_shipped_scene_checks_clean() {
         .success()
         .stdout(predicates::str::contains("error").not());
 }
+
+#[test]
+fn the_scenes_samples_setting_anti_aliases_and_the_option_overrides_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("aa.hsc");
+    let source = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/thesis-appendix-a.hsc"),
+    )
+    .unwrap();
+    fs::write(&scene, format!("{source}\nGlobals {{ samples = 4; }}\n")).unwrap();
+    let render = |scene: &Path, name: &str, extra: &[&str]| -> Vec<u8> {
+        let out = dir.path().join(name);
+        hscene()
+            .arg("render")
+            .arg(scene)
+            .args(["--resolution", "24x24"])
+            .args(extra)
+            .arg("-o")
+            .arg(&out)
+            .assert()
+            .success();
+        fs::read(out).unwrap()
+    };
+    let original = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/thesis-appendix-a.hsc");
+    let from_scene = render(&scene, "a.png", &[]);
+    let from_option = render(&original, "b.png", &["--samples", "4"]);
+    assert_eq!(from_scene, from_option, "`samples = 4` is `--samples 4`");
+    let overridden = render(&scene, "c.png", &["--samples", "1"]);
+    let plain = render(&original, "d.png", &[]);
+    assert_eq!(overridden, plain, "`--samples 1` overrides the scene");
+    assert_ne!(from_scene, plain);
+}

@@ -46,7 +46,7 @@ pub use scene::{Nearest, PreparedScene};
 pub use tracer::{TraceStats, Tracer};
 
 /// Most samples per pixel a render accepts.
-pub const MAX_SAMPLES: u32 = 4096;
+pub const MAX_SAMPLES: u32 = hscene_lang::MAX_SAMPLES;
 
 /// Largest exposure correction, in stops, either way: `2^64` already maps
 /// the faintest visible radiance onto the brightest.
@@ -61,10 +61,11 @@ pub struct RenderOptions {
     pub resolution: Option<Resolution>,
     /// Worker threads; `None` uses all cores.
     pub threads: Option<usize>,
-    /// Samples per pixel, `1..=MAX_SAMPLES`, averaged with a box filter.
-    /// One sample looks through the pixel centre; more are jittered
-    /// (stratified when the count is a perfect square).
-    pub samples: u32,
+    /// Samples per pixel, `1..=MAX_SAMPLES`, instead of the scene's
+    /// `samples` setting; averaged with a box filter. One sample looks
+    /// through the pixel centre; more are jittered (stratified when the
+    /// count is a perfect square).
+    pub samples: Option<u32>,
     /// Seed of the sample jitter: the same seed gives the same image.
     pub seed: u64,
     /// Exposure correction in stops (EV): linear radiance is multiplied by
@@ -79,7 +80,7 @@ impl Default for RenderOptions {
             net: None,
             resolution: None,
             threads: None,
-            samples: 1,
+            samples: None,
             seed: 0,
             exposure: 0.0,
         }
@@ -89,10 +90,11 @@ impl Default for RenderOptions {
 impl RenderOptions {
     /// Check the ranges the renderer relies on.
     pub fn validate(&self) -> Result<(), RenderError> {
-        if !(1..=MAX_SAMPLES).contains(&self.samples) {
+        if let Some(samples) = self.samples
+            && !(1..=MAX_SAMPLES).contains(&samples)
+        {
             return Err(RenderError::InvalidOption(format!(
-                "samples must be from 1 to {MAX_SAMPLES}, not {}",
-                self.samples
+                "samples must be from 1 to {MAX_SAMPLES}, not {samples}"
             )));
         }
         if !(self.exposure.is_finite() && self.exposure.abs() <= MAX_EXPOSURE) {
@@ -315,7 +317,13 @@ fn render_in_pool(
         window: scene.settings.window,
         width,
         height,
-        sampler: Sampler::new(options.samples, options.seed),
+        sampler: Sampler::new(
+            options
+                .samples
+                .unwrap_or(scene.settings.samples)
+                .clamp(1, MAX_SAMPLES),
+            options.seed,
+        ),
         scale: options.exposure.exp2(),
         tracer: Tracer::new(&prepared),
         background: Color::from(prepared.background),

@@ -160,7 +160,7 @@ fn area_lights_cast_soft_shadows() {
 fn area_lights_are_deterministic_across_threads() {
     let s = shadow_scene(shadow_light(0.15, 3), true);
     let opts = |samples, seed, threads| RenderOptions {
-        samples,
+        samples: Some(samples),
         seed,
         threads: Some(threads),
         ..Default::default()

@@ -323,7 +323,7 @@ fn beyond_the_hyperboloid_failures_are_counted_not_hidden() {
 fn anti_aliasing_is_deterministic_and_averages() {
     let s = mixed_scene(Net::Euclidean, 40, 0.12);
     let opts = |samples, seed, threads| RenderOptions {
-        samples,
+        samples: Some(samples),
         seed,
         threads: Some(threads),
         ..Default::default()
@@ -386,7 +386,7 @@ fn anti_aliasing_is_deterministic_and_averages() {
 fn anti_aliasing_in_net_four() {
     let s = mixed_scene(Net::EquidistantInterpolated, 32, 0.12);
     let o = RenderOptions {
-        samples: 4,
+        samples: Some(4),
         seed: 1,
         ..Default::default()
     };
@@ -417,11 +417,11 @@ fn bad_options_are_errors() {
     let s = mixed_scene(Net::Euclidean, 4, 0.12);
     for o in [
         RenderOptions {
-            samples: 0,
+            samples: Some(0),
             ..Default::default()
         },
         RenderOptions {
-            samples: hrender::MAX_SAMPLES + 1,
+            samples: Some(hrender::MAX_SAMPLES + 1),
             ..Default::default()
         },
         RenderOptions {

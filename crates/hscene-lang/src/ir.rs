@@ -106,6 +106,9 @@ pub struct Settings {
     pub background: Rgb,
     /// Ambient light intensity `I_a`.
     pub ambient: Rgb,
+    /// Anti-aliasing: samples per pixel (`samples = N`), 1 for the pixel
+    /// centre only. Invariant: `1..=MAX_SAMPLES` of hscene-lang.
+    pub samples: u32,
     /// Number of animation frames (`frames = N`); 1 for a still scene.
     /// Invariant: at least 1.
     pub frames: u32,

@@ -23,7 +23,7 @@ mod parser;
 pub mod syntax;
 
 pub use diagnostic::{Code, Diagnostic, LineIndex, Severity, Span};
-pub use lower::{MAX_FRAMES, MAX_PIXELS};
+pub use lower::{MAX_FRAMES, MAX_PIXELS, MAX_SAMPLES};
 pub use parser::{Parsed, parse};
 
 /// The result of compiling a scene: the IR if there were no errors, and every

@@ -55,6 +55,9 @@ const IDEAL_TOLERANCE: f64 = 1e-12;
 /// Largest accepted image side, to keep allocations sane.
 const MAX_RESOLUTION: u64 = 32_768;
 
+/// Most anti-aliasing samples per pixel a scene may ask for.
+pub const MAX_SAMPLES: u32 = 4096;
+
 /// Most animation frames a scene may declare.
 pub const MAX_FRAMES: u32 = 100_000;
 
@@ -86,6 +89,7 @@ fn default_settings() -> Settings {
         net: Net::Euclidean,
         background: Rgb::BLACK,
         ambient: Rgb::new(0.1, 0.1, 0.1),
+        samples: 1,
         frames: 1,
     }
 }
@@ -942,6 +946,11 @@ impl Lowerer<'_> {
                                 .with_help("net_type is 0 (Euclidean), 1 (hyperparallel h-lines), 2 (great disk), 3 (h-equidistants) or 4 (h-equidistants, interpolated)"),
                         ),
                     }
+                }
+            }
+            "samples" => {
+                if let Some(n) = self.integer(value, 1, u64::from(MAX_SAMPLES), "samples") {
+                    self.settings.samples = n as u32;
                 }
             }
             "frames" => {
@@ -1915,6 +1924,7 @@ const GLOBAL_KEYS: &[&str] = &[
     "resolution",
     "window_size",
     "net_type",
+    "samples",
     "frames",
     "from",
     "to",
@@ -1961,7 +1971,7 @@ fn section_meant(name: &str) -> Option<&'static str> {
         .copied()
 }
 
-const GLOBAL_KEYS_HELP: &str = "globals are recursion_depth, resolution, window_size, net_type, frames, from, to, up, background, ambient";
+const GLOBAL_KEYS_HELP: &str = "globals are recursion_depth, resolution, window_size, net_type, samples, frames, from, to, up, background, ambient";
 
 /// A reference as written, shortened like [`quote`] (without the backticks).
 fn reference_text(r: &Reference) -> String {

@@ -288,6 +288,7 @@ fn appendix_a_compiles_with_one_warning() {
             net: Net::Euclidean,
             background: Rgb::BLACK,
             ambient: Rgb::new(0.1, 0.1, 0.1),
+            samples: 1,
             frames: 1,
         }
     );
@@ -561,6 +562,7 @@ fn empty_file_gets_the_documented_defaults() {
                 net: Net::Euclidean,
                 background: Rgb::new(0.0, 0.0, 0.0),
                 ambient: Rgb::new(0.1, 0.1, 0.1),
+                samples: 1,
                 frames: 1,
             }
         );

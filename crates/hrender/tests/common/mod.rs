@@ -99,6 +99,7 @@ pub fn settings(net: Net, size: u32, window: f64) -> Settings {
         net,
         background: Rgb::new(0.05, 0.05, 0.1),
         ambient: Rgb::new(0.2, 0.2, 0.2),
+        samples: 1,
         frames: 1,
     }
 }
