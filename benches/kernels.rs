@@ -17,7 +17,7 @@ fn rays(n: usize) -> Vec<Ray> {
     (0..n)
         .map(|i| {
             let a = i as f64 * 0.618_033_988_749_895;
-            Ray::from_origin(DVec3::new(0.3 * a.sin(), 0.3 * a.cos(), 1.0))
+            Ray::from_origin_unchecked(DVec3::new(0.3 * a.sin(), 0.3 * a.cos(), 1.0))
         })
         .collect()
 }
@@ -32,8 +32,8 @@ fn bench_kernel(c: &mut Criterion, name: &str, rs: &[Ray], hit: impl Fn(&Ray) ->
 
 fn kernels(c: &mut Criterion) {
     let rs = rays(1024);
-    let p = |x: f64, y: f64, z: f64| Point::try_new(DVec3::new(x, y, z)).unwrap();
-    let sphere = HSphere::try_new(p(0.02, -0.01, 0.2), 0.1).unwrap();
+    let p = |x: f64, y: f64, z: f64| Point::from_coords(DVec3::new(x, y, z)).unwrap();
+    let sphere = HSphere::new(p(0.02, -0.01, 0.2), 0.1).unwrap();
     bench_kernel(c, "sphere_intersect_x1024", &rs, |r| {
         sphere.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
@@ -46,19 +46,19 @@ fn kernels(c: &mut Criterion) {
     bench_kernel(c, "plane_intersect_x1024", &rs, |r| {
         plane.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
-    let polygon = ConvexPolygon::try_new(vec![a.into(), b.into(), q.into()]).unwrap();
+    let polygon = ConvexPolygon::new(vec![a.into(), b.into(), q.into()]).unwrap();
     bench_kernel(c, "triangle_intersect_x1024", &rs, |r| {
         polygon.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
-    let cylinder = HCylinder::try_new(HLine::through(&a.into(), &b.into()).unwrap(), 0.05).unwrap();
+    let cylinder = HCylinder::new(HLine::through(&a.into(), &b.into()).unwrap(), 0.05).unwrap();
     bench_kernel(c, "cylinder_intersect_x1024", &rs, |r| {
         cylinder.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
-    let rod = Rod::try_new(a.into(), b.into(), 0.05).unwrap();
+    let rod = Rod::new(a.into(), b.into(), 0.05).unwrap();
     bench_kernel(c, "rod_intersect_x1024", &rs, |r| {
         rod.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
-    let horosphere = Horosphere::try_new(
+    let horosphere = Horosphere::new(
         IdealPoint::from_direction(DVec3::Z).unwrap(),
         &p(0.0, 0.0, 0.3),
     )

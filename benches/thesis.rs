@@ -236,9 +236,9 @@ fn pov_source(c: &Case, resolution: u32) -> String {
     match c.kind {
         Kind::Spheres => {
             for p in sphere_centres(c.count) {
-                let Some((ec, er)) = Point::try_new(p)
+                let Some((ec, er)) = Point::from_coords(p)
                     .ok()
-                    .and_then(|p| HSphere::try_new(p, SPHERE_RADIUS).ok())
+                    .and_then(|p| HSphere::new(p, SPHERE_RADIUS).ok())
                     .map(|s| s.euclidean())
                 else {
                     continue;
@@ -277,7 +277,7 @@ fn hit_errors(scene: &Scene, k: u32) -> Result<(f64, f64, usize), String> {
             let Sample::Ray(dir) = net.sample(sx, sy) else {
                 continue;
             };
-            let ray = Ray::from_origin(dir);
+            let ray = Ray::from_origin_unchecked(dir);
             let Nearest::Hit(hit, index) = prepared.nearest(&ray, 0.0) else {
                 continue;
             };

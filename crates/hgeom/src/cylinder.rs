@@ -6,6 +6,7 @@ use crate::error::GeomError;
 use crate::isometry::Isometry;
 use crate::line::HLine;
 use crate::lorentz;
+use crate::point::Point;
 use crate::ray::{Hit, Ray};
 use crate::roots::{exp_roots, hit_at_first_root};
 
@@ -45,7 +46,7 @@ impl HCylinder {
     ///
     /// The line and radius are stored exactly; `sinh^2 r` is within a few
     /// ulps.
-    pub fn try_new(line: HLine, radius: f64) -> Result<HCylinder, GeomError> {
+    pub fn new(line: HLine, radius: f64) -> Result<HCylinder, GeomError> {
         let s = radius.sinh();
         if !(radius > 0.0 && (s * s).is_finite()) {
             return Err(GeomError::BadRadius(radius));
@@ -54,7 +55,7 @@ impl HCylinder {
     }
 
     /// The equidistant surface at distance `radius` from `line`, with
-    /// nothing checked: the `_unchecked` form of [`HCylinder::try_new`].
+    /// nothing checked: the `_unchecked` form of [`HCylinder::new`].
     ///
     /// # Preconditions
     ///
@@ -63,7 +64,7 @@ impl HCylinder {
     ///
     /// # Accuracy
     ///
-    /// As [`HCylinder::try_new`], and bit-identical to it on valid input
+    /// As [`HCylinder::new`], and bit-identical to it on valid input
     /// (`tests/constructors.rs`).
     #[inline]
     pub fn new_unchecked(line: HLine, radius: f64) -> HCylinder {
@@ -109,13 +110,24 @@ impl HCylinder {
         }
     }
 
+    /// True if the h-point `p` lies strictly inside: [`Self::contains_hyperboloid`]
+    /// of its hyperboloid image.
+    ///
+    /// # Accuracy
+    ///
+    /// As [`Self::contains_hyperboloid`], with `X` within 2 ulps of the exact image
+    /// ([`Point::to_hyperboloid`]).
+    pub fn contains(&self, p: &Point) -> bool {
+        self.contains_hyperboloid(p.to_hyperboloid())
+    }
+
     /// True if the hyperboloid point is strictly closer to the axis than `radius`.
     ///
     /// # Accuracy
     ///
     /// Decides `<X,N1>^2 + <X,N2>^2 < sinh^2 r` with the products rounded at
     /// about `eps |X| |M|` (`M` the frame): exact away from the surface.
-    pub fn contains(&self, x: DVec4) -> bool {
+    pub fn contains_hyperboloid(&self, x: DVec4) -> bool {
         let m = self.line.frame();
         let (c1, c2) = (lorentz::dot(x, m.x_axis), lorentz::dot(x, m.y_axis));
         c1 * c1 + c2 * c2 < self.sinh2_r
@@ -221,13 +233,13 @@ mod tests {
 
     fn z_axis_cylinder(r: f64) -> HCylinder {
         let line = HLine::from_point_direction(&Point::ORIGIN, DVec3::Z).unwrap();
-        HCylinder::try_new(line, r).unwrap()
+        HCylinder::new(line, r).unwrap()
     }
 
     #[test]
     fn ray_from_the_axis_hits_at_the_radius() {
         let cyl = z_axis_cylinder(0.4);
-        let ray = Ray::from_origin(DVec3::new(1.0, 0.5, 0.0));
+        let ray = Ray::from_origin_unchecked(DVec3::new(1.0, 0.5, 0.0));
         let hit = cyl.intersect(&ray, 1e-9, f64::INFINITY).unwrap();
         assert!((hit.t - 0.4).abs() < 1e-14, "{}", hit.t);
         assert!((hit.normal - ray.tangent_at(hit.t)).length() < 1e-13);
@@ -240,7 +252,7 @@ mod tests {
         // (right-angled triangle: hypotenuse t, angle theta opposite side r).
         let cyl = z_axis_cylinder(0.3);
         let theta = 0.6f64;
-        let ray = Ray::from_origin(DVec3::new(theta.sin(), 0.0, theta.cos()));
+        let ray = Ray::from_origin_unchecked(DVec3::new(theta.sin(), 0.0, theta.cos()));
         let hit = cyl.intersect(&ray, 1e-9, f64::INFINITY).unwrap();
         let want = (0.3f64.sinh() / theta.sin()).asinh();
         assert!((hit.t - want).abs() < 1e-14, "{} vs {want}", hit.t);
@@ -251,12 +263,12 @@ mod tests {
         let cyl = z_axis_cylinder(0.3);
         // Along the axis: never meets the surface.
         assert!(
-            cyl.intersect(&Ray::from_origin(DVec3::Z), 0.0, f64::INFINITY)
+            cyl.intersect(&Ray::from_origin_unchecked(DVec3::Z), 0.0, f64::INFINITY)
                 .is_none()
         );
         // From outside, parallel to the axis direction, misses; no NaN anywhere.
-        let out = Point::try_new(DVec3::new(0.5, 0.0, 0.0)).unwrap();
-        let ray = Ray::from_ball(&out, DVec3::Z);
+        let out = Point::from_coords(DVec3::new(0.5, 0.0, 0.0)).unwrap();
+        let ray = Ray::from_ball_unchecked(&out, DVec3::Z);
         let r = cyl.roots(&ray);
         assert!(r.is_none() || r.is_some_and(|(a, b)| !a.is_nan() && !b.is_nan()));
     }

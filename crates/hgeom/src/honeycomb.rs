@@ -142,7 +142,7 @@ pub fn tessellate(cell: &Polyhedron, depth: usize) -> Result<Vec<HoneycombCell>,
             let parent = placements[i].0;
             for mirror in &mirrors {
                 let placement = parent.compose(mirror);
-                let c = placement.try_apply(&centre)?;
+                let c = placement.checked_apply(&centre)?;
                 if find(&index, &centres, &c).is_some() {
                     continue;
                 }
@@ -187,7 +187,7 @@ pub fn honeycomb_435(depth: usize) -> Result<Vec<Polyhedron>, GeomError> {
 
 fn bucket(p: &Point) -> [i64; 3] {
     let x = p.to_hyperboloid().truncate() / BUCKET;
-    // `as` saturates; centres are finite (checked by try_apply).
+    // `as` saturates; centres are finite (checked by checked_apply).
     [x.x.floor() as i64, x.y.floor() as i64, x.z.floor() as i64]
 }
 

@@ -39,7 +39,7 @@ impl Horosphere {
     /// (`through_point_is_on_it_and_euclidean_form_is_tangent` in this
     /// module; `horosphere_level_is_the_euclidean_sphere` in
     /// `tests/derivations.rs`).
-    pub fn try_new(center: IdealPoint, through: &Point) -> Result<Horosphere, GeomError> {
+    pub fn new(center: IdealPoint, through: &Point) -> Result<Horosphere, GeomError> {
         if !through.is_representable() {
             return Err(GeomError::NotInBall {
                 norm: through.coords().length(),
@@ -102,13 +102,24 @@ impl Horosphere {
         }
     }
 
+    /// True if the h-point `p` lies strictly inside: [`Self::contains_hyperboloid`]
+    /// of its hyperboloid image.
+    ///
+    /// # Accuracy
+    ///
+    /// As [`Self::contains_hyperboloid`], with `X` within 2 ulps of the exact image
+    /// ([`Point::to_hyperboloid`]).
+    pub fn contains(&self, p: &Point) -> bool {
+        self.contains_hyperboloid(p.to_hyperboloid())
+    }
+
     /// True if the hyperboloid point is strictly inside the horoball.
     ///
     /// # Accuracy
     ///
     /// Decides `-<X,L> < k` with `<X,L>` rounded at about `eps |X|`: exact
     /// away from the surface.
-    pub fn contains(&self, x: DVec4) -> bool {
+    pub fn contains_hyperboloid(&self, x: DVec4) -> bool {
         -lorentz::dot(x, self.null) < self.k
     }
 
@@ -167,8 +178,8 @@ mod tests {
     #[test]
     fn through_point_is_on_it_and_euclidean_form_is_tangent() {
         let xi = IdealPoint::from_direction(DVec3::new(0.0, 0.0, 1.0)).unwrap();
-        let q = Point::try_new(DVec3::new(0.0, 0.0, 0.2)).unwrap();
-        let h = Horosphere::try_new(xi, &q).unwrap();
+        let q = Point::from_coords(DVec3::new(0.0, 0.0, 0.2)).unwrap();
+        let h = Horosphere::new(xi, &q).unwrap();
         let (c, r) = h.euclidean();
         assert!(((q.coords() - c).length() - r).abs() < 1e-15);
         assert!(((xi.coords() - c).length() - r).abs() < 1e-15);
@@ -178,10 +189,10 @@ mod tests {
     fn ray_towards_the_centre_hits_at_the_through_point() {
         let xi = IdealPoint::from_direction(DVec3::new(1.0, 1.0, 0.0)).unwrap();
         let q = Point::at_distance_from_origin(DVec3::new(1.0, 1.0, 0.0), 1.5).unwrap();
-        let h = Horosphere::try_new(xi, &q).unwrap();
+        let h = Horosphere::new(xi, &q).unwrap();
         let hit = h
             .intersect(
-                &Ray::from_origin(DVec3::new(1.0, 1.0, 0.0)),
+                &Ray::from_origin_unchecked(DVec3::new(1.0, 1.0, 0.0)),
                 0.0,
                 f64::INFINITY,
             )
@@ -191,13 +202,13 @@ mod tests {
         assert!(
             lorentz::dot(
                 hit.normal,
-                Ray::from_origin(DVec3::new(1.0, 1.0, 0.0)).tangent_at(hit.t)
+                Ray::from_origin_unchecked(DVec3::new(1.0, 1.0, 0.0)).tangent_at(hit.t)
             ) < -0.999
         );
         // A ray away from the centre misses.
         assert!(
             h.intersect(
-                &Ray::from_origin(DVec3::new(-1.0, -1.0, 0.0)),
+                &Ray::from_origin_unchecked(DVec3::new(-1.0, -1.0, 0.0)),
                 0.0,
                 f64::INFINITY
             )
@@ -208,10 +219,11 @@ mod tests {
     #[test]
     fn transformed_horosphere_contains_the_image_point() {
         let xi = IdealPoint::from_direction(DVec3::new(0.0, 1.0, 0.0)).unwrap();
-        let q = Point::try_new(DVec3::new(0.1, 0.3, -0.2)).unwrap();
-        let h = Horosphere::try_new(xi, &q).unwrap();
-        let iso =
-            Isometry::transvection_from_origin(Point::try_new(DVec3::new(0.4, -0.2, 0.1)).unwrap());
+        let q = Point::from_coords(DVec3::new(0.1, 0.3, -0.2)).unwrap();
+        let h = Horosphere::new(xi, &q).unwrap();
+        let iso = Isometry::transvection_from_origin(
+            Point::from_coords(DVec3::new(0.4, -0.2, 0.1)).unwrap(),
+        );
         let h2 = h.transformed(&iso);
         let q2 = iso.apply(&q).to_hyperboloid();
         assert!((-lorentz::dot(q2, h2.null) - h2.k).abs() < 1e-14 * h2.k.max(1.0));

@@ -18,7 +18,7 @@ use crate::segment::Segment;
 /// An isometry `x -> a (+) Q x` of hyperbolic space.
 ///
 /// Invariants: `a` is an h-point (with its accurate gap), `Q` is orthogonal
-/// to rounding (`|Q Q^T - I|` a few ulps; [`Isometry::orthogonal`] is the
+/// to rounding (`|Q Q^T - I|` a few ulps; [`Isometry::orthogonal_unchecked`] is the
 /// one constructor that trusts its caller for this). Application,
 /// composition and inversion are exact formulas.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -56,30 +56,30 @@ impl Isometry {
     /// A Euclidean orthogonal map of the ball fixing the origin (a rotation
     /// about the origin, or a reflection in a plane through it).
     ///
-    /// The hot-path form of [`Isometry::try_orthogonal`]: nothing is
+    /// The hot-path form of [`Isometry::orthogonal`]: nothing is
     /// checked. Precondition: `q` orthogonal to rounding; otherwise the
     /// result is not an isometry.
     ///
     /// # Accuracy
     ///
     /// Exact: stores `q` and `a = 0`.
-    pub fn orthogonal(q: DMat3) -> Isometry {
+    pub fn orthogonal_unchecked(q: DMat3) -> Isometry {
         Isometry {
             a: Point::ORIGIN,
             q,
         }
     }
 
-    /// [`Isometry::orthogonal`], checked: `q` must be finite and orthogonal
+    /// [`Isometry::orthogonal_unchecked`], checked: `q` must be finite and orthogonal
     /// to 1e-12 (`max |Q Q^T - I| <= 1e-12`, entrywise).
     ///
     /// Errors: [`GeomError::NotFinite`], [`GeomError::NotOrthogonal`].
     ///
     /// # Accuracy
     ///
-    /// As [`Isometry::orthogonal`]; identical to it on valid input
+    /// As [`Isometry::orthogonal_unchecked`]; identical to it on valid input
     /// (`tests/constructors.rs`).
-    pub fn try_orthogonal(q: DMat3) -> Result<Isometry, GeomError> {
+    pub fn orthogonal(q: DMat3) -> Result<Isometry, GeomError> {
         if !q.is_finite() {
             return Err(GeomError::NotFinite);
         }
@@ -93,7 +93,7 @@ impl Isometry {
         if !(defect <= 1e-12) {
             return Err(GeomError::NotOrthogonal { defect });
         }
-        Ok(Isometry::orthogonal(q))
+        Ok(Isometry::orthogonal_unchecked(q))
     }
 
     /// The reflection in an h-plane: inversion in its sphere, or the Euclidean
@@ -184,7 +184,7 @@ impl Isometry {
     /// counter-clockwise when looking from `end` back towards `start`
     /// (right-hand rule about the direction `start -> end`).
     ///
-    /// The hot-path form of [`Isometry::try_rotation`]: a NaN or infinite
+    /// The hot-path form of [`Isometry::rotation_about_segment`]: a NaN or infinite
     /// angle is not checked and gives a NaN map.
     ///
     /// # Accuracy
@@ -195,30 +195,46 @@ impl Isometry {
     /// turn about the axis equals `angle` to 1e-9 there. For a far axis
     /// (distance 8) it moves its own axis points by less than 1e-9
     /// (`composing_reflections_in_far_planes`).
-    pub fn rotation(axis: &Segment, angle: f64) -> Isometry {
+    pub fn rotation_about_segment_unchecked(axis: &Segment, angle: f64) -> Isometry {
         // Conjugate a rotation about a diameter: move start to the origin; the
         // differential of a transvection at the origin is a positive multiple of
         // the identity, so the axis direction and handedness carry over.
         let to_origin = Isometry::transvection_from_origin(axis.start()).inverse();
         let end = to_origin.apply(&axis.end());
         let u = end.coords().normalize();
-        let spin = Isometry::orthogonal(DMat3::from_axis_angle(u, angle));
+        let spin = Isometry::orthogonal_unchecked(DMat3::from_axis_angle(u, angle));
         to_origin.inverse().compose(&spin).compose(&to_origin)
     }
 
-    /// [`Isometry::rotation`], checked: the angle must be finite.
+    /// [`Isometry::rotation_about_segment_unchecked`], checked: the angle must be finite.
     ///
     /// Errors: [`GeomError::BadAngle`] for a NaN or infinite angle.
     ///
     /// # Accuracy
     ///
-    /// As [`Isometry::rotation`]; identical to it on valid input
+    /// As [`Isometry::rotation_about_segment_unchecked`]; identical to it on valid input
     /// (`tests/constructors.rs`).
-    pub fn try_rotation(axis: &Segment, angle: f64) -> Result<Isometry, GeomError> {
+    pub fn rotation_about_segment(axis: &Segment, angle: f64) -> Result<Isometry, GeomError> {
         if !angle.is_finite() {
             return Err(GeomError::BadAngle(angle));
         }
-        Ok(Isometry::rotation(axis, angle))
+        Ok(Isometry::rotation_about_segment_unchecked(axis, angle))
+    }
+
+    /// The isometry `x -> a (+) Qx` from its parts: the image `a` of the
+    /// origin ([`Isometry::translation_part`]) and the orthogonal linear
+    /// part ([`Isometry::linear_part`]), which must be finite and orthogonal
+    /// to 1e-12 as for [`Isometry::orthogonal_unchecked`].
+    ///
+    /// Errors: [`GeomError::NotFinite`], [`GeomError::NotOrthogonal`].
+    ///
+    /// # Accuracy
+    ///
+    /// Exact: the parts are stored as given, so
+    /// `Isometry::from_parts(f.translation_part(), f.linear_part())` is `f`.
+    pub fn from_parts(translation: Point, linear: DMat3) -> Result<Isometry, GeomError> {
+        let q = Isometry::orthogonal(linear)?.q;
+        Ok(Isometry { a: translation, q })
     }
 
     /// The image of the origin, `f(0) = a`.
@@ -262,7 +278,7 @@ impl Isometry {
     /// image. Distances are preserved to
     /// `1e-12 d + 1e-14` (`isometries_preserve_distance`). Not checked: an
     /// image beyond distance ~37 fails [`Point::is_representable`]; use
-    /// [`Isometry::try_apply`] where that can happen.
+    /// [`Isometry::checked_apply`] where that can happen.
     #[inline]
     pub fn apply(&self, p: &Point) -> Point {
         let (c, g) = add_raw(self.a.coords(), self.a.gap(), self.q * p.coords(), p.gap());
@@ -278,7 +294,7 @@ impl Isometry {
     /// # Accuracy
     ///
     /// As [`Isometry::apply`].
-    pub fn try_apply(&self, p: &Point) -> Result<Point, GeomError> {
+    pub fn checked_apply(&self, p: &Point) -> Result<Point, GeomError> {
         let q = self.apply(p);
         if q.is_representable() {
             Ok(q)
@@ -405,13 +421,27 @@ mod tests {
     use crate::distance::distance;
 
     fn p(x: f64, y: f64, z: f64) -> Point {
-        Point::try_new(DVec3::new(x, y, z)).unwrap()
+        Point::from_coords(DVec3::new(x, y, z)).unwrap()
+    }
+
+    #[test]
+    fn from_parts_rebuilds_an_isometry_exactly() {
+        let f = Isometry::translation(&Segment::new(p(0.1, 0.2, 0.3), p(-0.4, 0.1, 0.0)).unwrap())
+            .unwrap()
+            .compose(&Isometry::orthogonal_unchecked(DMat3::from_rotation_x(0.4)));
+        assert_eq!(
+            Isometry::from_parts(f.translation_part(), f.linear_part()),
+            Ok(f)
+        );
+        assert!(
+            Isometry::from_parts(Point::ORIGIN, DMat3::from_diagonal(DVec3::splat(2.0))).is_err()
+        );
     }
 
     #[test]
     fn translation_maps_start_to_end_and_fixes_the_line() {
         let (a, b) = (p(0.1, 0.2, 0.3), p(-0.4, 0.1, 0.0));
-        let t = Isometry::translation(&Segment::try_new(a, b).unwrap()).unwrap();
+        let t = Isometry::translation(&Segment::new(a, b).unwrap()).unwrap();
         assert!((t.apply(&a).coords() - b.coords()).length() < 1e-14);
         assert!(t.preserves_orientation());
         // Transvection along AB equals the Möbius conjugate tau_A tau_w tau_{-A}.
@@ -442,8 +472,8 @@ mod tests {
 
     #[test]
     fn rotation_about_the_y_axis_follows_the_right_hand_rule() {
-        let axis = Segment::try_new(Point::ORIGIN, p(0.0, 0.1, 0.0)).unwrap();
-        let rot = Isometry::rotation(&axis, std::f64::consts::FRAC_PI_2);
+        let axis = Segment::new(Point::ORIGIN, p(0.0, 0.1, 0.0)).unwrap();
+        let rot = Isometry::rotation_about_segment_unchecked(&axis, std::f64::consts::FRAC_PI_2);
         // Right-hand rule about +y takes +z to +x.
         let img = rot.apply(&p(0.0, 0.0, 0.5));
         assert!((img.coords() - DVec3::new(0.5, 0.0, 0.0)).length() < 1e-15);
@@ -451,8 +481,8 @@ mod tests {
 
     #[test]
     fn rotation_fixes_its_axis_and_preserves_distances() {
-        let axis = Segment::try_new(p(0.2, 0.1, 0.0), p(-0.1, 0.4, 0.3)).unwrap();
-        let rot = Isometry::rotation(&axis, 1.234);
+        let axis = Segment::new(p(0.2, 0.1, 0.0), p(-0.1, 0.4, 0.3)).unwrap();
+        let rot = Isometry::rotation_about_segment_unchecked(&axis, 1.234);
         for q in [axis.start(), axis.end()] {
             assert!((rot.apply(&q).coords() - q.coords()).length() < 1e-14);
         }
@@ -464,9 +494,9 @@ mod tests {
 
     #[test]
     fn inverse_undoes() {
-        let axis = Segment::try_new(p(0.2, 0.1, 0.0), p(-0.1, 0.4, 0.3)).unwrap();
-        let m = Isometry::rotation(&axis, 0.7).compose(
-            &Isometry::translation(&Segment::try_new(p(0.0, 0.0, 0.0), p(0.0, 0.0, 0.16)).unwrap())
+        let axis = Segment::new(p(0.2, 0.1, 0.0), p(-0.1, 0.4, 0.3)).unwrap();
+        let m = Isometry::rotation_about_segment_unchecked(&axis, 0.7).compose(
+            &Isometry::translation(&Segment::new(p(0.0, 0.0, 0.0), p(0.0, 0.0, 0.16)).unwrap())
                 .unwrap(),
         );
         let x = p(0.5, 0.1, -0.2);

@@ -1,60 +1,4 @@
-//! # hgeom — exact geometry of hyperbolic 3-space in the Poincaré ball
-//!
-//! Points, ideal points, h-lines, h-planes, h-spheres, h-cylinders, rods,
-//! horospheres, polygons and polyhedra, isometries (reflections,
-//! translations, rotations and their compositions), distances, and ray
-//! intersections — all exact formulas, evaluated with care for the hard
-//! cases (points next to the absolute, tiny and huge distances, grazing
-//! rays, long chains of isometries).
-//!
-//! The public face is the Poincaré ball: a [`Point`] is a Euclidean vector of
-//! norm below 1. Internally each type uses whatever exact representation is
-//! best conditioned: points carry their gap `1 - |x|^2` computed with
-//! compensated arithmetic; isometries are kept in gyrovector form
-//! `x -> a (+) Q x`; rays, planes and spheres are intersected on the
-//! hyperboloid, where every quantity is a Lorentz inner product. Every
-//! formula is derived in `docs/geometry.md`, and every public function states
-//! its accuracy in an `# Accuracy` section, measured by the tests (against a
-//! 320-bit reference in `tests/reference.rs`; run
-//! `cargo run --release -p hgeom --example accuracy` for the full table).
-//!
-//! Invalid input is rejected with a typed [`GeomError`] by the `try_*`
-//! constructors (and the named constructors that return `Result`, such as
-//! [`HPlane::through`]); hot paths have `_unchecked` forms
-//! ([`Point::new_unchecked`], [`HSphere::new_unchecked`],
-//! [`HCylinder::new_unchecked`], [`IdealPoint::from_unit_unchecked`]) whose
-//! preconditions are documented. Nothing is clamped into range silently.
-//!
-//! ```
-//! use glam::DVec3;
-//! use hgeom::{distance, HCylinder, HLine, HSphere, Isometry, Point, Ray, Segment};
-//!
-//! // Distance between two points.
-//! let a = Point::try_new(DVec3::new(0.5, 0.0, 0.0)).unwrap();
-//! let b = Point::try_new(DVec3::new(0.0, 0.5, 0.0)).unwrap();
-//! let d = distance(&a, &b);
-//!
-//! // Moving a point: the translation along a->b maps a to b, and preserves distances.
-//! let t = Isometry::translation(&Segment::try_new(a, b).unwrap()).unwrap();
-//! assert!((t.apply(&a).coords() - b.coords()).length() < 1e-15);
-//! assert!((distance(&t.apply(&a), &t.apply(&b)) - d).abs() < 1e-14);
-//!
-//! // A ray from the origin along +z meets a sphere of radius 0.2 about a point on the z axis.
-//! let c = Point::try_new(DVec3::new(0.0, 0.0, 0.5)).unwrap();
-//! let sphere = HSphere::try_new(c, 0.2).unwrap();
-//! let hit = sphere.intersect(&Ray::from_origin(DVec3::Z), 0.0, f64::INFINITY).unwrap();
-//! assert!((hit.t - (c.distance_from_origin() - 0.2)).abs() < 1e-14);
-//!
-//! // The h-cylinder of radius 0.3 about the z axis (the h-line through the
-//! // origin and c). A ray leaving the axis at angle theta to it reaches the
-//! // surface where sinh r = sinh t sin theta (a right-angled triangle).
-//! let axis = HLine::through(&Point::ORIGIN.into(), &c.into()).unwrap();
-//! let tube = HCylinder::try_new(axis, 0.3).unwrap();
-//! let theta = 0.6f64;
-//! let ray = Ray::from_origin(DVec3::new(theta.sin(), 0.0, theta.cos()));
-//! let hit = tube.intersect(&ray, 0.0, f64::INFINITY).unwrap();
-//! assert!((hit.t - (0.3f64.sinh() / theta.sin()).asinh()).abs() < 1e-14);
-//! ```
+#![doc = include_str!("../README.md")]
 //!
 //! ## Module map
 //!
@@ -62,7 +6,7 @@
 //! |---|---|
 //! | [`accurate`] | error-free products and sums; the compensated gap `1 - \|x\|^2` |
 //! | `point` | [`Point`] (with its accurate gap), [`IdealPoint`], [`Vertex`] |
-//! | `distance` | [`distance`] in the `2 asinh` form |
+//! | `distance` | [`Point::distance`] in the `2 asinh` form |
 //! | [`mobius`] | Möbius addition and the gyration: the algebra of isometries |
 //! | `isometry` | [`Isometry`] `x -> a (+) Qx`: reflections, translations, rotations, composition, inverse, Lorentz matrix |
 //! | [`lorentz`] | the hyperboloid model: Lorentz form, orthogonal complement, geodesics |
@@ -81,6 +25,9 @@
 //! | `mesh` | [`TriangleMesh`]: triangle meshes with a Klein-coordinate BVH and a watertight exact test |
 //! | `honeycomb` | the {4,3,5} cube and tessellation by reflections |
 //! | `error` | [`GeomError`] |
+//! | `shape` | the [`Shape`] and [`Solid`] traits every surface implements |
+//! | `ops` | `Isometry * Point`, `Isometry * Isometry` |
+//! | `serde_impls` | the `serde` feature's exact, validating forms |
 //! | `fermi` | [`fermi_coordinates`] about the origin and their inverse (solid textures) |
 
 // `!(x > 0.0)` is deliberate throughout: it sends NaN down the failure path,
@@ -100,6 +47,7 @@ mod line;
 pub mod lorentz;
 mod mesh;
 pub mod mobius;
+mod ops;
 mod plane;
 mod point;
 mod polygon;
@@ -109,10 +57,12 @@ pub mod ray;
 mod rod;
 mod roots;
 mod segment;
+#[cfg(feature = "serde")]
+mod serde_impls;
+mod shape;
 mod sphere;
 
 pub use cylinder::HCylinder;
-pub use distance::distance;
 pub use error::GeomError;
 pub use fermi::{fermi_coordinates, from_fermi_coordinates};
 pub use honeycomb::{
@@ -134,6 +84,7 @@ pub use polyhedron::{Platonic, Polyhedron, unique_edges};
 pub use ray::{Hit, Ray};
 pub use rod::Rod;
 pub use segment::Segment;
+pub use shape::{Shape, Solid};
 pub use sphere::HSphere;
 
 pub use glam;

@@ -52,7 +52,7 @@
 //! // From the centre towards the centre of face 0: the right-angled triangle
 //! // (origin, face centre, vertex) gives tanh(inradius) = tanh(R) cos(angle),
 //! // and the angle between a vertex and a face centre has cosine 1/3.
-//! let ray = Ray::from_origin(DVec3::new(1.0, 1.0, -1.0));
+//! let ray = Ray::from_origin_unchecked(DVec3::new(1.0, 1.0, -1.0));
 //! let hit = mesh.intersect(&ray, 0.0, f64::INFINITY).unwrap();
 //! assert!((hit.t - (r.tanh() / 3.0).atanh()).abs() < 1e-14);
 //! // The ray leaves through the outer side.
@@ -866,7 +866,7 @@ fn cross(a: (f64, f64), b: (f64, f64)) -> f64 {
 /// quantity and is kept.
 fn settled(p: Point) -> Point {
     if p.gap() >= SETTLE_GAP {
-        Point::try_new(p.coords()).unwrap_or(p)
+        Point::from_coords(p.coords()).unwrap_or(p)
     } else {
         p
     }
@@ -880,7 +880,8 @@ fn settled_isometry(iso: Isometry) -> Isometry {
     if (b.gap() - a.gap()).abs() <= 8.0 * f64::EPSILON * a.gap() {
         iso
     } else {
-        Isometry::transvection_from_origin(b).compose(&Isometry::orthogonal(iso.linear_part()))
+        Isometry::transvection_from_origin(b)
+            .compose(&Isometry::orthogonal_unchecked(iso.linear_part()))
     }
 }
 
@@ -1121,7 +1122,7 @@ mod tests {
     }
 
     fn p(x: f64, y: f64, z: f64) -> Point {
-        Point::try_new(DVec3::new(x, y, z)).unwrap()
+        Point::from_coords(DVec3::new(x, y, z)).unwrap()
     }
 
     /// Triangles scattered through a ball of radius `reach`, each with
@@ -1150,9 +1151,9 @@ mod tests {
             let mut hits = 0;
             for k in 0..600 {
                 let ray = if k % 2 == 0 {
-                    Ray::from_origin(rng.dir())
+                    Ray::from_origin_unchecked(rng.dir())
                 } else {
-                    Ray::from_ball(&rng.point(reach + 1.0), rng.dir())
+                    Ray::from_ball_unchecked(&rng.point(reach + 1.0), rng.dir())
                 };
                 let t_min = if k % 3 == 0 { 0.0 } else { 1e-9 };
                 let t_max = if k % 5 == 0 { 1.0 } else { f64::INFINITY };
@@ -1221,10 +1222,12 @@ mod tests {
     fn bvh_equals_brute_force_at_edges_and_vertices() {
         let (points, faces) = octasphere(4, 1.2);
         let mut rng = Rng(13);
-        let f = Isometry::transvection_from_origin(rng.point(2.0)).compose(&Isometry::rotation(
-            &crate::segment::Segment::try_new(Point::ORIGIN, rng.point(1.0)).unwrap(),
-            1.0,
-        ));
+        let f = Isometry::transvection_from_origin(rng.point(2.0)).compose(
+            &Isometry::rotation_about_segment_unchecked(
+                &crate::segment::Segment::new(Point::ORIGIN, rng.point(1.0)).unwrap(),
+                1.0,
+            ),
+        );
         let mesh = TriangleMesh::new(points.clone(), faces.clone())
             .unwrap()
             .transformed(&f);
@@ -1243,12 +1246,12 @@ mod tests {
         for x in &targets {
             let target = Point::from_hyperboloid(*x / (-lorentz::dot(*x, *x)).sqrt()).unwrap();
             let outside = f.apply(&rng.point(0.4)).coords();
-            let starts = [centre, Point::try_new(outside).unwrap()];
+            let starts = [centre, Point::from_coords(outside).unwrap()];
             for start in starts {
-                let dir = crate::segment::Segment::try_new(start, target)
+                let dir = crate::segment::Segment::new(start, target)
                     .unwrap()
                     .direction_at_start();
-                let ray = Ray::from_ball(&start, dir);
+                let ray = Ray::from_ball_unchecked(&start, dir);
                 let fast = mesh.intersect_indexed(&ray, 0.0, f64::INFINITY);
                 assert_eq!(fast, mesh.intersect_exhaustive(&ray, 0.0, f64::INFINITY));
                 assert!(fast.is_some(), "escaped through {x:?}");
@@ -1261,7 +1264,7 @@ mod tests {
         let mut rng = Rng(3);
         let mesh = soup(&mut rng, 300, 1.0, 0.3);
         for _ in 0..500 {
-            let ray = Ray::from_ball(&rng.point(2.0), rng.dir());
+            let ray = Ray::from_ball_unchecked(&rng.point(2.0), rng.dir());
             let hit = mesh.intersect(&ray, 0.0, f64::INFINITY);
             assert_eq!(mesh.blocks(&ray, 0.0, f64::INFINITY), hit.is_some());
             if let Some(h) = hit {
@@ -1355,7 +1358,7 @@ mod tests {
     fn single_triangle_matches_the_polygon_and_its_orientation() {
         let (a, b, c) = (p(0.3, -0.1, 0.2), p(-0.2, 0.4, 0.1), p(-0.1, -0.3, 0.25));
         let mesh = TriangleMesh::new(vec![a, b, c], vec![[0, 1, 2]]).unwrap();
-        let poly = ConvexPolygon::try_new(vec![a.into(), b.into(), c.into()]).unwrap();
+        let poly = ConvexPolygon::new(vec![a.into(), b.into(), c.into()]).unwrap();
         let corners = [a, b, c].map(|v| v.to_hyperboloid());
         let mut rng = Rng(9);
         let (mut hits, mut disagree) = (0, 0);
@@ -1364,9 +1367,9 @@ mod tests {
             let w = [0, 1, 2].map(|_| rng.uniform(-0.2, 1.0));
             let aim = w[0] * corners[0] + w[1] * corners[1] + w[2] * corners[2];
             let ray = if k % 2 == 0 || !(aim.w > 0.0 && lorentz::dot(aim, aim) < 0.0) {
-                Ray::from_origin(rng.dir())
+                Ray::from_origin_unchecked(rng.dir())
             } else {
-                Ray::from_origin(aim.truncate())
+                Ray::from_origin_unchecked(aim.truncate())
             };
             let m = mesh.intersect(&ray, 0.0, f64::INFINITY);
             let q = poly.intersect(&ray, 0.0, f64::INFINITY);
@@ -1395,7 +1398,7 @@ mod tests {
             .normal();
         let hit = mesh
             .intersect(
-                &Ray::from_origin(corners.iter().sum::<DVec4>().truncate()),
+                &Ray::from_origin_unchecked(corners.iter().sum::<DVec4>().truncate()),
                 0.0,
                 f64::INFINITY,
             )
@@ -1428,7 +1431,7 @@ mod tests {
         // winding.
         let vs = moved.vertices();
         for _ in 0..300 {
-            let ray = Ray::from_ball(&rng.point(2.0), rng.dir());
+            let ray = Ray::from_ball_unchecked(&rng.point(2.0), rng.dir());
             if let Some((hit, i)) = moved.intersect_indexed(&ray, 0.0, f64::INFINITY) {
                 let [a, b, c] = tris[i].map(|k| crate::point::Vertex::from(vs[k as usize]));
                 let n = HPlane::through(&a, &b, &c).unwrap().normal();
@@ -1461,7 +1464,7 @@ mod tests {
         let direct = TriangleMesh::new(corners.to_vec(), vec![[0, 1, 2]]).unwrap();
         let mut rng = Rng(2);
         for _ in 0..200 {
-            let ray = Ray::from_origin(rng.dir() + DVec3::splat(0.8));
+            let ray = Ray::from_origin_unchecked(rng.dir() + DVec3::splat(0.8));
             let (a, b) = (
                 back.intersect(&ray, 0.0, f64::INFINITY),
                 direct.intersect(&ray, 0.0, f64::INFINITY),

@@ -109,7 +109,7 @@ mod tests {
     use super::*;
 
     fn p(x: f64, y: f64, z: f64) -> Point {
-        Point::try_new(DVec3::new(x, y, z)).unwrap()
+        Point::from_coords(DVec3::new(x, y, z)).unwrap()
     }
 
     #[test]
@@ -118,7 +118,7 @@ mod tests {
         let z = Point::ORIGIN;
         assert!((add(&u, &z).coords() - u.coords()).length() < 1e-16);
         assert!((add(&z, &u).coords() - u.coords()).length() < 1e-16);
-        let minus = Point::try_new(-u.coords()).unwrap();
+        let minus = Point::from_coords(-u.coords()).unwrap();
         assert!(add(&minus, &u).coords().length() < 1e-16);
     }
 
@@ -126,7 +126,7 @@ mod tests {
     fn left_cancellation() {
         let u = p(0.5, 0.1, -0.3);
         let v = p(-0.2, 0.6, 0.1);
-        let minus_u = Point::try_new(-u.coords()).unwrap();
+        let minus_u = Point::from_coords(-u.coords()).unwrap();
         let back = add(&minus_u, &add(&u, &v));
         assert!((back.coords() - v.coords()).length() < 1e-15);
     }
@@ -138,7 +138,7 @@ mod tests {
         let v = p(-0.2, 0.6, 0.1);
         let w = p(0.1, 0.2, 0.3);
         let uv = add(&u, &v);
-        let minus_uv = Point::try_new(-uv.coords()).unwrap();
+        let minus_uv = Point::from_coords(-uv.coords()).unwrap();
         let lhs = add(&minus_uv, &add(&u, &add(&v, &w)));
         let g = gyration(u.coords(), u.gap(), v.coords(), v.gap());
         assert!((g * w.coords() - lhs.coords()).length() < 1e-14);

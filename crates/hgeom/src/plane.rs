@@ -64,6 +64,13 @@ impl HPlane {
         Ok(HPlane { normal: n / len })
     }
 
+    /// A plane from a normal already unit to rounding, stored bit for bit
+    /// (so that a serialised plane reads back identical).
+    #[cfg(feature = "serde")]
+    pub(crate) fn from_unit_normal_unchecked(normal: DVec4) -> HPlane {
+        HPlane { normal }
+    }
+
     /// The h-plane through three vertices (interior or ideal).
     ///
     /// Oriented by the right-hand rule: seen from the side `N` points to,
@@ -354,7 +361,7 @@ mod tests {
     use crate::distance::distance;
 
     fn p(x: f64, y: f64, z: f64) -> Point {
-        Point::try_new(DVec3::new(x, y, z)).unwrap()
+        Point::from_coords(DVec3::new(x, y, z)).unwrap()
     }
 
     #[test]

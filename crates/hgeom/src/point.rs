@@ -16,7 +16,7 @@ use crate::lorentz;
 /// precision, like the low word of a double-double, and distances are
 /// computed from it, never from a naive `1 - |x|^2`.
 ///
-/// The checked constructors are [`Point::try_new`] and
+/// The checked constructors are [`Point::new`], [`Point::from_coords`] and
 /// [`Point::at_distance_from_origin`]; [`Point::new_unchecked`] is the hot-path
 /// form.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -31,6 +31,27 @@ impl Point {
         coords: DVec3::ZERO,
         gap: 1.0,
     };
+
+    /// The point with ball coordinates `(x, y, z)`, checked to lie strictly
+    /// inside the ball: [`Point::from_coords`] of the vector.
+    ///
+    /// Errors: [`GeomError::NotFinite`], [`GeomError::NotInBall`].
+    ///
+    /// # Accuracy
+    ///
+    /// As [`Point::from_coords`]: the coordinates are stored exactly and the
+    /// gap is within a few ulps of the exact `1 - |x|^2`.
+    ///
+    /// ```
+    /// use hgeom::Point;
+    /// let p = Point::new(0.5, 0.0, 0.0)?;
+    /// assert_eq!(p.gap(), 0.75);
+    /// assert!(Point::new(1.0, 0.0, 0.0).is_err());
+    /// # Ok::<(), hgeom::GeomError>(())
+    /// ```
+    pub fn new(x: f64, y: f64, z: f64) -> Result<Point, GeomError> {
+        Point::from_coords(DVec3::new(x, y, z))
+    }
 
     /// A point from ball coordinates, checked to lie strictly inside the ball.
     ///
@@ -50,10 +71,10 @@ impl Point {
     /// ```
     /// use hgeom::Point;
     /// use glam::DVec3;
-    /// assert!(Point::try_new(DVec3::new(0.5, 0.0, 0.0)).is_ok());
-    /// assert!(Point::try_new(DVec3::new(1.0, 0.0, 0.0)).is_err());
+    /// assert!(Point::from_coords(DVec3::new(0.5, 0.0, 0.0)).is_ok());
+    /// assert!(Point::from_coords(DVec3::new(1.0, 0.0, 0.0)).is_err());
     /// ```
-    pub fn try_new(coords: DVec3) -> Result<Point, GeomError> {
+    pub fn from_coords(coords: DVec3) -> Result<Point, GeomError> {
         if !coords.is_finite() {
             return Err(GeomError::NotFinite);
         }
@@ -68,7 +89,7 @@ impl Point {
     }
 
     /// A point from ball coordinates and their gap `1 - |coords|^2`, with
-    /// nothing checked: the `_unchecked` form of [`Point::try_new`] for hot
+    /// nothing checked: the `_unchecked` form of [`Point::from_coords`] for hot
     /// paths that already hold an accurate gap (Möbius addition, isometries
     /// and the closed-form constructors all produce one from an exact
     /// identity, which is more precise than recomputing it from rounded
@@ -86,7 +107,7 @@ impl Point {
     /// # Accuracy
     ///
     /// Exact: the arguments are stored as given. Given the compensated gap
-    /// of `coords` it is identical to [`Point::try_new`]; a gap from an
+    /// of `coords` it is identical to [`Point::from_coords`]; a gap from an
     /// exact identity differs from that one by the rounding of the
     /// coordinates themselves (a few eps, absolute), which is the precision
     /// it adds (`tests/constructors.rs`).
@@ -96,7 +117,7 @@ impl Point {
     /// use hgeom::{accurate::one_minus_norm_sq, Point};
     /// let c = DVec3::new(0.6, 0.0, 0.0);
     /// let p = Point::new_unchecked(c, one_minus_norm_sq(c));
-    /// assert_eq!(p, Point::try_new(c).unwrap());
+    /// assert_eq!(p, Point::from_coords(c).unwrap());
     /// ```
     #[inline]
     pub const fn new_unchecked(coords: DVec3, gap: f64) -> Point {
@@ -294,7 +315,7 @@ impl IdealPoint {
     /// The stored direction is `coords / |coords|`, a unit vector to within
     /// 2 ulps; the normalisation moves an accepted point by at most
     /// `tolerance` (Euclidean) along its ray.
-    pub fn try_new(coords: DVec3, tolerance: f64) -> Result<IdealPoint, GeomError> {
+    pub fn new(coords: DVec3, tolerance: f64) -> Result<IdealPoint, GeomError> {
         if !coords.is_finite() {
             return Err(GeomError::NotFinite);
         }
@@ -313,7 +334,7 @@ impl IdealPoint {
     ///
     /// # Preconditions
     ///
-    /// `dir` finite with `|dir| = 1` to a few ulps. [`IdealPoint::try_new`]
+    /// `dir` finite with `|dir| = 1` to a few ulps. [`IdealPoint::new`]
     /// and [`IdealPoint::from_direction`] are the checked forms.
     ///
     /// # Accuracy
@@ -428,17 +449,17 @@ mod tests {
     #[test]
     fn rejects_points_on_and_outside_the_absolute() {
         assert!(matches!(
-            Point::try_new(DVec3::new(0.0, 0.0, 1.2)),
+            Point::from_coords(DVec3::new(0.0, 0.0, 1.2)),
             Err(GeomError::NotInBall { .. })
         ));
-        assert!(Point::try_new(DVec3::X).is_err());
-        assert!(Point::try_new(DVec3::new(f64::NAN, 0.0, 0.0)).is_err());
-        assert!(Point::try_new(DVec3::new(1.0 - f64::EPSILON, 0.0, 0.0)).is_ok());
+        assert!(Point::from_coords(DVec3::X).is_err());
+        assert!(Point::from_coords(DVec3::new(f64::NAN, 0.0, 0.0)).is_err());
+        assert!(Point::from_coords(DVec3::new(1.0 - f64::EPSILON, 0.0, 0.0)).is_ok());
     }
 
     #[test]
     fn hyperboloid_round_trip() {
-        let p = Point::try_new(DVec3::new(0.3, -0.2, 0.5)).unwrap();
+        let p = Point::from_coords(DVec3::new(0.3, -0.2, 0.5)).unwrap();
         let x = p.to_hyperboloid();
         assert!((lorentz::dot(x, x) + 1.0).abs() < 1e-14);
         let q = Point::from_hyperboloid(x).unwrap();
@@ -449,7 +470,7 @@ mod tests {
     #[test]
     fn distance_from_origin_matches_closed_form() {
         for &r in &[1e-12, 0.1, 0.5, 0.9, 1.0 - 1e-10] {
-            let p = Point::try_new(DVec3::new(0.0, r, 0.0)).unwrap();
+            let p = Point::from_coords(DVec3::new(0.0, r, 0.0)).unwrap();
             let expect = 2.0 * r.atanh();
             let got = p.distance_from_origin();
             assert!(
@@ -470,8 +491,8 @@ mod tests {
 
     #[test]
     fn ideal_points_are_normalised_and_null() {
-        let p = IdealPoint::try_new(DVec3::new(0.0, 0.6, 0.8), 1e-12).unwrap();
+        let p = IdealPoint::new(DVec3::new(0.0, 0.6, 0.8), 1e-12).unwrap();
         assert!((lorentz::dot(p.to_hyperboloid(), p.to_hyperboloid())).abs() < 1e-15);
-        assert!(IdealPoint::try_new(DVec3::new(0.0, 0.6, 0.7), 1e-9).is_err());
+        assert!(IdealPoint::new(DVec3::new(0.0, 0.6, 0.7), 1e-9).is_err());
     }
 }

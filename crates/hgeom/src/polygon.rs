@@ -49,7 +49,7 @@ impl ConvexPolygon {
     /// up to 8 away are within 5e-9 (measured 7e-10; the `ray-polygon`
     /// family of `tests/reference.rs`). The checks use a relative tolerance
     /// of 1e-9, so vertices given to ~14 digits are accepted.
-    pub fn try_new(vertices: Vec<Vertex>) -> Result<ConvexPolygon, GeomError> {
+    pub fn new(vertices: Vec<Vertex>) -> Result<ConvexPolygon, GeomError> {
         let n = vertices.len();
         if n < 3 {
             return Err(GeomError::TooFewVertices(n));
@@ -75,8 +75,9 @@ impl ConvexPolygon {
                 // It is not a clamp of user input: the anchor is any point
                 // near the polygon (it only sets the conditioning), and a
                 // centroid rounding onto the absolute is rejected by
-                // `try_new` below, falling back to building in place.
-                Point::try_new(klein / (1.0 + (1.0 - klein.length_squared()).max(0.0).sqrt())).ok()
+                // `new` below, falling back to building in place.
+                Point::from_coords(klein / (1.0 + (1.0 - klein.length_squared()).max(0.0).sqrt()))
+                    .ok()
             })
             .filter(|p| p.coords() != DVec3::ZERO);
         let Some(anchor) = anchor else {
@@ -197,7 +198,7 @@ impl ConvexPolygon {
     /// # Accuracy
     ///
     /// The moved polygon is rebuilt from the moved vertices, so it is as
-    /// accurate as [`ConvexPolygon::try_new`] on them (hits agree with the
+    /// accurate as [`ConvexPolygon::new`] on them (hits agree with the
     /// original's to 1e-10 relative, `platonic_hits_lie_on_faces` in
     /// `tests/properties.rs`). Beyond distance ~17 from the origin the
     /// rebuilt polygon fails the 1e-9 planarity check and the plane and edge
@@ -215,7 +216,7 @@ impl ConvexPolygon {
         // isometry's Lorentz matrix, which is exact up to rounding (edge
         // planes are only used as a set, so the vertex reversal above does
         // not disturb them).
-        ConvexPolygon::try_new(vs.clone()).unwrap_or_else(|_| {
+        ConvexPolygon::new(vs.clone()).unwrap_or_else(|_| {
             let l = iso.to_lorentz();
             ConvexPolygon {
                 vertices: vs,
@@ -266,12 +267,12 @@ mod tests {
     use glam::DVec3;
 
     fn v(x: f64, y: f64, z: f64) -> Vertex {
-        Point::try_new(DVec3::new(x, y, z)).unwrap().into()
+        Point::from_coords(DVec3::new(x, y, z)).unwrap().into()
     }
 
     fn square() -> ConvexPolygon {
         // In the plane z = 0.2 shifted... use a plane through the origin: z = 0.
-        ConvexPolygon::try_new(vec![
+        ConvexPolygon::new(vec![
             v(0.3, 0.3, 0.0),
             v(-0.3, 0.3, 0.0),
             v(-0.3, -0.3, 0.0),
@@ -290,43 +291,42 @@ mod tests {
     #[test]
     fn ray_hits_inside_and_misses_outside() {
         let sq = square();
-        let p = Point::try_new(DVec3::new(0.1, 0.1, 0.5)).unwrap();
-        let hit = sq.intersect(&Ray::from_ball(&p, -DVec3::Z), 0.0, f64::INFINITY);
+        let p = Point::from_coords(DVec3::new(0.1, 0.1, 0.5)).unwrap();
+        let hit = sq.intersect(&Ray::from_ball_unchecked(&p, -DVec3::Z), 0.0, f64::INFINITY);
         assert!(hit.is_some());
-        let q = Point::try_new(DVec3::new(0.5, 0.1, 0.5)).unwrap();
+        let q = Point::from_coords(DVec3::new(0.5, 0.1, 0.5)).unwrap();
         assert!(
-            sq.intersect(&Ray::from_ball(&q, -DVec3::Z), 0.0, f64::INFINITY)
+            sq.intersect(&Ray::from_ball_unchecked(&q, -DVec3::Z), 0.0, f64::INFINITY)
                 .is_none()
         );
         // Parallel ray misses.
         assert!(
-            sq.intersect(&Ray::from_ball(&p, DVec3::X), 0.0, f64::INFINITY)
+            sq.intersect(&Ray::from_ball_unchecked(&p, DVec3::X), 0.0, f64::INFINITY)
                 .is_none()
         );
     }
 
     #[test]
     fn ideal_vertices_are_accepted() {
-        let ideal = |x: f64, y: f64| {
-            Vertex::Ideal(IdealPoint::try_new(DVec3::new(x, y, 0.0), 1e-12).unwrap())
-        };
-        let tri = ConvexPolygon::try_new(vec![
+        let ideal =
+            |x: f64, y: f64| Vertex::Ideal(IdealPoint::new(DVec3::new(x, y, 0.0), 1e-12).unwrap());
+        let tri = ConvexPolygon::new(vec![
             ideal(1.0, 0.0),
             ideal(-0.5, 0.75f64.sqrt()),
             ideal(-0.5, -(0.75f64.sqrt())),
         ])
         .unwrap();
         // The ideal triangle contains the origin.
-        let p = Point::try_new(DVec3::new(0.0, 0.0, 0.5)).unwrap();
+        let p = Point::from_coords(DVec3::new(0.0, 0.0, 0.5)).unwrap();
         assert!(
-            tri.intersect(&Ray::from_ball(&p, -DVec3::Z), 0.0, f64::INFINITY)
+            tri.intersect(&Ray::from_ball_unchecked(&p, -DVec3::Z), 0.0, f64::INFINITY)
                 .is_some()
         );
     }
 
     #[test]
     fn non_convex_and_non_planar_are_rejected() {
-        let bad = ConvexPolygon::try_new(vec![
+        let bad = ConvexPolygon::new(vec![
             v(0.3, 0.3, 0.0),
             v(0.0, 0.0, 0.0),
             v(-0.3, 0.3, 0.0),
@@ -334,7 +334,7 @@ mod tests {
         ]);
         assert_eq!(bad, Err(GeomError::NonConvex { index: 1 }));
         // Crossed order of a square: a reflex corner is named.
-        let bowtie = ConvexPolygon::try_new(vec![
+        let bowtie = ConvexPolygon::new(vec![
             v(0.3, 0.3, 0.0),
             v(-0.3, -0.3, 0.0),
             v(-0.3, 0.3, 0.0),
@@ -348,10 +348,10 @@ mod tests {
             })
             .collect();
         assert!(matches!(
-            ConvexPolygon::try_new(star),
+            ConvexPolygon::new(star),
             Err(GeomError::NonConvex { .. })
         ));
-        let tilted = ConvexPolygon::try_new(vec![
+        let tilted = ConvexPolygon::new(vec![
             v(0.3, 0.3, 0.0),
             v(-0.3, 0.3, 0.0),
             v(-0.3, -0.3, 0.0),
@@ -359,7 +359,7 @@ mod tests {
         ]);
         assert!(matches!(tilted, Err(GeomError::NonPlanar { index: 3, .. })));
         assert!(matches!(
-            ConvexPolygon::try_new(vec![v(0.0, 0.0, 0.0), v(0.1, 0.0, 0.0)]),
+            ConvexPolygon::new(vec![v(0.0, 0.0, 0.0), v(0.1, 0.0, 0.0)]),
             Err(GeomError::TooFewVertices(2))
         ));
     }

@@ -83,7 +83,7 @@ fn regular_directions(n: usize) -> Vec<DVec3> {
 /// `tests/figures.rs`).
 ///
 /// ```
-/// use hgeom::{distance, regular_polygon, Vertex};
+/// use hgeom::{regular_polygon, Vertex};
 /// let pentagon = regular_polygon(5, 0.8).unwrap();
 /// let Vertex::Interior(v) = pentagon.vertices()[0] else { unreachable!() };
 /// assert!((v.distance_from_origin() - 0.8).abs() < 1e-15);
@@ -96,7 +96,7 @@ pub fn regular_polygon(n: usize, circumradius: f64) -> Result<ConvexPolygon, Geo
         .map(|d| Point::at_distance_from_origin(d, circumradius).and_then(representable))
         .map(|p| p.map(Vertex::Interior))
         .collect::<Result<Vec<_>, _>>()?;
-    ConvexPolygon::try_new(vertices)
+    ConvexPolygon::new(vertices)
 }
 
 /// The regular h-polygon with `n` vertices and hyperbolic side length `side`,
@@ -136,7 +136,7 @@ pub fn ideal_regular_polygon(n: usize) -> Result<ConvexPolygon, GeomError> {
         .into_iter()
         .map(|d| IdealPoint::from_direction(d).map(Vertex::Ideal))
         .collect::<Result<Vec<_>, _>>()?;
-    ConvexPolygon::try_new(vertices)
+    ConvexPolygon::new(vertices)
 }
 
 /// The Lambert quadrilateral (three right angles) with sides `a` and `b` at
@@ -178,7 +178,7 @@ pub fn lambert_quadrilateral(a: f64, b: f64) -> Result<ConvexPolygon, GeomError>
     let c = from_hyperboloid_checked(c)?;
     let va = representable(Point::at_distance_from_origin(DVec3::X, a)?)?;
     let vb = representable(Point::at_distance_from_origin(DVec3::Y, b)?)?;
-    ConvexPolygon::try_new(vec![
+    ConvexPolygon::new(vec![
         Vertex::Interior(Point::ORIGIN),
         Vertex::Interior(vb),
         Vertex::Interior(c),
@@ -217,7 +217,7 @@ pub fn saccheri_quadrilateral(base: f64, leg: f64) -> Result<ConvexPolygon, Geom
     let summit = |sign: f64| from_hyperboloid_checked(DVec4::new(sign * cl * sh, sl, 0.0, cl * ch));
     let p_minus = representable(Point::at_distance_from_origin(-DVec3::X, half)?)?;
     let p_plus = representable(Point::at_distance_from_origin(DVec3::X, half)?)?;
-    ConvexPolygon::try_new(vec![
+    ConvexPolygon::new(vec![
         Vertex::Interior(p_minus),
         Vertex::Interior(summit(-1.0)?),
         Vertex::Interior(summit(1.0)?),

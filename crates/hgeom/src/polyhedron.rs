@@ -250,7 +250,7 @@ fn cyclic(v: DVec3) -> [DVec3; 3] {
 fn polygons(verts: &[Vertex], faces: &[Vec<usize>]) -> Result<Vec<ConvexPolygon>, GeomError> {
     faces
         .iter()
-        .map(|f| ConvexPolygon::try_new(f.iter().map(|&i| verts[i]).collect()))
+        .map(|f| ConvexPolygon::new(f.iter().map(|&i| verts[i]).collect()))
         .collect()
 }
 
@@ -313,7 +313,7 @@ impl Polyhedron {
     /// Infallible: a face whose plane passes through the centre is kept as
     /// given, and a face that cannot be rebuilt reversed (a tolerance check
     /// failing on the reversed order, which does not happen for faces that
-    /// passed [`ConvexPolygon::try_new`]) is kept unreversed.
+    /// passed [`ConvexPolygon::new`]) is kept unreversed.
     ///
     /// # Accuracy
     ///
@@ -328,7 +328,7 @@ impl Polyhedron {
                 if lorentz::dot(c, f.plane().normal()) > 0.0 {
                     let mut vs = f.vertices().to_vec();
                     vs.reverse();
-                    ConvexPolygon::try_new(vs).unwrap_or(f)
+                    ConvexPolygon::new(vs).unwrap_or(f)
                 } else {
                     f
                 }
@@ -501,7 +501,7 @@ impl Polyhedron {
                 let (prev, tip, next) = (ring[(i + m - 1) % m], ring[i], ring[(i + 1) % m]);
                 let near_next = canonical(between(tips[next], tips[prev], t)?);
                 let near_prev = canonical(between(tips[prev], tips[next], t)?);
-                faces.push(ConvexPolygon::try_new(vec![
+                faces.push(ConvexPolygon::new(vec![
                     Vertex::Interior(tip_points[tip]),
                     Vertex::Interior(near_next),
                     Vertex::Interior(near_prev),
@@ -552,10 +552,10 @@ impl Polyhedron {
                         .map(Vertex::Interior)
                 })
                 .collect::<Result<Vec<_>, _>>()?;
-            let face = ConvexPolygon::try_new(verts.clone())?;
+            let face = ConvexPolygon::new(verts.clone())?;
             let face = if face.plane().normal().truncate().dot(axis) > 0.0 {
                 verts.reverse();
-                ConvexPolygon::try_new(verts)?
+                ConvexPolygon::new(verts)?
             } else {
                 face
             };
@@ -683,11 +683,16 @@ mod tests {
         let p = Polyhedron::platonic(Platonic::Dodecahedron, 0.3).unwrap();
         for dir in [DVec3::X, DVec3::new(0.3, -0.2, 0.9), -DVec3::Z] {
             let hit = p
-                .intersect(&Ray::from_origin(dir), 0.0, f64::INFINITY)
+                .intersect(&Ray::from_origin_unchecked(dir), 0.0, f64::INFINITY)
                 .unwrap();
             assert!(hit.t > 0.0 && hit.t <= 0.3 + 1e-12);
             // Leaving: direction and outward normal agree.
-            assert!(lorentz::dot(Ray::from_origin(dir).tangent_at(hit.t), hit.normal) > 0.0);
+            assert!(
+                lorentz::dot(
+                    Ray::from_origin_unchecked(dir).tangent_at(hit.t),
+                    hit.normal
+                ) > 0.0
+            );
         }
     }
 }

@@ -50,12 +50,34 @@ impl Hit {
     pub fn ball_point(&self) -> Option<Point> {
         Point::from_hyperboloid(self.point)
     }
+
+    /// The unit normal at the hit as a Euclidean direction in the ball
+    /// (the model is conformal, so it is also the hyperbolic normal's
+    /// direction there): [`ball_direction`] of `normal` at `point`.
+    ///
+    /// # Accuracy
+    ///
+    /// As [`ball_direction`]: about `eps |X|^2` in direction (1e-14 for
+    /// hits within ~2 of the origin).
+    ///
+    /// ```
+    /// use hgeom::{HSphere, Point, Ray};
+    /// // A ray from the origin along +z hits the sphere about (0,0,0.5) head on:
+    /// // the outward normal there points back at the eye.
+    /// let s = HSphere::new(Point::new(0.0, 0.0, 0.5)?, 0.2)?;
+    /// let hit = s.intersect(&Ray::from_origin(glam::DVec3::Z)?, 0.0, f64::INFINITY).unwrap();
+    /// assert!((hit.ball_normal() - -glam::DVec3::Z).length() < 1e-14);
+    /// # Ok::<(), hgeom::GeomError>(())
+    /// ```
+    pub fn ball_normal(&self) -> DVec3 {
+        ball_direction(self.point, self.normal)
+    }
 }
 
 impl Ray {
     /// A ray from the origin along a (not necessarily unit) ball direction.
     ///
-    /// The hot-path form of [`Ray::try_from_origin`]: nothing is checked.
+    /// The hot-path form of [`Ray::from_origin`]: nothing is checked.
     /// Precondition: `dir` finite and non-zero (a zero direction gives a NaN
     /// ray).
     ///
@@ -63,7 +85,7 @@ impl Ray {
     ///
     /// The origin is exactly `(0,0,0,1)`; the direction is `dir/|dir|`, a
     /// unit vector to 2 ulps (so the invariants hold to a few ulps).
-    pub fn from_origin(dir: DVec3) -> Ray {
+    pub fn from_origin_unchecked(dir: DVec3) -> Ray {
         Ray {
             origin: DVec4::W,
             dir: dir.normalize().extend(0.0),
@@ -76,19 +98,19 @@ impl Ray {
     ///
     /// # Accuracy
     ///
-    /// As [`Ray::from_origin`], and identical to it on valid input
+    /// As [`Ray::from_origin_unchecked`], and identical to it on valid input
     /// (`tests/constructors.rs`).
-    pub fn try_from_origin(dir: DVec3) -> Result<Ray, GeomError> {
+    pub fn from_origin(dir: DVec3) -> Result<Ray, GeomError> {
         let len = dir.length();
         if !(len.is_finite() && len > 0.0) {
             return Err(GeomError::BadDirection);
         }
-        Ok(Ray::from_origin(dir))
+        Ok(Ray::from_origin_unchecked(dir))
     }
 
     /// A ray from an h-point along a ball tangent direction.
     ///
-    /// The hot-path form of [`Ray::try_from_ball`]: nothing is checked.
+    /// The hot-path form of [`Ray::from_ball`]: nothing is checked.
     /// Preconditions: `dir` finite and non-zero, `p` representable
     /// ([`Point::is_representable`]).
     ///
@@ -99,7 +121,7 @@ impl Ray {
     /// conformal factor, so `<V,V> = 1` to about `eps |X|^2`
     /// (`ray_direction_is_a_unit_tangent` in `tests/properties.rs` bounds
     /// the relative error of `V` by 1e-12 out to depth 12).
-    pub fn from_ball(p: &Point, dir: DVec3) -> Ray {
+    pub fn from_ball_unchecked(p: &Point, dir: DVec3) -> Ray {
         Ray {
             origin: p.to_hyperboloid(),
             dir: hyperboloid_direction(p, dir),
@@ -114,9 +136,9 @@ impl Ray {
     ///
     /// # Accuracy
     ///
-    /// As [`Ray::from_ball`], and identical to it on valid input
+    /// As [`Ray::from_ball_unchecked`], and identical to it on valid input
     /// (`tests/constructors.rs`).
-    pub fn try_from_ball(p: &Point, dir: DVec3) -> Result<Ray, GeomError> {
+    pub fn from_ball(p: &Point, dir: DVec3) -> Result<Ray, GeomError> {
         let len = dir.length();
         if !(len.is_finite() && len > 0.0) {
             return Err(GeomError::BadDirection);
@@ -126,7 +148,7 @@ impl Ray {
                 norm: p.coords().length(),
             });
         }
-        Ok(Ray::from_ball(p, dir))
+        Ok(Ray::from_ball_unchecked(p, dir))
     }
 
     /// The point at arc length `t`.
@@ -249,7 +271,7 @@ mod tests {
 
     #[test]
     fn tangent_round_trip() {
-        let p = Point::try_new(DVec3::new(0.3, -0.2, 0.5)).unwrap();
+        let p = Point::from_coords(DVec3::new(0.3, -0.2, 0.5)).unwrap();
         let w = DVec3::new(0.2, 0.9, -0.1).normalize();
         let v = hyperboloid_direction(&p, w);
         let x = p.to_hyperboloid();
@@ -260,8 +282,8 @@ mod tests {
 
     #[test]
     fn ray_stays_on_hyperboloid_at_unit_speed() {
-        let p = Point::try_new(DVec3::new(0.3, -0.2, 0.5)).unwrap();
-        let r = Ray::from_ball(&p, DVec3::new(1.0, 1.0, 0.0));
+        let p = Point::from_coords(DVec3::new(0.3, -0.2, 0.5)).unwrap();
+        let r = Ray::from_ball_unchecked(&p, DVec3::new(1.0, 1.0, 0.0));
         for t in [0.0, 0.5, 3.0] {
             let x = r.at(t);
             assert!((lorentz::dot(x, x) + 1.0).abs() < 1e-12);

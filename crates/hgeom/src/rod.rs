@@ -9,7 +9,7 @@ use crate::error::GeomError;
 use crate::isometry::Isometry;
 use crate::line::HLine;
 use crate::lorentz;
-use crate::point::Vertex;
+use crate::point::{Point, Vertex};
 use crate::ray::{Hit, Ray};
 use crate::sphere::HSphere;
 
@@ -52,18 +52,18 @@ impl Rod {
     /// The rod of hyperbolic `radius` about the segment `start -> end`.
     ///
     /// Errors: [`HLine::through`]'s (coincident ends, a point f64 cannot
-    /// hold), [`HCylinder::try_new`]'s and [`HSphere::try_new`]'s
+    /// hold), [`HCylinder::new`]'s and [`HSphere::new`]'s
     /// ([`GeomError::BadRadius`]).
     ///
     /// # Accuracy
     ///
     /// The tube, caps and end-plane normals are each as accurate as their
-    /// constructors ([`HLine::through`], [`HSphere::try_new`]); the end
+    /// constructors ([`HLine::through`], [`HSphere::new`]); the end
     /// tangent `sinh(len) P + cosh(len) U` is within a few ulps of
     /// `cosh(len) |M|`.
-    pub fn try_new(start: Vertex, end: Vertex, radius: f64) -> Result<Rod, GeomError> {
+    pub fn new(start: Vertex, end: Vertex, radius: f64) -> Result<Rod, GeomError> {
         let line = HLine::through(&start, &end)?;
-        let tube = HCylinder::try_new(line, radius)?;
+        let tube = HCylinder::new(line, radius)?;
         let frame = line.frame();
         let (p, u) = (frame.w_axis, frame.z_axis);
         // HLine::through puts the base point at `start` when it is an h-point,
@@ -74,18 +74,18 @@ impl Rod {
                 let at_end = len.sinh() * p + len.cosh() * u;
                 (
                     Some(Cap {
-                        sphere: HSphere::try_new(a, radius)?,
+                        sphere: HSphere::new(a, radius)?,
                         axis: u,
                     }),
                     Some(Cap {
-                        sphere: HSphere::try_new(b, radius)?,
+                        sphere: HSphere::new(b, radius)?,
                         axis: at_end,
                     }),
                 )
             }
             (Vertex::Interior(a), Vertex::Ideal(_)) => (
                 Some(Cap {
-                    sphere: HSphere::try_new(a, radius)?,
+                    sphere: HSphere::new(a, radius)?,
                     axis: u,
                 }),
                 None,
@@ -93,7 +93,7 @@ impl Rod {
             (Vertex::Ideal(_), Vertex::Interior(b)) => (
                 None,
                 Some(Cap {
-                    sphere: HSphere::try_new(b, radius)?,
+                    sphere: HSphere::new(b, radius)?,
                     axis: u,
                 }),
             ),
@@ -185,6 +185,17 @@ impl Rod {
             .is_some_and(|c| lorentz::dot(x, c.axis) > slack)
     }
 
+    /// True if the h-point `p` lies strictly inside: [`Self::contains_hyperboloid`]
+    /// of its hyperboloid image.
+    ///
+    /// # Accuracy
+    ///
+    /// As [`Self::contains_hyperboloid`], with `X` within 2 ulps of the exact image
+    /// ([`Point::to_hyperboloid`]).
+    pub fn contains(&self, p: &Point) -> bool {
+        self.contains_hyperboloid(p.to_hyperboloid())
+    }
+
     /// True if the hyperboloid point is strictly within `radius` of the segment.
     ///
     /// # Accuracy
@@ -192,15 +203,17 @@ impl Rod {
     /// Decided by the end planes and then the tube or a cap, each with
     /// Lorentz products rounded at about `eps |X| |M|`: exact away from the
     /// boundary.
-    pub fn contains(&self, x: DVec4) -> bool {
+    pub fn contains_hyperboloid(&self, x: DVec4) -> bool {
         if self.beyond_start(x, 0.0) {
             self.start_cap
                 .as_ref()
-                .is_some_and(|c| c.sphere.contains(x))
+                .is_some_and(|c| c.sphere.contains_hyperboloid(x))
         } else if self.beyond_end(x, 0.0) {
-            self.end_cap.as_ref().is_some_and(|c| c.sphere.contains(x))
+            self.end_cap
+                .as_ref()
+                .is_some_and(|c| c.sphere.contains_hyperboloid(x))
         } else {
-            self.tube.contains(x)
+            self.tube.contains_hyperboloid(x)
         }
     }
 
@@ -299,38 +312,50 @@ mod tests {
     use glam::DVec3;
 
     fn p(x: f64, y: f64, z: f64) -> Point {
-        Point::try_new(DVec3::new(x, y, z)).unwrap()
+        Point::from_coords(DVec3::new(x, y, z)).unwrap()
     }
 
     #[test]
     fn side_and_cap_hits() {
         // Rod along the x axis from -0.3 to 0.3, radius 0.05; eye on the z axis.
-        let rod = Rod::try_new(p(-0.3, 0.0, 0.0).into(), p(0.3, 0.0, 0.0).into(), 0.05).unwrap();
+        let rod = Rod::new(p(-0.3, 0.0, 0.0).into(), p(0.3, 0.0, 0.0).into(), 0.05).unwrap();
         let eye = p(0.0, 0.0, -0.5);
         let side = rod
-            .intersect(&Ray::from_ball(&eye, DVec3::Z), 0.0, f64::INFINITY)
+            .intersect(
+                &Ray::from_ball_unchecked(&eye, DVec3::Z),
+                0.0,
+                f64::INFINITY,
+            )
             .unwrap();
         // Along the z axis the rod's side is at distance 0.05 from the origin.
         assert!((side.t - (eye.distance_from_origin() - 0.05)).abs() < 1e-13);
         // Looking along the axis from beyond the end meets the cap first.
         let beyond = p(0.8, 0.0, 0.0);
         let cap = rod
-            .intersect(&Ray::from_ball(&beyond, -DVec3::X), 0.0, f64::INFINITY)
+            .intersect(
+                &Ray::from_ball_unchecked(&beyond, -DVec3::X),
+                0.0,
+                f64::INFINITY,
+            )
             .unwrap();
         let want = distance(&beyond, &p(0.3, 0.0, 0.0)) - 0.05;
         assert!((cap.t - want).abs() < 1e-13);
         // A ray passing beyond the end, outside the cap, misses.
-        let miss = Ray::from_ball(&p(0.45, 0.0, -0.5), DVec3::Z);
+        let miss = Ray::from_ball_unchecked(&p(0.45, 0.0, -0.5), DVec3::Z);
         assert!(rod.intersect(&miss, 0.0, f64::INFINITY).is_none());
     }
 
     #[test]
     fn from_inside_the_hit_is_the_exit() {
-        let rod = Rod::try_new(p(-0.3, 0.0, 0.0).into(), p(0.3, 0.0, 0.0).into(), 0.05).unwrap();
+        let rod = Rod::new(p(-0.3, 0.0, 0.0).into(), p(0.3, 0.0, 0.0).into(), 0.05).unwrap();
         let inside = p(0.1, 0.0, 0.0);
-        assert!(rod.contains(inside.to_hyperboloid()));
+        assert!(rod.contains(&inside));
         let hit = rod
-            .intersect(&Ray::from_ball(&inside, DVec3::Y), 1e-9, f64::INFINITY)
+            .intersect(
+                &Ray::from_ball_unchecked(&inside, DVec3::Y),
+                1e-9,
+                f64::INFINITY,
+            )
             .unwrap();
         assert!((hit.t - 0.05).abs() < 1e-13);
     }
@@ -338,12 +363,16 @@ mod tests {
     #[test]
     fn ideal_end_has_no_cap() {
         let e = IdealPoint::from_direction(DVec3::X).unwrap();
-        let rod = Rod::try_new(p(-0.3, 0.0, 0.0).into(), e.into(), 0.05).unwrap();
+        let rod = Rod::new(p(-0.3, 0.0, 0.0).into(), e.into(), 0.05).unwrap();
         // Far out towards the ideal end the tube is still there.
         let eye = p(0.9, 0.0, -0.09);
         assert!(
-            rod.intersect(&Ray::from_ball(&eye, DVec3::Z), 0.0, f64::INFINITY)
-                .is_some()
+            rod.intersect(
+                &Ray::from_ball_unchecked(&eye, DVec3::Z),
+                0.0,
+                f64::INFINITY
+            )
+            .is_some()
         );
     }
 }

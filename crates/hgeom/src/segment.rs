@@ -27,7 +27,7 @@ impl Segment {
     /// # Accuracy
     ///
     /// Exact: stores the two points.
-    pub fn try_new(start: Point, end: Point) -> Result<Segment, GeomError> {
+    pub fn new(start: Point, end: Point) -> Result<Segment, GeomError> {
         if start.coords() == end.coords() || distance(&start, &end) == 0.0 {
             return Err(GeomError::Coincident);
         }

@@ -34,7 +34,7 @@ impl HSphere {
     /// The centre and radius are stored exactly; the cached hyperboloid
     /// centre is [`Point::to_hyperboloid`] (2 ulps per component) and
     /// `cosh r` is correctly rounded to an ulp or two.
-    pub fn try_new(center: Point, radius: f64) -> Result<HSphere, GeomError> {
+    pub fn new(center: Point, radius: f64) -> Result<HSphere, GeomError> {
         // cosh r must be finite too: radii past ~710 overflow it.
         if !(radius > 0.0 && radius.cosh().is_finite()) {
             return Err(GeomError::BadRadius(radius));
@@ -48,7 +48,7 @@ impl HSphere {
     }
 
     /// The sphere of hyperbolic `radius` about `center`, with nothing
-    /// checked: the `_unchecked` form of [`HSphere::try_new`], for hot paths
+    /// checked: the `_unchecked` form of [`HSphere::new`], for hot paths
     /// (rebuilding spheres per frame or per ray) whose inputs are valid by
     /// construction.
     ///
@@ -60,7 +60,7 @@ impl HSphere {
     ///
     /// # Accuracy
     ///
-    /// As [`HSphere::try_new`], and bit-identical to it on valid input
+    /// As [`HSphere::new`], and bit-identical to it on valid input
     /// (`tests/constructors.rs`).
     #[inline]
     pub fn new_unchecked(center: Point, radius: f64) -> HSphere {
@@ -127,7 +127,7 @@ impl HSphere {
     /// the radius is unchanged. The image of a centre pushed past distance
     /// ~37 is not representable and the sphere is then meaningless; callers
     /// that move spheres that far check the centre with
-    /// [`Isometry::try_apply`].
+    /// [`Isometry::checked_apply`].
     pub fn transformed(&self, iso: &Isometry) -> HSphere {
         let center = iso.apply(&self.center);
         HSphere {
@@ -138,6 +138,17 @@ impl HSphere {
         }
     }
 
+    /// True if the h-point `p` lies strictly inside: [`Self::contains_hyperboloid`]
+    /// of its hyperboloid image.
+    ///
+    /// # Accuracy
+    ///
+    /// As [`Self::contains_hyperboloid`], with `X` within 2 ulps of the exact image
+    /// ([`Point::to_hyperboloid`]).
+    pub fn contains(&self, p: &Point) -> bool {
+        self.contains_hyperboloid(p.to_hyperboloid())
+    }
+
     /// True if the hyperboloid point `x` is strictly inside.
     ///
     /// # Accuracy
@@ -145,7 +156,7 @@ impl HSphere {
     /// Decides `-<X,C> < cosh r` with `<X,C>` rounded at about
     /// `eps |X| |C|`: exact away from the surface, and a point within that
     /// band of the sphere may go either way.
-    pub fn contains(&self, x: DVec4) -> bool {
+    pub fn contains_hyperboloid(&self, x: DVec4) -> bool {
         -lorentz::dot(x, self.center_h) < self.cosh_r
     }
 
@@ -210,22 +221,22 @@ mod tests {
 
     #[test]
     fn euclidean_form_matches_spec_formula() {
-        let c = Point::try_new(DVec3::new(0.3, 0.0, 0.0)).unwrap();
-        let s = HSphere::try_new(c, 0.5).unwrap();
+        let c = Point::from_coords(DVec3::new(0.3, 0.0, 0.0)).unwrap();
+        let s = HSphere::new(c, 0.5).unwrap();
         let (ec, er) = s.euclidean();
         // The two Euclidean extreme points on the diameter are at hyperbolic
         // distance r from the centre.
         for sign in [-1.0, 1.0] {
-            let q = Point::try_new(ec + DVec3::X * er * sign).unwrap();
+            let q = Point::from_coords(ec + DVec3::X * er * sign).unwrap();
             assert!((distance(&q, &c) - 0.5).abs() < 1e-14);
         }
     }
 
     #[test]
     fn ray_from_centre_hits_at_radius() {
-        let c = Point::try_new(DVec3::new(0.1, 0.2, -0.1)).unwrap();
-        let s = HSphere::try_new(c, 0.7).unwrap();
-        let ray = Ray::from_ball(&c, DVec3::new(0.3, -1.0, 0.2));
+        let c = Point::from_coords(DVec3::new(0.1, 0.2, -0.1)).unwrap();
+        let s = HSphere::new(c, 0.7).unwrap();
+        let ray = Ray::from_ball_unchecked(&c, DVec3::new(0.3, -1.0, 0.2));
         let hit = s.intersect(&ray, 1e-9, f64::INFINITY).unwrap();
         assert!((hit.t - 0.7).abs() < 1e-13);
         // The normal is the ray's own tangent there.
@@ -234,27 +245,27 @@ mod tests {
 
     #[test]
     fn miss_and_tangent() {
-        let c = Point::try_new(DVec3::new(0.0, 0.0, 0.5)).unwrap();
-        let s = HSphere::try_new(c, 0.2).unwrap();
+        let c = Point::from_coords(DVec3::new(0.0, 0.0, 0.5)).unwrap();
+        let s = HSphere::new(c, 0.2).unwrap();
         assert!(
-            s.intersect(&Ray::from_origin(DVec3::X), 0.0, f64::INFINITY)
+            s.intersect(&Ray::from_origin_unchecked(DVec3::X), 0.0, f64::INFINITY)
                 .is_none()
         );
         let hit = s
-            .intersect(&Ray::from_origin(DVec3::Z), 0.0, f64::INFINITY)
+            .intersect(&Ray::from_origin_unchecked(DVec3::Z), 0.0, f64::INFINITY)
             .unwrap();
         let expect = c.distance_from_origin() - 0.2;
         assert!((hit.t - expect).abs() < 1e-14);
         assert!(
-            s.intersect(&Ray::from_origin(-DVec3::Z), 0.0, f64::INFINITY)
+            s.intersect(&Ray::from_origin_unchecked(-DVec3::Z), 0.0, f64::INFINITY)
                 .is_none()
         );
     }
 
     #[test]
     fn bad_radius_is_rejected() {
-        assert!(HSphere::try_new(Point::ORIGIN, -1.0).is_err());
-        assert!(HSphere::try_new(Point::ORIGIN, 0.0).is_err());
-        assert!(HSphere::try_new(Point::ORIGIN, f64::NAN).is_err());
+        assert!(HSphere::new(Point::ORIGIN, -1.0).is_err());
+        assert!(HSphere::new(Point::ORIGIN, 0.0).is_err());
+        assert!(HSphere::new(Point::ORIGIN, f64::NAN).is_err());
     }
 }

@@ -6,9 +6,7 @@ use std::f64::consts::PI;
 
 use glam::{DMat3, DVec3};
 use hgeom::accurate::one_minus_norm_sq;
-use hgeom::{
-    GeomError, HCylinder, HLine, HSphere, IdealPoint, Isometry, Point, Ray, Segment, distance,
-};
+use hgeom::{GeomError, HCylinder, HLine, HSphere, IdealPoint, Isometry, Point, Ray, Segment};
 
 /// Points spread over the ball, from the origin to the edge of f64.
 fn sample_points() -> Vec<Point> {
@@ -25,10 +23,10 @@ fn sample_points() -> Vec<Point> {
 }
 
 #[test]
-fn point_new_unchecked_agrees_with_try_new() {
+fn point_new_unchecked_agrees_with_new() {
     for p in sample_points() {
         let c = p.coords();
-        let checked = Point::try_new(c).unwrap();
+        let checked = Point::from_coords(c).unwrap();
         let unchecked = Point::new_unchecked(c, one_minus_norm_sq(c));
         assert_eq!(checked, unchecked);
         // A gap from an exact identity (here 1/cosh^2(d/2)) is more precise
@@ -42,18 +40,18 @@ fn point_new_unchecked_agrees_with_try_new() {
             checked.gap()
         );
         let d = p.distance_from_origin();
-        assert!((distance(&from_identity, &Point::ORIGIN) - d).abs() <= 1e-14 * d);
+        assert!((from_identity.distance(Point::ORIGIN) - d).abs() <= 1e-14 * d);
     }
 }
 
 #[test]
 fn checked_point_constructors_reject_what_breaks_the_invariants() {
     assert_eq!(
-        Point::try_new(DVec3::new(f64::NAN, 0.0, 0.0)),
+        Point::from_coords(DVec3::new(f64::NAN, 0.0, 0.0)),
         Err(GeomError::NotFinite)
     );
     assert!(matches!(
-        Point::try_new(DVec3::X),
+        Point::from_coords(DVec3::X),
         Err(GeomError::NotInBall { .. })
     ));
     // Beyond distance ~37.4 tanh(d/2) rounds to 1: rejected, not returned
@@ -83,50 +81,50 @@ fn ideal_point_unchecked_agrees_with_checked() {
     ] {
         let a = IdealPoint::from_unit_unchecked(dir);
         let b = IdealPoint::from_direction(dir).unwrap();
-        let c = IdealPoint::try_new(dir, 1e-12).unwrap();
+        let c = IdealPoint::new(dir, 1e-12).unwrap();
         assert!((a.coords() - b.coords()).length() <= 2.0 * f64::EPSILON);
         assert!((a.coords() - c.coords()).length() <= 2.0 * f64::EPSILON);
     }
     assert!(IdealPoint::from_direction(DVec3::ZERO).is_err());
-    assert!(IdealPoint::try_new(DVec3::new(0.5, 0.0, 0.0), 1e-9).is_err());
+    assert!(IdealPoint::new(DVec3::new(0.5, 0.0, 0.0), 1e-9).is_err());
     // A generous tolerance still cannot admit the zero vector, and a NaN
     // tolerance admits nothing.
-    assert!(IdealPoint::try_new(DVec3::ZERO, 2.0).is_err());
-    assert!(IdealPoint::try_new(DVec3::X, f64::NAN).is_err());
+    assert!(IdealPoint::new(DVec3::ZERO, 2.0).is_err());
+    assert!(IdealPoint::new(DVec3::X, f64::NAN).is_err());
 }
 
 #[test]
-fn sphere_new_unchecked_agrees_with_try_new() {
+fn sphere_new_unchecked_agrees_with_new() {
     for c in sample_points() {
         for r in [1e-6, 0.1, 2.0, 20.0, 700.0] {
-            let checked = HSphere::try_new(c, r).unwrap();
+            let checked = HSphere::new(c, r).unwrap();
             let unchecked = HSphere::new_unchecked(c, r);
             assert_eq!(checked, unchecked);
-            let ray = Ray::from_origin(DVec3::new(0.3, 0.1, 1.0));
+            let ray = Ray::from_origin_unchecked(DVec3::new(0.3, 0.1, 1.0));
             assert_eq!(checked.roots(&ray), unchecked.roots(&ray));
         }
     }
     for r in [0.0, -1.0, f64::NAN, f64::INFINITY, 711.0] {
         assert!(matches!(
-            HSphere::try_new(Point::ORIGIN, r),
+            HSphere::new(Point::ORIGIN, r),
             Err(GeomError::BadRadius(_))
         ));
     }
 }
 
 #[test]
-fn cylinder_new_unchecked_agrees_with_try_new() {
+fn cylinder_new_unchecked_agrees_with_new() {
     let points = sample_points();
     for pair in points.windows(2) {
         let line = HLine::through(&pair[0].into(), &pair[1].into()).unwrap();
         for r in [1e-6, 0.1, 2.0, 300.0] {
-            let checked = HCylinder::try_new(line, r).unwrap();
+            let checked = HCylinder::new(line, r).unwrap();
             let unchecked = HCylinder::new_unchecked(line, r);
             assert_eq!(checked, unchecked);
         }
         for r in [0.0, -0.5, f64::NAN, 400.0] {
             assert!(matches!(
-                HCylinder::try_new(line, r),
+                HCylinder::new(line, r),
                 Err(GeomError::BadRadius(_))
             ));
         }
@@ -136,17 +134,20 @@ fn cylinder_new_unchecked_agrees_with_try_new() {
 #[test]
 fn ray_constructors_agree_and_reject_bad_directions() {
     let dir = DVec3::new(0.3, -0.4, 1.2);
-    assert_eq!(Ray::try_from_origin(dir).unwrap(), Ray::from_origin(dir));
+    assert_eq!(
+        Ray::from_origin(dir).unwrap(),
+        Ray::from_origin_unchecked(dir)
+    );
     for p in sample_points() {
         assert_eq!(
-            Ray::try_from_ball(&p, dir).unwrap(),
-            Ray::from_ball(&p, dir)
+            Ray::from_ball(&p, dir).unwrap(),
+            Ray::from_ball_unchecked(&p, dir)
         );
     }
     for bad in [DVec3::ZERO, DVec3::new(f64::NAN, 0.0, 1.0), DVec3::INFINITY] {
-        assert_eq!(Ray::try_from_origin(bad), Err(GeomError::BadDirection));
+        assert_eq!(Ray::from_origin(bad), Err(GeomError::BadDirection));
         assert_eq!(
-            Ray::try_from_ball(&Point::ORIGIN, bad),
+            Ray::from_ball(&Point::ORIGIN, bad),
             Err(GeomError::BadDirection)
         );
     }
@@ -155,7 +156,7 @@ fn ray_constructors_agree_and_reject_bad_directions() {
     let beyond = Isometry::transvection_from_origin(far).apply(&far);
     assert!(!beyond.is_representable());
     assert!(matches!(
-        Ray::try_from_ball(&beyond, DVec3::Y),
+        Ray::from_ball(&beyond, DVec3::Y),
         Err(GeomError::NotInBall { .. })
     ));
 }
@@ -164,36 +165,36 @@ fn ray_constructors_agree_and_reject_bad_directions() {
 fn isometry_checked_forms_agree_with_unchecked() {
     let q = DMat3::from_axis_angle(DVec3::new(1.0, 2.0, -0.5).normalize(), 0.9);
     assert_eq!(
-        Isometry::try_orthogonal(q).unwrap(),
-        Isometry::orthogonal(q)
+        Isometry::orthogonal(q).unwrap(),
+        Isometry::orthogonal_unchecked(q)
     );
     let mirror = DMat3::from_diagonal(DVec3::new(1.0, -1.0, 1.0));
     assert_eq!(
-        Isometry::try_orthogonal(mirror).unwrap(),
-        Isometry::orthogonal(mirror)
+        Isometry::orthogonal(mirror).unwrap(),
+        Isometry::orthogonal_unchecked(mirror)
     );
     assert!(matches!(
-        Isometry::try_orthogonal(DMat3::from_diagonal(DVec3::new(1.0, 2.0, 1.0))),
+        Isometry::orthogonal(DMat3::from_diagonal(DVec3::new(1.0, 2.0, 1.0))),
         Err(GeomError::NotOrthogonal { .. })
     ));
     assert_eq!(
-        Isometry::try_orthogonal(DMat3::from_diagonal(DVec3::new(f64::NAN, 1.0, 1.0))),
+        Isometry::orthogonal(DMat3::from_diagonal(DVec3::new(f64::NAN, 1.0, 1.0))),
         Err(GeomError::NotFinite)
     );
-    let axis = Segment::try_new(
-        Point::try_new(DVec3::new(0.1, 0.2, 0.0)).unwrap(),
-        Point::try_new(DVec3::new(-0.3, 0.1, 0.4)).unwrap(),
+    let axis = Segment::new(
+        Point::from_coords(DVec3::new(0.1, 0.2, 0.0)).unwrap(),
+        Point::from_coords(DVec3::new(-0.3, 0.1, 0.4)).unwrap(),
     )
     .unwrap();
     for angle in [0.0, 1e-9, 0.7, PI, -2.0] {
         assert_eq!(
-            Isometry::try_rotation(&axis, angle).unwrap(),
-            Isometry::rotation(&axis, angle)
+            Isometry::rotation_about_segment(&axis, angle).unwrap(),
+            Isometry::rotation_about_segment_unchecked(&axis, angle)
         );
     }
     for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
         assert!(matches!(
-            Isometry::try_rotation(&axis, bad),
+            Isometry::rotation_about_segment(&axis, bad),
             Err(GeomError::BadAngle(_))
         ));
     }

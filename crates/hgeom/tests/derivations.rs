@@ -20,7 +20,7 @@ use glam::{DMat3, DVec3, DVec4};
 use hgeom::accurate::one_minus_norm_sq;
 use hgeom::{
     ConvexPolygon, HCylinder, HLine, HPlane, HSphere, Horosphere, IdealPoint, Isometry, Point, Ray,
-    Segment, Vertex, distance, lorentz, mobius,
+    Segment, Vertex, lorentz, mobius,
 };
 use reference::R;
 
@@ -56,14 +56,14 @@ impl Rng {
     fn point(&mut self, lo: f64, hi: f64) -> Point {
         let d = self.uniform(lo, hi);
         let p = Point::at_distance_from_origin(self.dir(), d).unwrap();
-        Point::try_new(p.coords()).unwrap()
+        Point::from_coords(p.coords()).unwrap()
     }
 }
 
 /// The point at arc length `len` along the geodesic leaving `p` in the ball
 /// direction `dir`.
 fn step(p: &Point, dir: DVec3, len: f64) -> Point {
-    Point::from_hyperboloid(Ray::from_ball(p, dir).at(len)).unwrap()
+    Point::from_hyperboloid(Ray::from_ball_unchecked(p, dir).at(len)).unwrap()
 }
 
 fn max_of(xs: &[f64]) -> f64 {
@@ -179,7 +179,9 @@ fn distance_from_origin_matches_the_reference() {
     for _ in 0..400 {
         let g = 10f64.powf(rng.uniform(-15.0, 0.0));
         let c = rng.dir() * (1.0 - g);
-        let Ok(p) = Point::try_new(c) else { continue };
+        let Ok(p) = Point::from_coords(c) else {
+            continue;
+        };
         let want = reference::distance(DVec3::ZERO, c);
         errs.push(rel(p.distance_from_origin(), &want));
     }
@@ -218,13 +220,13 @@ fn at_distance_from_origin_matches_the_reference() {
 /// `acosh(1 + t)` loses everything for tiny distances; `2 asinh` does not.
 #[test]
 fn acosh_form_fails_for_tiny_distances_and_asinh_does_not() {
-    let a = Point::try_new(DVec3::new(0.3, 0.0, 0.0)).unwrap();
-    let b = Point::try_new(DVec3::new(0.3 + 1e-10, 0.0, 0.0)).unwrap();
+    let a = Point::from_coords(DVec3::new(0.3, 0.0, 0.0)).unwrap();
+    let b = Point::from_coords(DVec3::new(0.3 + 1e-10, 0.0, 0.0)).unwrap();
     let h = b.coords().x - a.coords().x;
     let want = 2.0 * h / (1.0 - 0.3 * (0.3 + h));
     let t = 2.0 * (a.coords() - b.coords()).length_squared() / (a.gap() * b.gap());
     let acosh_form = (1.0 + t).acosh();
-    let got = distance(&a, &b);
+    let got = a.distance(b);
     assert!(((got - want) / want).abs() < 1e-12, "{got:e} vs {want:e}");
     assert!(((acosh_form - want) / want).abs() > 1e-8, "{acosh_form:e}");
 }
@@ -249,8 +251,8 @@ fn mobius_addition_is_the_complex_formula_in_a_plane() {
             (num.0 * den.0 + num.1 * den.1) / n2,
             (num.1 * den.0 - num.0 * den.1) / n2,
         );
-        let pu = Point::try_new(DVec3::new(u.0, u.1, 0.0)).unwrap();
-        let pv = Point::try_new(DVec3::new(v.0, v.1, 0.0)).unwrap();
+        let pu = Point::from_coords(DVec3::new(u.0, u.1, 0.0)).unwrap();
+        let pv = Point::from_coords(DVec3::new(v.0, v.1, 0.0)).unwrap();
         let s = mobius::add(&pu, &pv);
         assert!((s.coords() - DVec3::new(w.0, w.1, 0.0)).length() < 1e-14);
         // The gap identity: 1 - |u (+) v|^2 = gap_u gap_v / |1 + conj(u) v|^2.
@@ -270,8 +272,8 @@ fn mobius_addition_matches_the_reference() {
         let v = if k % 2 == 0 {
             rng.point(0.0, 12.0)
         } else {
-            let back = Point::try_new(-u.coords()).unwrap();
-            Point::try_new(step(&back, rng.dir(), rng.uniform(1e-6, 1.0)).coords()).unwrap()
+            let back = Point::from_coords(-u.coords()).unwrap();
+            Point::from_coords(step(&back, rng.dir(), rng.uniform(1e-6, 1.0)).coords()).unwrap()
         };
         let s = mobius::add(&u, &v);
         let exact = mobius_r(&r3(u.coords()), &r3(v.coords()));
@@ -293,13 +295,13 @@ fn mobius_addition_matches_the_reference() {
 fn gyration_is_the_complex_rotation() {
     let mut rng = Rng(6);
     for _ in 0..200 {
-        let u = Point::try_new(DVec3::new(
+        let u = Point::from_coords(DVec3::new(
             rng.uniform(-0.6, 0.6),
             rng.uniform(-0.6, 0.6),
             0.0,
         ))
         .unwrap();
-        let v = Point::try_new(DVec3::new(
+        let v = Point::from_coords(DVec3::new(
             rng.uniform(-0.6, 0.6),
             rng.uniform(-0.6, 0.6),
             0.0,
@@ -317,9 +319,9 @@ fn gyration_is_the_complex_rotation() {
         // Vectors along the axis u x v are fixed.
         assert!((g * DVec3::Z - DVec3::Z).length() < 1e-15);
         // The definition, with points off the plane too.
-        let w3 = Point::try_new(DVec3::new(0.1, 0.2, 0.3)).unwrap();
+        let w3 = Point::from_coords(DVec3::new(0.1, 0.2, 0.3)).unwrap();
         let uv = mobius::add(&u, &v);
-        let minus_uv = Point::try_new(-uv.coords()).unwrap();
+        let minus_uv = Point::from_coords(-uv.coords()).unwrap();
         let lhs = mobius::add(&minus_uv, &mobius::add(&u, &mobius::add(&v, &w3)));
         assert!((g * w3.coords() - lhs.coords()).length() < 1e-14);
     }
@@ -338,7 +340,7 @@ fn isometry_apply_matches_the_reference() {
     for _ in 0..300 {
         let a = rng.point(0.0, 12.0);
         let q = DMat3::from_axis_angle(rng.dir(), rng.uniform(-PI, PI));
-        let f = Isometry::transvection_from_origin(a).compose(&Isometry::orthogonal(q));
+        let f = Isometry::transvection_from_origin(a).compose(&Isometry::orthogonal_unchecked(q));
         let x = rng.point(0.0, 12.0);
         let img = f.apply(&x);
         let qx: R3 = {
@@ -371,7 +373,7 @@ fn reflection_is_the_hyperboloid_mirror() {
         let x = rng.point(0.0, 3.0);
         let xh = x.to_hyperboloid();
         let mirrored = Point::from_hyperboloid(xh - 2.0 * lorentz::dot(xh, n) * n).unwrap();
-        let d = distance(&r.apply(&x), &mirrored);
+        let d = r.apply(&x).distance(mirrored);
         assert!(d < 1e-12, "{d:e}");
     }
 }
@@ -386,15 +388,15 @@ fn translation_equals_the_two_reflection_definition() {
     for _ in 0..300 {
         let a = rng.point(0.0, 1.5);
         let b = step(&a, rng.dir(), rng.uniform(0.05, 3.0));
-        let seg = Segment::try_new(a, b).unwrap();
+        let seg = Segment::new(a, b).unwrap();
         let t = Isometry::translation(&seg).unwrap();
         let s = Isometry::translation_by_reflections(&seg).unwrap();
         assert!(t.preserves_orientation() && s.preserves_orientation());
         for _ in 0..3 {
             let x = rng.point(0.0, 3.0);
-            worst = worst.max(distance(&t.apply(&x), &s.apply(&x)));
+            worst = worst.max(t.apply(&x).distance(s.apply(&x)));
         }
-        worst = worst.max(distance(&s.apply(&a), &b));
+        worst = worst.max(s.apply(&a).distance(b));
     }
     eprintln!("translation vs two reflections: max {worst:e}");
     assert!(worst < 1e-12, "{worst:e}");
@@ -409,9 +411,9 @@ fn rotation_follows_the_right_hand_rule_about_any_axis() {
     for _ in 0..200 {
         let a = rng.point(0.0, 2.0);
         let b = step(&a, rng.dir(), rng.uniform(0.1, 2.0));
-        let seg = Segment::try_new(a, b).unwrap();
+        let seg = Segment::new(a, b).unwrap();
         let theta = rng.uniform(-PI, PI);
-        let rot = Isometry::rotation(&seg, theta);
+        let rot = Isometry::rotation_about_segment_unchecked(&seg, theta);
         let u = seg.direction_at_start();
         let w = u.any_orthonormal_vector();
         let want = theta.cos() * w + theta.sin() * u.cross(w);
@@ -428,7 +430,7 @@ fn lorentz_matrix_agrees_with_apply() {
     for _ in 0..200 {
         let a = rng.point(0.0, 3.0);
         let q = DMat3::from_axis_angle(rng.dir(), rng.uniform(-PI, PI));
-        let f = Isometry::transvection_from_origin(a).compose(&Isometry::orthogonal(q));
+        let f = Isometry::transvection_from_origin(a).compose(&Isometry::orthogonal_unchecked(q));
         let m = f.to_lorentz();
         let x = rng.point(0.0, 3.0);
         let want = f.apply(&x).to_hyperboloid();
@@ -477,7 +479,7 @@ fn plane_through_three_points_follows_the_right_hand_rule() {
         assert!(n_ball.dot(u.cross(v)) > 0.0);
     }
     // The documented example: counter-clockwise in the xy plane seen from +z.
-    let p = |x: f64, y: f64, z: f64| Vertex::from(Point::try_new(DVec3::new(x, y, z)).unwrap());
+    let p = |x: f64, y: f64, z: f64| Vertex::from(Point::from_coords(DVec3::new(x, y, z)).unwrap());
     let plane = HPlane::through(&p(0.1, 0.0, 0.3), &p(0.0, 0.1, 0.3), &p(-0.1, -0.1, 0.3)).unwrap();
     assert!(plane.normal().z > 0.0);
 }
@@ -547,7 +549,7 @@ fn crossing_from_origin_equals_the_general_formula() {
         let Ok(plane) = HPlane::through(&pts[0], &pts[1], &pts[2]) else {
             continue;
         };
-        let ray = Ray::from_origin(rng.dir());
+        let ray = Ray::from_origin_unchecked(rng.dir());
         let (o, d) = (
             lorentz::dot(ray.origin, plane.normal()),
             lorentz::dot(ray.dir, plane.normal()),
@@ -588,7 +590,7 @@ fn euclidean_sphere_matches_the_reference() {
     for _ in 0..400 {
         let c = rng.point(0.0, 30.0);
         let r = rng.uniform(1e-6, 20.0);
-        let s = HSphere::try_new(c, r).unwrap();
+        let s = HSphere::new(c, r).unwrap();
         let (centre, radius) = s.euclidean();
         let half = R::f(0.5 * r);
         let t = half.sinh() / half.cosh();
@@ -616,7 +618,7 @@ fn euclidean_sphere_extremes_are_at_distance_d_plus_minus_r() {
     for _ in 0..200 {
         let c = rng.point(0.1, 5.0);
         let r = rng.uniform(0.01, 3.0);
-        let (centre, radius) = HSphere::try_new(c, r).unwrap().euclidean();
+        let (centre, radius) = HSphere::new(c, r).unwrap().euclidean();
         let dist = c.distance_from_origin();
         let u = c.coords().normalize();
         let far = (centre + radius * u).dot(u);
@@ -633,8 +635,8 @@ fn sphere_roots_solve_the_level_equation() {
     for _ in 0..200 {
         let c = rng.point(0.0, 3.0);
         let r = rng.uniform(0.05, 2.0);
-        let s = HSphere::try_new(c, r).unwrap();
-        let ray = Ray::from_origin(rng.dir());
+        let s = HSphere::new(c, r).unwrap();
+        let ray = Ray::from_origin_unchecked(rng.dir());
         let Some((near, far)) = s.roots(&ray) else {
             continue;
         };
@@ -729,8 +731,8 @@ fn cylinder_roots_solve_the_quadric() {
             continue;
         };
         let r = rng.uniform(0.05, 1.0);
-        let cyl = HCylinder::try_new(line, r).unwrap();
-        let ray = Ray::from_origin(rng.dir());
+        let cyl = HCylinder::new(line, r).unwrap();
+        let ray = Ray::from_origin_unchecked(rng.dir());
         let Some((near, far)) = cyl.roots(&ray) else {
             continue;
         };
@@ -761,14 +763,14 @@ fn horosphere_level_is_the_euclidean_sphere() {
     for _ in 0..200 {
         let xi = IdealPoint::from_direction(rng.dir()).unwrap();
         let q = rng.point(0.0, 4.0);
-        let h = Horosphere::try_new(xi, &q).unwrap();
+        let h = Horosphere::new(xi, &q).unwrap();
         let l = xi.to_hyperboloid();
         let k = -lorentz::dot(q.to_hyperboloid(), l);
         let (c, r) = h.euclidean();
         assert!((c - xi.coords() / (1.0 + k)).length() < 1e-12);
         assert!((r - k / (1.0 + k)).abs() < 1e-12);
         for _ in 0..5 {
-            let p = Point::try_new(c + r * rng.dir()).unwrap_or(q);
+            let p = Point::from_coords(c + r * rng.dir()).unwrap_or(q);
             let level = (p.coords() - xi.coords()).length_squared() / p.gap();
             let xp = p.to_hyperboloid();
             assert!((level - k).abs() < 1e-9 * k.max(1.0), "{level} vs {k}");
@@ -819,10 +821,9 @@ fn from_hyperboloid_rejects_spacelike_vectors() {
 /// on the normals themselves, and on the side of the origin the plane keeps.
 #[test]
 fn far_polygon_gets_its_new_plane() {
-    let v = |x: f64, y: f64| Vertex::from(Point::try_new(DVec3::new(x, y, 0.0)).unwrap());
+    let v = |x: f64, y: f64| Vertex::from(Point::from_coords(DVec3::new(x, y, 0.0)).unwrap());
     let square =
-        ConvexPolygon::try_new(vec![v(0.3, 0.3), v(-0.3, 0.3), v(-0.3, -0.3), v(0.3, -0.3)])
-            .unwrap();
+        ConvexPolygon::new(vec![v(0.3, 0.3), v(-0.3, 0.3), v(-0.3, -0.3), v(0.3, -0.3)]).unwrap();
     let shift = Isometry::transvection_from_origin(
         Point::at_distance_from_origin(DVec3::new(0.3, 0.2, 1.0), 18.0).unwrap(),
     );
@@ -851,7 +852,7 @@ fn far_plane_transforms_to_a_finite_normal() {
         let shift = Isometry::transvection_from_origin(
             Point::at_distance_from_origin(DVec3::new(0.3, 0.2, 1.0), d).unwrap(),
         )
-        .compose(&Isometry::orthogonal(DMat3::from_axis_angle(
+        .compose(&Isometry::orthogonal_unchecked(DMat3::from_axis_angle(
             DVec3::new(1.0, 2.0, 3.0).normalize(),
             0.7,
         )));

@@ -11,7 +11,7 @@ use hgeom::lorentz;
 use hgeom::{
     CUBE_435_DIHEDRAL, ConvexPolygon, GeomError, Isometry, MAX_TESSELLATION_CELLS, Platonic, Point,
     Polyhedron, REGULAR_POLYGON_VERTICES, Segment, Vertex, cube_435, cube_435_circumradius,
-    distance, honeycomb_435, ideal_regular_polygon, lambert_quadrilateral, regular_polygon,
+    honeycomb_435, ideal_regular_polygon, lambert_quadrilateral, regular_polygon,
     regular_polygon_with_side, saccheri_quadrilateral, tessellate, unique_edges,
 };
 
@@ -58,7 +58,7 @@ fn angles(ps: &[Point]) -> Vec<f64> {
 /// Side lengths, side `i` joining vertices `i` and `i + 1`.
 fn sides(ps: &[Point]) -> Vec<f64> {
     let n = ps.len();
-    (0..n).map(|i| distance(&ps[i], &ps[(i + 1) % n])).collect()
+    (0..n).map(|i| ps[i].distance(ps[(i + 1) % n])).collect()
 }
 
 fn spread(xs: &[f64]) -> f64 {
@@ -147,8 +147,8 @@ fn lambert_quadrilateral_has_three_right_angles() {
         // Order O, B, C, A.
         let (o, vb, c, va) = (ps[0], ps[1], ps[2], ps[3]);
         assert_eq!(o.coords(), DVec3::ZERO);
-        assert!((distance(&o, &va) - a).abs() < 1e-14 * a.max(1.0));
-        assert!((distance(&o, &vb) - b).abs() < 1e-14 * b.max(1.0));
+        assert!((o.distance(va) - a).abs() < 1e-14 * a.max(1.0));
+        assert!((o.distance(vb) - b).abs() < 1e-14 * b.max(1.0));
         assert!(va.coords().x > 0.0 && vb.coords().y > 0.0);
         let ang = angles(&ps);
         for i in [0, 1, 3] {
@@ -161,8 +161,8 @@ fn lambert_quadrilateral_has_three_right_angles() {
         assert!(ang[2] < FRAC_PI_2);
         assert!((ang[2].cos() - a.sinh() * b.sinh()).abs() < 1e-12);
         // tanh(AC) = tanh(b) cosh(a), tanh(BC) = tanh(a) cosh(b).
-        assert!((distance(&va, &c).tanh() - b.tanh() * a.cosh()).abs() < 1e-13);
-        assert!((distance(&vb, &c).tanh() - a.tanh() * b.cosh()).abs() < 1e-13);
+        assert!((va.distance(c).tanh() - b.tanh() * a.cosh()).abs() < 1e-13);
+        assert!((vb.distance(c).tanh() - a.tanh() * b.cosh()).abs() < 1e-13);
     }
 }
 
@@ -200,9 +200,9 @@ fn saccheri_quadrilateral_has_right_base_angles_and_equal_summit_angles() {
         let ps = points(&poly);
         // Order P-, Q-, Q+, P+.
         let (pm, qm, qp, pp) = (ps[0], ps[1], ps[2], ps[3]);
-        assert!((distance(&pm, &pp) - base).abs() < 1e-13 * base.max(1.0));
-        assert!((distance(&pm, &qm) - leg).abs() < 1e-13 * leg.max(1.0));
-        assert!((distance(&pp, &qp) - leg).abs() < 1e-13 * leg.max(1.0));
+        assert!((pm.distance(pp) - base).abs() < 1e-13 * base.max(1.0));
+        assert!((pm.distance(qm) - leg).abs() < 1e-13 * leg.max(1.0));
+        assert!((pp.distance(qp) - leg).abs() < 1e-13 * leg.max(1.0));
         assert!(pm.coords().y == 0.0 && pp.coords().y == 0.0);
         assert!((pm.coords() + pp.coords()).length() < 1e-16);
         assert!(qm.coords().y > 0.0 && qp.coords().y > 0.0);
@@ -229,7 +229,7 @@ fn unique_points(poly: &Polyhedron) -> Vec<Point> {
     for f in poly.faces() {
         for v in f.vertices() {
             let p = interior(v);
-            if !out.iter().any(|q| distance(q, &p) < 1e-9) {
+            if !out.iter().any(|q| (*q).distance(p) < 1e-9) {
                 out.push(p);
             }
         }
@@ -241,7 +241,7 @@ fn unique_points(poly: &Polyhedron) -> Vec<Point> {
 fn edge_lengths(poly: &Polyhedron) -> Vec<f64> {
     poly.edges()
         .iter()
-        .map(|(a, b)| distance(&interior(a), &interior(b)))
+        .map(|(a, b)| interior(a).distance(interior(b)))
         .collect()
 }
 
@@ -269,7 +269,7 @@ fn cuboctahedron_is_uniform() {
                 .filter(|f| {
                     f.vertices()
                         .iter()
-                        .any(|v| distance(&interior(v), p) < 1e-12)
+                        .any(|v| interior(v).distance(*p) < 1e-12)
                 })
                 .count();
             assert_eq!(around, 4);
@@ -299,12 +299,12 @@ fn small_stellated_dodecahedron_has_sixty_spike_triangles() {
             let t = at_r[0];
             let (b1, b2) = (ps[(t + 1) % 3], ps[(t + 2) % 3]);
             // Isosceles spike: both sides from the tip are equal.
-            let (s1, s2) = (distance(&ps[t], &b1), distance(&ps[t], &b2));
+            let (s1, s2) = (ps[t].distance(b1), ps[t].distance(b2));
             assert!((s1 - s2).abs() < 1e-12);
             spike_sides.push(s1);
             for (is_tip, p) in [(true, ps[t]), (false, b1), (false, b2)] {
                 let list = if is_tip { &mut tips } else { &mut core };
-                if !list.iter().any(|q| distance(q, &p) < 1e-9) {
+                if !list.iter().any(|q| (*q).distance(p) < 1e-9) {
                     list.push(p);
                 }
             }
@@ -323,7 +323,7 @@ fn small_stellated_dodecahedron_has_sixty_spike_triangles() {
         // The tips are the icosahedron's vertices.
         let ico = unique_points(&Polyhedron::platonic(Platonic::Icosahedron, r).unwrap());
         for t in &tips {
-            assert!(ico.iter().any(|q| distance(q, t) < 1e-12));
+            assert!(ico.iter().any(|q| (*q).distance(*t) < 1e-12));
         }
         // 12 pentagram planes, 5 triangles in each.
         let mut planes: Vec<(DVec4, usize)> = Vec::new();
@@ -380,7 +380,7 @@ fn golden_rectangles_are_three_orthogonal_quadrilaterals() {
         // Their 12 vertices are the icosahedron's.
         assert_eq!(all.len(), 12);
         for p in &ico {
-            assert!(all.iter().any(|q| distance(p, q) < 1e-13));
+            assert!(all.iter().any(|q| (*p).distance(*q) < 1e-13));
         }
     }
 }
@@ -392,16 +392,16 @@ fn edges_are_unique_and_survive_isometries() {
         let p = Polyhedron::platonic(kind, 0.7).unwrap();
         assert_eq!(p.edges().len(), n, "{kind:?}");
         let iso = Isometry::translation(
-            &Segment::try_new(
+            &Segment::new(
                 Point::ORIGIN,
-                Point::try_new(DVec3::new(0.3, 0.2, 0.1)).unwrap(),
+                Point::from_coords(DVec3::new(0.3, 0.2, 0.1)).unwrap(),
             )
             .unwrap(),
         )
         .unwrap();
         assert_eq!(p.transformed(&iso).edges().len(), n, "{kind:?}");
         for (a, b) in p.edges() {
-            assert!(distance(&interior(&a), &interior(&b)) > 0.1);
+            assert!(interior(&a).distance(interior(&b)) > 0.1);
         }
         let ideal = Polyhedron::ideal_platonic(kind).unwrap();
         assert_eq!(ideal.edges().len(), n, "{kind:?}");
@@ -432,7 +432,7 @@ fn dihedral_cosines(p: &Polyhedron) -> Vec<f64> {
                     faces[j]
                         .vertices()
                         .iter()
-                        .any(|w| distance(&interior(v), &interior(w)) < 1e-12)
+                        .any(|w| interior(v).distance(interior(w)) < 1e-12)
                 })
                 .count();
             if shared == 2 {
@@ -547,7 +547,7 @@ fn honeycomb_435_cell_counts_and_face_to_face_fit() {
     assert!((2.0 * inradius - 1.061_275_061_9).abs() < 1e-10);
     for (i, a) in cells.iter().enumerate() {
         for b in &cells[i + 1..] {
-            let d = distance(&a.polyhedron.center(), &b.polyhedron.center());
+            let d = a.polyhedron.center().distance(b.polyhedron.center());
             assert!(d > 2.0 * inradius - 1e-12, "{d}");
         }
         // The placement maps the generating cell onto this one.

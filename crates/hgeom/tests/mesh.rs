@@ -10,8 +10,7 @@ use std::f64::consts::{PI, TAU};
 
 use glam::{DVec3, DVec4};
 use hgeom::{
-    ConvexPolygon, HPlane, Hit, Isometry, Point, Ray, Segment, TriangleMesh, Vertex, distance,
-    lorentz,
+    ConvexPolygon, HPlane, Hit, Isometry, Point, Ray, Segment, TriangleMesh, Vertex, lorentz,
 };
 use proptest::prelude::*;
 
@@ -59,8 +58,8 @@ impl Rng {
     /// rotation, and a reflection half of the time.
     fn placement(&mut self, reach: f64) -> Isometry {
         let end = Point::at_distance_from_origin(self.dir(), 0.5).unwrap();
-        let axis = Segment::try_new(Point::ORIGIN, end).unwrap();
-        let spin = Isometry::rotation(&axis, self.uniform(-PI, PI));
+        let axis = Segment::new(Point::ORIGIN, end).unwrap();
+        let spin = Isometry::rotation_about_segment_unchecked(&axis, self.uniform(-PI, PI));
         let shift = Isometry::transvection_from_origin(self.point(reach));
         let f = shift.compose(&spin);
         if self.next() & 1 == 0 {
@@ -86,15 +85,15 @@ fn unit_from(z: f64, phi: f64) -> DVec3 {
 
 /// The ray from `from` towards `to` (ball points).
 fn ray_towards(from: &Point, to: &Point) -> Ray {
-    let dir = Segment::try_new(*from, *to).unwrap().direction_at_start();
-    Ray::from_ball(from, dir)
+    let dir = Segment::new(*from, *to).unwrap().direction_at_start();
+    Ray::from_ball_unchecked(from, dir)
 }
 
 /// The ray `ray` moved by the isometry `f`.
 fn moved_ray(f: &Isometry, ray: &Ray) -> Ray {
     let p = Point::from_hyperboloid(ray.origin).unwrap();
     let dir = hgeom::ray::ball_direction(ray.origin, ray.dir);
-    Ray::from_ball(&f.apply(&p), f.apply_direction(&p, dir))
+    Ray::from_ball_unchecked(&f.apply(&p), f.apply_direction(&p, dir))
 }
 
 /// Scale a future timelike vector onto the hyperboloid and read it as a point.
@@ -138,7 +137,7 @@ fn polygons(mesh: &TriangleMesh) -> Vec<Option<ConvexPolygon>> {
     let vs = mesh.vertices();
     mesh.triangles()
         .iter()
-        .map(|t| ConvexPolygon::try_new(t.map(|k| Vertex::from(vs[k as usize])).to_vec()).ok())
+        .map(|t| ConvexPolygon::new(t.map(|k| Vertex::from(vs[k as usize])).to_vec()).ok())
         .collect()
 }
 
@@ -330,16 +329,16 @@ fn mesh_hits_agree_with_convex_polygons() {
             // near the mesh, so most of them hit.
             let aim = Isometry::transvection_from_origin(toward).apply(&rng.point(1.5));
             let ray = if toward.coords() == DVec3::ZERO || k % 4 == 0 {
-                Ray::from_origin(rng.dir())
+                Ray::from_origin_unchecked(rng.dir())
             } else {
-                Ray::from_origin(aim.coords())
+                Ray::from_origin_unchecked(aim.coords())
             };
             let (err, res) = compare_with_polygons(&mesh, &polys, &ray, |_| 5e-12);
             from_origin = from_origin.max(err);
             residual_origin = residual_origin.max(res);
             // Rays from points within 2 of the mesh.
             let start = Isometry::transvection_from_origin(toward).apply(&rng.point(2.0));
-            if distance(&start, &aim) > 1e-6 {
+            if start.distance(aim) > 1e-6 {
                 let ray = ray_towards(&start, &aim);
                 let x = ray.origin;
                 let (err, res) =
@@ -371,7 +370,7 @@ proptest! {
         for _ in 0..40 {
             let start = there.apply(&rng.point(from + 1.0));
             let aim = there.apply(&rng.point(1.0));
-            if distance(&start, &aim) < 1e-6 {
+            if start.distance(aim) < 1e-6 {
                 continue;
             }
             let ray = ray_towards(&start, &aim);
@@ -409,7 +408,7 @@ proptest! {
         let moved = mesh.transformed(&f);
         let back = f.inverse();
         for _ in 0..40 {
-            let ray = Ray::from_ball(&rng.point(3.0), rng.dir());
+            let ray = Ray::from_ball_unchecked(&rng.point(3.0), rng.dir());
             let a = moved.intersect_indexed(&ray, 0.0, f64::INFINITY);
             let b = mesh.intersect_indexed(&moved_ray(&back, &ray), 0.0, f64::INFINITY);
             match (a, b) {
@@ -441,13 +440,13 @@ fn bounding_ball_contains_vertices_and_hits() {
         let centre = Point::from_hyperboloid(c).unwrap();
         assert!(r < 2.0, "{r}");
         for v in mesh.vertices().iter() {
-            assert!(distance(&centre, v) <= r);
+            assert!(centre.distance(*v) <= r);
         }
         for _ in 0..300 {
-            let ray = Ray::from_origin(rng.dir());
+            let ray = Ray::from_origin_unchecked(rng.dir());
             if let Some(hit) = mesh.intersect(&ray, 0.0, f64::INFINITY) {
                 let p = Point::from_hyperboloid(hit.point).unwrap();
-                assert!(distance(&centre, &p) <= r);
+                assert!(centre.distance(p) <= r);
             }
         }
     }
@@ -476,7 +475,7 @@ fn rays_from_inside_a_closed_mesh_always_hit() {
             } else {
                 f.apply(&rng.point(0.5 * radius))
             };
-            let ray = Ray::from_ball(&start, rng.dir());
+            let ray = Ray::from_ball_unchecked(&start, rng.dir());
             let hits = all_hits(&mesh, &ray);
             rays += 1;
             assert_eq!(hits.len(), 1, "case {case}, ray {k}: {hits:?}");
@@ -526,17 +525,17 @@ fn rays_through_edges_and_vertices_never_miss() {
         let moved = mesh.transformed(f);
         for x in &targets {
             // From the centre, exactly radial in the unmoved frame.
-            let ray = moved_ray(f, &Ray::from_origin(x.truncate()));
+            let ray = moved_ray(f, &Ray::from_origin_unchecked(x.truncate()));
             let hit = moved.intersect(&ray, 0.0, f64::INFINITY);
             assert!(hit.is_some(), "missed {x:?} from the centre after {f:?}");
             let target = f.apply(&from_timelike(*x));
-            let expect = distance(&f.apply(&Point::ORIGIN), &target);
+            let expect = f.apply(&Point::ORIGIN).distance(target);
             assert!((hit.unwrap().t - expect).abs() < 1e-9 * expect.max(1.0));
             // From outside on the same radial line, aimed at the centre
             // (the mesh is star-shaped about it, so the point is not on the
             // silhouette, where a ray may rightly graze past).
             let out = Point::at_distance_from_origin(x.truncate(), 3.0).unwrap();
-            let ray = moved_ray(f, &Ray::from_ball(&out, -x.truncate()));
+            let ray = moved_ray(f, &Ray::from_ball_unchecked(&out, -x.truncate()));
             assert!(
                 moved.intersect(&ray, 0.0, f64::INFINITY).is_some(),
                 "missed {x:?} from outside after {f:?}"
@@ -568,7 +567,7 @@ fn long_chains_of_moves_stay_accurate() {
         let step = if at.distance_from_origin() > 2.0 {
             let towards = Isometry::transvection_from_origin(at)
                 .apply(&Point::at_distance_from_origin(-at.coords(), 0.3).unwrap());
-            Isometry::translation(&Segment::try_new(at, towards).unwrap()).unwrap()
+            Isometry::translation(&Segment::new(at, towards).unwrap()).unwrap()
         } else {
             rng.placement(0.5)
         };
@@ -579,7 +578,7 @@ fn long_chains_of_moves_stay_accurate() {
     // The chain equals the composed isometry applied once.
     let once = mesh.transformed(&total);
     for _ in 0..200 {
-        let ray = Ray::from_ball(&rng.point(2.0), rng.dir());
+        let ray = Ray::from_ball_unchecked(&rng.point(2.0), rng.dir());
         let (a, b) = (
             moved.intersect(&ray, 0.0, f64::INFINITY),
             once.intersect(&ray, 0.0, f64::INFINITY),
@@ -599,7 +598,7 @@ fn long_chains_of_moves_stay_accurate() {
     }
     let mut worst: f64 = 0.0;
     for _ in 0..400 {
-        let ray = Ray::from_ball(&rng.point(0.3), rng.dir());
+        let ray = Ray::from_ball_unchecked(&rng.point(0.3), rng.dir());
         let a = moved.intersect(&ray, 0.0, f64::INFINITY).unwrap();
         let b = mesh.intersect(&ray, 0.0, f64::INFINITY).unwrap();
         worst = worst.max((a.t - b.t).abs());
@@ -610,7 +609,7 @@ fn long_chains_of_moves_stay_accurate() {
         .vertices()
         .iter()
         .zip(mesh.vertices().iter())
-        .map(|(a, b)| distance(a, b))
+        .map(|(a, b)| (*a).distance(*b))
         .fold(0.0, f64::max);
     assert!(drift < 1e-9, "{drift}");
 }
@@ -639,7 +638,7 @@ fn mesh_next_to_the_absolute() {
     assert_eq!(&*mesh.vertices(), far.as_slice());
     let (c, r) = mesh.bounding_ball();
     let c = Point::from_hyperboloid(c).unwrap();
-    assert!(distance(&c, &centre) < 0.1, "{}", distance(&c, &centre));
+    assert!(c.distance(centre) < 0.1, "{}", c.distance(centre));
     assert!(r < 0.7, "{r}");
     // An eye 1.5 from the mesh's centre, moved to the origin.
     let eye = there.apply(&Point::at_distance_from_origin(DVec3::X, 1.5).unwrap());
@@ -651,7 +650,7 @@ fn mesh_next_to_the_absolute() {
     let mut worst: f64 = 0.0;
     for _ in 0..400 {
         let aim = seen_from_eye.apply(&rng.point(0.7));
-        let ray = Ray::from_origin(aim.coords());
+        let ray = Ray::from_origin_unchecked(aim.coords());
         let (err, _) = compare_with_polygons(&seen, &polys, &ray, |_| 5e-12);
         worst = worst.max(err);
         hits += usize::from(seen.intersect(&ray, 0.0, f64::INFINITY).is_some());
@@ -661,7 +660,7 @@ fn mesh_next_to_the_absolute() {
     // Watertight there: rays from the moved centre always leave once.
     let inside = seen_from_eye.apply(&Point::ORIGIN);
     for _ in 0..400 {
-        let ray = Ray::from_ball(&inside, rng.dir());
+        let ray = Ray::from_ball_unchecked(&inside, rng.dir());
         assert_eq!(all_hits(&seen, &ray).len(), 1);
     }
 }
@@ -669,7 +668,7 @@ fn mesh_next_to_the_absolute() {
 /// Rays in, and almost in, the plane of a triangle.
 #[test]
 fn grazing_rays_along_a_triangle_plane() {
-    let corner = |x: f64, y: f64| Point::try_new(DVec3::new(x, y, 0.0)).unwrap();
+    let corner = |x: f64, y: f64| Point::from_coords(DVec3::new(x, y, 0.0)).unwrap();
     let flat = TriangleMesh::new(
         vec![corner(0.8, 0.0), corner(-0.4, 0.6), corner(-0.4, -0.6)],
         vec![[0, 1, 2]],
@@ -683,8 +682,7 @@ fn grazing_rays_along_a_triangle_plane() {
         (flat.transformed(&shift), shift),
     ] {
         let poly =
-            ConvexPolygon::try_new(mesh.vertices().iter().map(|p| Vertex::from(*p)).collect())
-                .unwrap();
+            ConvexPolygon::new(mesh.vertices().iter().map(|p| Vertex::from(*p)).collect()).unwrap();
         let n = poly.plane().normal();
         for _ in 0..200 {
             let base = corner(rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5));
@@ -692,9 +690,11 @@ fn grazing_rays_along_a_triangle_plane() {
             for h in [0.0, 1e-15, 1e-10] {
                 for eps in [0.0, 1e-16, -1e-16, 1e-12, -1e-12, -1e-8] {
                     let start =
-                        Point::from_hyperboloid(Ray::from_ball(&base, DVec3::Z).at(h)).unwrap();
+                        Point::from_hyperboloid(Ray::from_ball_unchecked(&base, DVec3::Z).at(h))
+                            .unwrap();
                     let dir = DVec3::new(phi.cos(), phi.sin(), eps).normalize();
-                    let ray = Ray::from_ball(&f.apply(&start), f.apply_direction(&start, dir));
+                    let ray =
+                        Ray::from_ball_unchecked(&f.apply(&start), f.apply_direction(&start, dir));
                     match mesh.intersect(&ray, 0.0, f64::INFINITY) {
                         Some(hit) => {
                             hits += 1;
@@ -713,15 +713,15 @@ fn grazing_rays_along_a_triangle_plane() {
     }
     assert!(hits > 0 && misses > 0, "{hits} hits, {misses} misses");
     // Exactly in the plane through the origin: parallel, a miss.
-    let along = Ray::from_origin(DVec3::new(0.6, 0.8, 0.0));
+    let along = Ray::from_origin_unchecked(DVec3::new(0.6, 0.8, 0.0));
     assert!(flat.intersect(&along, 0.0, f64::INFINITY).is_none());
     assert!(!flat.blocks(&along, 0.0, f64::INFINITY));
     // Height h above the plane, heading down at angle beta:
     // tanh t = tanh h / sin beta.
     let h = 1e-10;
-    let above = Point::from_hyperboloid(Ray::from_origin(DVec3::Z).at(h)).unwrap();
+    let above = Point::from_hyperboloid(Ray::from_origin_unchecked(DVec3::Z).at(h)).unwrap();
     for beta in [1e-3f64, 1e-6, 2e-10] {
-        let ray = Ray::from_ball(&above, DVec3::new(beta.cos(), 0.0, -beta.sin()));
+        let ray = Ray::from_ball_unchecked(&above, DVec3::new(beta.cos(), 0.0, -beta.sin()));
         let expect = (h.tanh() / beta.sin()).atanh();
         let hit = flat.intersect(&ray, 0.0, f64::INFINITY).unwrap();
         assert!(
@@ -731,7 +731,7 @@ fn grazing_rays_along_a_triangle_plane() {
         );
     }
     // Shallower than tanh h: the geodesic never reaches the plane.
-    let ray = Ray::from_ball(&above, DVec3::new(1.0, 0.0, -0.5e-10));
+    let ray = Ray::from_ball_unchecked(&above, DVec3::new(1.0, 0.0, -0.5e-10));
     assert!(flat.intersect(&ray, 0.0, f64::INFINITY).is_none());
 }
 
@@ -774,7 +774,7 @@ fn rays_through_a_vertex() {
             let ray = ray_towards(&start, &hub);
             let hit = fan.intersect(&ray, 0.0, f64::INFINITY);
             let hit = hit.unwrap_or_else(|| panic!("slipped through the hub, case {case}"));
-            let expect = distance(&start, &hub);
+            let expect = start.distance(hub);
             assert!(
                 (hit.t - expect).abs() < 1e-9 * expect.max(1.0),
                 "{} vs {expect}",
@@ -796,7 +796,7 @@ fn rays_through_a_vertex() {
             let (v, others) = (xs[k], 0.5 * (xs[(k + 1) % 3] + xs[(k + 2) % 3]));
             for (lambda, inside) in [(1e-9, true), (-1e-9, false)] {
                 let aim = from_timelike((1.0 - lambda) * v + lambda * others);
-                if distance(&start, &aim) < 1e-3 {
+                if start.distance(aim) < 1e-3 {
                     continue;
                 }
                 let ray = ray_towards(&start, &aim);
@@ -804,7 +804,7 @@ fn rays_through_a_vertex() {
                 // A ray nearly in the triangle's plane decides nothing.
                 let [a, b, c] = vs.map(Vertex::from);
                 let n = HPlane::through(&a, &b, &c).unwrap().normal();
-                if lorentz::dot(ray.tangent_at(distance(&start, &aim)), n).abs() < 1e-3 {
+                if lorentz::dot(ray.tangent_at(start.distance(aim)), n).abs() < 1e-3 {
                     continue;
                 }
                 assert_eq!(hit.is_some(), inside, "lambda {lambda}");
@@ -826,7 +826,7 @@ fn transformed_shares_a_large_mesh() {
     assert_eq!(moved.triangle_count(), 5120);
     let back = f.inverse();
     for _ in 0..200 {
-        let ray = Ray::from_ball(&rng.point(3.0), rng.dir());
+        let ray = Ray::from_ball_unchecked(&rng.point(3.0), rng.dir());
         let a = moved.intersect(&ray, 0.0, f64::INFINITY);
         let b = mesh.intersect(&moved_ray(&back, &ray), 0.0, f64::INFINITY);
         assert_eq!(a.is_some(), b.is_some());

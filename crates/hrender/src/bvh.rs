@@ -322,7 +322,7 @@ mod tests {
     use hgeom::Point;
 
     fn h(x: f64, y: f64, z: f64) -> DVec4 {
-        Point::try_new(DVec3::new(x, y, z))
+        Point::from_coords(DVec3::new(x, y, z))
             .unwrap()
             .to_hyperboloid()
     }
@@ -346,12 +346,12 @@ mod tests {
 
     #[test]
     fn entry_agrees_with_the_exact_sphere_test() {
-        let c = Point::try_new(DVec3::new(0.2, -0.1, 0.5)).unwrap();
-        let sphere = hgeom::HSphere::try_new(c, 0.3).unwrap();
+        let c = Point::from_coords(DVec3::new(0.2, -0.1, 0.5)).unwrap();
+        let sphere = hgeom::HSphere::new(c, 0.3).unwrap();
         let bound = Bound::new(c.to_hyperboloid(), 0.3).unwrap();
         for i in 0..200 {
             let a = i as f64 * 0.618_033_988_749_895;
-            let ray = Ray::from_origin(DVec3::new(0.8 * a.sin(), 0.8 * a.cos(), 1.0));
+            let ray = Ray::from_origin_unchecked(DVec3::new(0.8 * a.sin(), 0.8 * a.cos(), 1.0));
             for t_max in [f64::INFINITY, 0.5, 1.0] {
                 let exact = sphere.intersect(&ray, 0.0, t_max).is_some();
                 let maybe = bound.entry(&ray, 1.0, t_max.exp()).is_some();
@@ -361,7 +361,7 @@ mod tests {
         // A ray away from the ball is culled.
         assert!(
             bound
-                .entry(&Ray::from_origin(-DVec3::Z), 1.0, f64::INFINITY)
+                .entry(&Ray::from_origin_unchecked(-DVec3::Z), 1.0, f64::INFINITY)
                 .is_none()
         );
     }
@@ -382,19 +382,19 @@ mod tests {
         let mut spheres = Vec::new();
         for i in 0..50u32 {
             let a = f64::from(i) * 2.399_963;
-            let c = Point::try_new(DVec3::new(
+            let c = Point::from_coords(DVec3::new(
                 0.6 * a.cos() * (f64::from(i) / 50.0),
                 0.6 * a.sin() * (f64::from(i) / 50.0),
                 0.3 + 0.01 * f64::from(i),
             ))
             .unwrap();
-            spheres.push(hgeom::HSphere::try_new(c, 0.05).unwrap());
+            spheres.push(hgeom::HSphere::new(c, 0.05).unwrap());
             items.push((i, Bound::new(c.to_hyperboloid(), 0.05).unwrap()));
         }
         let bvh = Bvh::build(&items);
         for k in 0..300 {
             let a = f64::from(k) * 0.618_033_988_749_895;
-            let ray = Ray::from_origin(DVec3::new(0.7 * a.sin(), 0.7 * a.cos(), 1.0));
+            let ray = Ray::from_origin_unchecked(DVec3::new(0.7 * a.sin(), 0.7 * a.cos(), 1.0));
             let want: Vec<u32> = (0..50u32)
                 .filter(|&i| {
                     spheres[i as usize]

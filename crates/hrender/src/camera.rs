@@ -42,7 +42,7 @@ impl CanonicalCamera {
         }
         // Rows right, up, view: maps those vectors to x, y, z.
         let rotation = DMat3::from_cols(right, up, view).transpose();
-        let to_canonical = Isometry::orthogonal(rotation).compose(&to_origin);
+        let to_canonical = Isometry::orthogonal_unchecked(rotation).compose(&to_origin);
         Ok(CanonicalCamera {
             to_canonical,
             view_distance: target.coords().length(),
@@ -60,7 +60,7 @@ mod tests {
     use super::*;
 
     fn p(x: f64, y: f64, z: f64) -> Point {
-        Point::try_new(DVec3::new(x, y, z)).unwrap()
+        Point::from_coords(DVec3::new(x, y, z)).unwrap()
     }
 
     #[test]

@@ -177,9 +177,9 @@ impl Frame<'_> {
         match sample {
             Sample::Ray(dir) => {
                 let before = stats.failures;
-                let c = self
-                    .tracer
-                    .primary_sampled(&Ray::from_origin(dir), stream, stats);
+                let c =
+                    self.tracer
+                        .primary_sampled(&Ray::from_origin_unchecked(dir), stream, stats);
                 (c, stats.failures > before)
             }
             Sample::Outside => (self.background, false),

@@ -489,7 +489,7 @@ impl PreparedScene {
                 what: format!("light {}", index + 1),
             };
             let p = to_canonical
-                .try_apply(&l.position)
+                .checked_apply(&l.position)
                 .map_err(|_| out_of_range())?;
             // Every point of an area light must be placeable too.
             if l.radius > 0.0 {
@@ -565,20 +565,20 @@ mod tests {
     use super::*;
 
     fn p(x: f64, y: f64, z: f64) -> Point {
-        Point::try_new(DVec3::new(x, y, z)).unwrap()
+        Point::from_coords(DVec3::new(x, y, z)).unwrap()
     }
 
     /// A long rod's pieces cover it: every hit lies in one of them.
     #[test]
     fn rod_pieces_cover_the_rod() {
-        let rod = Rod::try_new(p(-0.6, 0.1, 0.4).into(), p(0.5, -0.1, 0.6).into(), 0.02).unwrap();
+        let rod = Rod::new(p(-0.6, 0.1, 0.4).into(), p(0.5, -0.1, 0.6).into(), 0.02).unwrap();
         let pieces = rod_pieces(&rod);
         assert_eq!(pieces.len(), 8);
         let mut hits = 0;
         for i in 0..4000 {
             let a = f64::from(i) * 0.618_033_988_749_895;
             let r = 0.95 * (f64::from(i) / 4000.0).sqrt();
-            let ray = Ray::from_origin(DVec3::new(r * a.sin(), r * a.cos(), 1.0));
+            let ray = Ray::from_origin_unchecked(DVec3::new(r * a.sin(), r * a.cos(), 1.0));
             if let Some(hit) = rod.intersect(&ray, 0.0, f64::INFINITY) {
                 hits += 1;
                 assert!(
@@ -597,8 +597,8 @@ mod tests {
     /// never culls what the exact test finds.
     #[test]
     fn bounds_contain_every_hit() {
-        let rod = Rod::try_new(p(-0.3, 0.1, 0.4).into(), p(0.2, -0.1, 0.6).into(), 0.05).unwrap();
-        let poly = ConvexPolygon::try_new(vec![
+        let rod = Rod::new(p(-0.3, 0.1, 0.4).into(), p(0.2, -0.1, 0.6).into(), 0.05).unwrap();
+        let poly = ConvexPolygon::new(vec![
             p(-0.2, -0.2, 0.5).into(),
             p(0.2, -0.2, 0.5).into(),
             p(0.0, 0.25, 0.55).into(),
@@ -618,7 +618,7 @@ mod tests {
             for i in 0..2000 {
                 let a = f64::from(i) * 0.618_033_988_749_895;
                 let r = 0.9 * (f64::from(i) / 2000.0).sqrt();
-                let ray = Ray::from_origin(DVec3::new(r * a.sin(), r * a.cos(), 1.0));
+                let ray = Ray::from_origin_unchecked(DVec3::new(r * a.sin(), r * a.cos(), 1.0));
                 if let Some(hit) = prim.intersect(&ray, 0.0, f64::INFINITY) {
                     assert!(
                         -hgeom::lorentz::dot(hit.point, b.center()) <= b.radius().cosh() + 1e-12,

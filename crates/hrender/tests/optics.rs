@@ -320,12 +320,12 @@ fn prepared_scene_reports_hits_and_misses() {
     );
     let cam = hrender::CanonicalCamera::new(&s.camera).unwrap();
     let prepared = hrender::PreparedScene::new(&s, &cam.to_canonical).unwrap();
-    match prepared.nearest(&hgeom::Ray::from_origin(DVec3::Z), 1e-9) {
+    match prepared.nearest(&hgeom::Ray::from_origin_unchecked(DVec3::Z), 1e-9) {
         hrender::Nearest::Hit(hit, 0) => assert!((hit.t - 0.7).abs() < 1e-12),
         other => panic!("{other:?}"),
     }
     assert!(matches!(
-        prepared.nearest(&hgeom::Ray::from_origin(-DVec3::Z), 1e-9),
+        prepared.nearest(&hgeom::Ray::from_origin_unchecked(-DVec3::Z), 1e-9),
         hrender::Nearest::Miss
     ));
     // A NaN ray is a failure, not a miss.

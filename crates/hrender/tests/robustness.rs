@@ -37,13 +37,13 @@ fn every_kind() -> Vec<(&'static str, Shape)> {
     for f in cube.faces() {
         let vs = f.vertices();
         for i in 0..vs.len() {
-            edges.push(Rod::try_new(vs[i], vs[(i + 1) % vs.len()], 0.02).unwrap());
+            edges.push(Rod::new(vs[i], vs[(i + 1) % vs.len()], 0.02).unwrap());
         }
     }
     let dodeca = Polyhedron::platonic(Platonic::Dodecahedron, 0.3)
         .unwrap()
         .transformed(&Isometry::transvection_from_origin(p(0.0, 0.0, 0.5)));
-    let with_ideal = ConvexPolygon::try_new(vec![
+    let with_ideal = ConvexPolygon::new(vec![
         p(-0.2, -0.2, 0.5).into(),
         p(0.2, -0.2, 0.5).into(),
         Vertex::Ideal(ideal(DVec3::new(0.0, 0.5, 1.0))),
@@ -55,7 +55,7 @@ fn every_kind() -> Vec<(&'static str, Shape)> {
         &p(-0.3, 0.2, 0.4).into(),
     )
     .unwrap();
-    let horo = Horosphere::try_new(ideal(DVec3::new(0.1, 0.0, 1.0)), &p(0.0, 0.0, 0.5)).unwrap();
+    let horo = Horosphere::new(ideal(DVec3::new(0.1, 0.0, 1.0)), &p(0.0, 0.0, 0.5)).unwrap();
     vec![
         ("sphere", sphere(p(0.0, 0.0, 0.5), 0.2)),
         ("polygon with an ideal vertex", Shape::Polygon(with_ideal)),
@@ -194,15 +194,13 @@ fn hard_configurations_give_finite_pixels() {
             vec![light(p(0.1, 0.2, 0.3), 5.0)],
             vec![
                 obj(
-                    Shape::Horosphere(
-                        Horosphere::try_new(ideal(DVec3::Y), &Point::ORIGIN).unwrap(),
-                    ),
+                    Shape::Horosphere(Horosphere::new(ideal(DVec3::Y), &Point::ORIGIN).unwrap()),
                     0,
                 ),
                 obj(cylinder(p(-0.3, 0.0, 0.0), p(0.3, 0.0, 0.0), 0.1), 1),
                 obj(
                     Shape::Rod(
-                        Rod::try_new(
+                        Rod::new(
                             p(0.0, -0.2, 0.4).into(),
                             Vertex::Ideal(ideal(DVec3::new(0.2, -0.2, 1.0))),
                             0.03,

@@ -26,9 +26,10 @@ const RED: Rgb = Rgb::new(0.8, 0.1, 0.1);
 /// point lights.
 fn checker_scene(size: u32) -> Scene {
     let centre = at(DVec3::new(0.1, 0.05, 1.0), 0.9);
-    let frame = Isometry::transvection_from_origin(centre).compose(&Isometry::orthogonal(
-        DMat3::from_axis_angle(DVec3::new(1.0, 2.0, 0.5).normalize(), 0.7),
-    ));
+    let frame =
+        Isometry::transvection_from_origin(centre).compose(&Isometry::orthogonal_unchecked(
+            DMat3::from_axis_angle(DVec3::new(1.0, 2.0, 0.5).normalize(), 0.7),
+        ));
     let plane = HPlane::orthogonal_at(&at(DVec3::Z, 1.6), &at(DVec3::Z, 1.7)).expect("plane");
     let mut s = scene(
         settings(Net::Euclidean, size, 0.12),
@@ -115,10 +116,12 @@ fn the_texture_moves_with_its_object() {
 #[test]
 fn the_cell_parity_of_the_local_fermi_coordinates_decides() {
     let s = 0.5;
-    let frame =
-        Isometry::transvection_from_origin(at(DVec3::Z, 1.0)).compose(&Isometry::orthogonal(
-            DMat3::from_axis_angle(DVec3::new(-0.3, 1.0, 0.2).normalize(), 2.1),
-        ));
+    let frame = Isometry::transvection_from_origin(at(DVec3::Z, 1.0)).compose(
+        &Isometry::orthogonal_unchecked(DMat3::from_axis_angle(
+            DVec3::new(-0.3, 1.0, 0.2).normalize(),
+            2.1,
+        )),
+    );
     let green = Rgb::new(0.2, 0.6, 0.2);
     let magenta = Rgb::new(0.9, 0.1, 0.9);
     for (cell, odd) in [

@@ -322,7 +322,7 @@ fn partial_translation(line: &Segment, fraction: f64) -> Result<Isometry, hgeom:
     let from = geodesic.foot_parameter(&a);
     let to = geodesic.foot_parameter(&b);
     let end = geodesic.point_at(from + fraction * (to - from))?;
-    Isometry::translation(&Segment::try_new(a, end)?)
+    Isometry::translation(&Segment::new(a, end)?)
 }
 
 /// A material with every field at its default.
@@ -1024,7 +1024,7 @@ impl Lowerer<'_> {
                 let a = self.point_arg(&items[0], "an h-line end");
                 let b = self.point_arg(&items[1], "an h-line end");
                 match (a, b) {
-                    (Some(a), Some(b)) => match Segment::try_new(a, b) {
+                    (Some(a), Some(b)) => match Segment::new(a, b) {
                         Ok(s) => Some(s),
                         Err(_) => {
                             self.report(
@@ -1132,7 +1132,10 @@ impl Lowerer<'_> {
             ("Rotate", [line, angle]) => {
                 let line = self.resolve_line(line);
                 let angle = self.number(angle);
-                Some(Isometry::rotation(&line?, fraction * angle?))
+                Some(Isometry::rotation_about_segment_unchecked(
+                    &line?,
+                    fraction * angle?,
+                ))
             }
             ("Translate", [line]) => {
                 let line = self.resolve_line(line)?;
@@ -1180,7 +1183,7 @@ impl Lowerer<'_> {
             return;
         };
         let moved = match self.points[i].position {
-            Some(PointPosition::Interior(q)) => match iso.try_apply(&q) {
+            Some(PointPosition::Interior(q)) => match iso.checked_apply(&q) {
                 Ok(p) => Some(PointPosition::Interior(p)),
                 Err(_) => {
                     self.report(
@@ -1281,10 +1284,10 @@ impl Lowerer<'_> {
         let norm = v.length();
         // Ideal first: a point typed on the unit sphere whose f64 norm happens
         // to round just below 1 must not become a far interior point.
-        if let Ok(ideal) = IdealPoint::try_new(v, IDEAL_TOLERANCE) {
+        if let Ok(ideal) = IdealPoint::new(v, IDEAL_TOLERANCE) {
             return Some(PointPosition::Ideal(ideal));
         }
-        if let Ok(p) = Point::try_new(v) {
+        if let Ok(p) = Point::from_coords(v) {
             if p.gap() < NEAR_ABSOLUTE_GAP {
                 // gap = 1 - |x|^2 = (1 - |x|)(1 + |x|), about twice 1 - |x| here.
                 self.report(
@@ -1647,9 +1650,9 @@ impl Lowerer<'_> {
         let (target, target_span) = match self.camera_parts.target {
             Some(t) => t,
             // The default target can only meet an explicit eye.
-            None => (Point::try_new(DEFAULT_TARGET).ok()?, eye_span),
+            None => (Point::from_coords(DEFAULT_TARGET).ok()?, eye_span),
         };
-        if Segment::try_new(eye, target).is_err() {
+        if Segment::new(eye, target).is_err() {
             self.report(
                 Diagnostic::new(
                     Code::DegenerateCamera,
@@ -1855,7 +1858,7 @@ impl Lowerer<'_> {
 /// True if the hyperboloid point is strictly inside a closed object.
 fn contains(shape: &Shape, x: hgeom::glam::DVec4) -> bool {
     match shape {
-        Shape::Sphere(s) => s.contains(x),
+        Shape::Sphere(s) => s.contains_hyperboloid(x),
         Shape::Polygon(_) => false,
         Shape::Polyhedron(p) => {
             // Behind every face plane means inside only for a closed surface
@@ -1870,10 +1873,10 @@ fn contains(shape: &Shape, x: hgeom::glam::DVec4) -> bool {
         }
         // A plane bounds a half-space, not an object one can be inside of.
         Shape::Plane(_) => false,
-        Shape::Rod(r) => r.contains(x),
-        Shape::Cylinder(c) => c.contains(x),
-        Shape::Horosphere(h) => h.contains(x),
-        Shape::Wireframe(rods) => rods.iter().any(|r| r.contains(x)),
+        Shape::Rod(r) => r.contains_hyperboloid(x),
+        Shape::Cylinder(c) => c.contains_hyperboloid(x),
+        Shape::Horosphere(h) => h.contains_hyperboloid(x),
+        Shape::Wireframe(rods) => rods.iter().any(|r| r.contains_hyperboloid(x)),
         // Whether a mesh is closed, and so has an inside, is not checked.
         Shape::Mesh(_) => false,
     }

@@ -7,7 +7,7 @@
 //! Tests named `regression_*` pin bugs found by review and since fixed.
 
 use hgeom::glam::DVec3;
-use hgeom::{Point, Vertex, distance};
+use hgeom::{Point, Vertex};
 use hscene_lang::ir::{
     Camera, Material, MaterialId, Net, PointPosition, Resolution, Rgb, Scene, Settings, Shape,
     Window,
@@ -389,14 +389,12 @@ fn appendix_a_transformations_match_hand_derived_positions() {
     let declared = appendix_declared();
     for i in 0..10 {
         for j in (i + 1)..10 {
-            let before = distance(
-                &Point::try_new(declared[i]).unwrap(),
-                &Point::try_new(declared[j]).unwrap(),
-            );
-            let after = distance(
-                &Point::try_new(interior(&scene, i + 1)).unwrap(),
-                &Point::try_new(interior(&scene, j + 1)).unwrap(),
-            );
+            let before = Point::from_coords(declared[i])
+                .unwrap()
+                .distance(Point::from_coords(declared[j]).unwrap());
+            let after = Point::from_coords(interior(&scene, i + 1))
+                .unwrap()
+                .distance(Point::from_coords(interior(&scene, j + 1)).unwrap());
             assert!(
                 (before - after).abs() <= 1e-12,
                 "d(%{}, %{}): {before} -> {after}",
@@ -570,7 +568,7 @@ fn empty_file_gets_the_documented_defaults() {
             scene.camera,
             Camera {
                 eye: Point::ORIGIN,
-                target: Point::try_new(DVec3::new(0.0, 0.0, 0.1)).unwrap(),
+                target: Point::from_coords(DVec3::new(0.0, 0.0, 0.1)).unwrap(),
                 up: None,
             }
         );

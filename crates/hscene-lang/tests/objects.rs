@@ -7,7 +7,7 @@
 //! of its exact code, severity and span.
 
 use hgeom::glam::DVec3;
-use hgeom::{BallShape, Point, Vertex, distance};
+use hgeom::{BallShape, Point, Vertex};
 use hscene_lang::ir::{Light, Object, Scene, Shape};
 use hscene_lang::{Compiled, Diagnostic, Severity, Span, compile};
 use proptest::prelude::*;
@@ -34,7 +34,7 @@ fn at(dir: DVec3, d: f64) -> DVec3 {
 }
 
 fn pt(v: DVec3) -> Point {
-    Point::try_new(v).unwrap()
+    Point::from_coords(v).unwrap()
 }
 
 #[track_caller]
@@ -131,9 +131,9 @@ fn rod_is_the_points_within_its_radius_of_the_segment() {
     let beyond_in = pt(mobius_add(a.coords(), at(DVec3::NEG_X, 0.0099)));
     let beyond_out = pt(mobius_add(a.coords(), at(DVec3::NEG_X, 0.0101)));
     // The transvection by `a` moves the origin to `a` and preserves distances.
-    assert!((distance(&a, &beyond_in) - 0.0099).abs() < 1e-12);
-    assert!(rod.contains(beyond_in.to_hyperboloid()));
-    assert!(!rod.contains(beyond_out.to_hyperboloid()));
+    assert!((a.distance(beyond_in) - 0.0099).abs() < 1e-12);
+    assert!(rod.contains(&beyond_in));
+    assert!(!rod.contains(&beyond_out));
 }
 
 #[test]
@@ -152,7 +152,7 @@ fn rods_take_ideal_ends() {
     // A rod between two ideal points is the whole h-cylinder: the origin's
     // neighbour at distance 0.019 from the x axis, far along it, is inside.
     let far = pt(mobius_add(at(DVec3::X, 5.0), at(DVec3::Y, 0.019)));
-    assert!(whole.contains(far.to_hyperboloid()));
+    assert!(whole.contains(&far));
 }
 
 #[test]
@@ -174,12 +174,7 @@ fn cylinder_is_the_equidistant_surface_of_the_whole_line() {
         let outside = 0.5 * (1.0 - x * x) * 0.021;
         for (y, inside) in [(inside, true), (outside, false)] {
             let q = DVec3::new(x, y, 0.0);
-            assert_eq!(
-                c.contains(pt(q).to_hyperboloid()),
-                inside,
-                "x = {x}, distance {}",
-                dist(q)
-            );
+            assert_eq!(c.contains(&pt(q)), inside, "x = {x}, distance {}", dist(q));
         }
     }
     let (back, front) = c.line().ends();
@@ -336,7 +331,7 @@ fn at_moves_a_predefined_figure_by_the_translation_from_the_origin() {
                 expected.iter().any(|e| (v - *e).length() < 1e-14),
                 "vertex {v:?} is not a translated vertex"
             );
-            assert!((distance(&pt(v), &pt(c)) - 0.3).abs() < 1e-12);
+            assert!((pt(v).distance(pt(c)) - 0.3).abs() < 1e-12);
         }
     }
 }
@@ -452,7 +447,7 @@ fn every_shape_kind_can_be_moved() {
         panic!()
     };
     for r in rods {
-        let d = distance(&pt(interior(r.start())), &pt(z));
+        let d = pt(interior(r.start())).distance(pt(z));
         assert!((d - 0.2).abs() < 1e-12);
     }
     let Shape::Polygon(poly) = &s.objects[6].shape else {
@@ -536,12 +531,10 @@ fn thesis_figure_33_one_translation_of_scene_and_observer() {
     let ball = pt(sphere_centre(&s.objects[0]));
     let light = s.lights[0].position;
     assert!(
-        (distance(&eye, &ball) - distance(&Point::ORIGIN, &pt(DVec3::new(0.1, 0.0, 0.3)))).abs()
-            < 1e-13
+        (eye.distance(ball) - Point::ORIGIN.distance(pt(DVec3::new(0.1, 0.0, 0.3)))).abs() < 1e-13
     );
     assert!(
-        (distance(&eye, &light) - distance(&Point::ORIGIN, &pt(DVec3::new(0.1, 0.0, 0.0)))).abs()
-            < 1e-13
+        (eye.distance(light) - Point::ORIGIN.distance(pt(DVec3::new(0.1, 0.0, 0.0)))).abs() < 1e-13
     );
 }
 
@@ -784,13 +777,13 @@ fn regular_polygons_by_circumradius() {
         assert_eq!(vs.len(), n, "{name}");
         let centre = pt(DVec3::new(0.0, 0.0, 0.5));
         for v in &vs {
-            assert!((distance(&pt(interior(*v)), &centre) - 0.6).abs() < 1e-12);
+            assert!((pt(interior(*v)).distance(centre) - 0.6).abs() < 1e-12);
         }
         // Equal sides: sinh(s/2) = sinh(R) sin(pi/n) (right triangle centre,
         // vertex, side midpoint).
         let side = 2.0 * (0.6f64.sinh() * (std::f64::consts::PI / n as f64).sin()).asinh();
         for i in 0..n {
-            let d = distance(&pt(interior(vs[i])), &pt(interior(vs[(i + 1) % n])));
+            let d = pt(interior(vs[i])).distance(pt(interior(vs[(i + 1) % n])));
             assert!((d - side).abs() < 1e-12, "{name}: side {d} vs {side}");
         }
     }
@@ -872,7 +865,7 @@ fn saccheri_quadrilateral_matches_the_hyperboloid_construction() {
     close(vs[2], q(1.0), 1e-15);
     close(vs[3], at(DVec3::X, h), 1e-15);
     // The legs have length `leg`.
-    assert!((distance(&pt(vs[0]), &pt(vs[1])) - leg).abs() < 1e-13);
+    assert!((pt(vs[0]).distance(pt(vs[1])) - leg).abs() < 1e-13);
 }
 
 #[test]
@@ -940,7 +933,7 @@ fn cube_435_has_72_degree_dihedral_angles() {
     let c = p.center();
     for f in p.faces() {
         for v in f.vertices() {
-            assert!((distance(&pt(interior(*v)), &c) - r).abs() < 1e-12);
+            assert!((pt(interior(*v)).distance(c) - r).abs() < 1e-12);
         }
     }
     // Adjacent faces (sharing an edge): -<N1,N2> = cos of the interior angle.
@@ -985,7 +978,7 @@ fn tessellation_435_cells_fit_face_to_face() {
     // Klein distance h with h^2 = sqrt 5 - 2.
     let inradius = (5f64.sqrt() - 2.0).sqrt().atanh();
     for o in &s.objects[1..7] {
-        let d = distance(&polyhedron(o).center(), &centre);
+        let d = polyhedron(o).center().distance(centre);
         assert!((d - 2.0 * inradius).abs() < 1e-12, "{d}");
     }
     // 12 edges of the centre cell, 8 more for each neighbour: shared edges

@@ -8,7 +8,7 @@
 use glam::DVec3;
 use hgeom::{
     ConvexPolygon, HCylinder, HLine, HPlane, HSphere, Horosphere, IdealPoint, Isometry, Point, Ray,
-    Rod, Segment, Vertex, distance,
+    Rod, Segment, Vertex,
 };
 
 use crate::reference::{self as r, R, V4};
@@ -60,7 +60,7 @@ impl Rng {
         let axis = self.direction();
         let angle = self.range(-3.0, 3.0);
         let q = glam::DMat3::from_axis_angle(axis, angle);
-        Isometry::transvection_from_origin(a).compose(&Isometry::orthogonal(q))
+        Isometry::transvection_from_origin(a).compose(&Isometry::orthogonal_unchecked(q))
     }
 }
 
@@ -135,7 +135,7 @@ pub fn boundary_pairs(rng: &mut Rng, n: usize) -> Vec<(Point, Point)> {
             let mut p = || {
                 let g = 10f64.powf(rng.range(-15.0, 0.0));
                 let dir = rng.direction();
-                Point::try_new(dir * (1.0 - g)).unwrap_or(Point::ORIGIN)
+                Point::from_coords(dir * (1.0 - g)).unwrap_or(Point::ORIGIN)
             };
             (p(), p())
         })
@@ -149,7 +149,7 @@ fn distance_family(operation: &'static str, pairs: &[(Point, Point)]) -> Family 
         .iter()
         .map(|(a, b)| {
             rel(
-                clock.run(|| distance(a, b)),
+                clock.run(|| (*a).distance(*b)),
                 &r::distance(a.coords(), b.coords()),
             )
         })
@@ -173,7 +173,7 @@ pub fn near_pairs(rng: &mut Rng, n: usize) -> Vec<(Point, Point)> {
         .map(|_| {
             let a = rng.point_in(0.0, 6.0);
             let step = rng.direction() * 1e-12;
-            let b = Point::try_new(a.coords() + step).unwrap_or(a);
+            let b = Point::from_coords(a.coords() + step).unwrap_or(a);
             (a, b)
         })
         .collect()
@@ -190,7 +190,7 @@ pub fn segments(rng: &mut Rng, n: usize, reach: f64) -> Vec<Segment> {
         .filter_map(|_| {
             let a = rng.point_in(0.0, reach);
             let b = rng.point_in(0.0, reach);
-            Segment::try_new(a, b).ok()
+            Segment::new(a, b).ok()
         })
         .collect()
 }
@@ -331,9 +331,9 @@ pub fn sphere_hits(rng: &mut Rng, n: usize) -> Family {
         |rng, clock| {
             let c = rng.point_in(0.5, 12.0);
             let radius = c.distance_from_origin() * rng.range(0.01, 0.4);
-            let s = HSphere::try_new(c, radius).ok()?;
+            let s = HSphere::new(c, radius).ok()?;
             let dir = aim(rng, &c, 0.05);
-            let ray = Ray::from_origin(dir);
+            let ray = Ray::from_origin_unchecked(dir);
             let hit = clock.run(|| s.intersect(&ray, 0.0, f64::INFINITY))?;
             let ch = r::hyperboloid(c.coords());
             let cosh_r = R::f(radius).cosh();
@@ -362,7 +362,7 @@ pub fn plane_hits(rng: &mut Rng, n: usize) -> Family {
             let verts: Vec<Vertex> = pts.iter().map(|&p| p.into()).collect();
             let plane = HPlane::through(&verts[0], &verts[1], &verts[2]).ok()?;
             let dir = aim(rng, &centre, 0.02);
-            let ray = Ray::from_origin(dir);
+            let ray = Ray::from_origin_unchecked(dir);
             let hit = clock.run(|| plane.intersect(&ray, 0.0, f64::INFINITY))?;
             let h: Vec<V4> = pts.iter().map(|p| r::hyperboloid(p.coords())).collect();
             Some((
@@ -385,13 +385,13 @@ pub fn polygon_hits(rng: &mut Rng, n: usize) -> Family {
             let verts: Vec<Vertex> = [(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)]
                 .iter()
                 .map(|&(x, y)| {
-                    let corner = Point::try_new(DVec3::new(x, y, 0.0) * 0.3).expect("inside");
+                    let corner = Point::from_coords(DVec3::new(x, y, 0.0) * 0.3).expect("inside");
                     off.apply(&corner).into()
                 })
                 .collect();
-            let poly = ConvexPolygon::try_new(verts.clone()).ok()?;
+            let poly = ConvexPolygon::new(verts.clone()).ok()?;
             let dir = aim(rng, &centre, 0.0);
-            let ray = Ray::from_origin(dir);
+            let ray = Ray::from_origin_unchecked(dir);
             let hit = clock.run(|| poly.intersect(&ray, 0.0, f64::INFINITY))?;
             let h: Vec<V4> = verts
                 .iter()
@@ -416,11 +416,10 @@ pub fn cylinder_hits(rng: &mut Rng, n: usize) -> Family {
             let a = rng.point_in(0.5, 8.0);
             let b = rng.point_in(0.5, 8.0);
             let radius = rng.range(0.01, 0.5);
-            let cyl =
-                HCylinder::try_new(HLine::through(&a.into(), &b.into()).ok()?, radius).ok()?;
-            let mid = Point::try_new((a.coords() + b.coords()) * 0.5).ok()?;
+            let cyl = HCylinder::new(HLine::through(&a.into(), &b.into()).ok()?, radius).ok()?;
+            let mid = Point::from_coords((a.coords() + b.coords()) * 0.5).ok()?;
             let dir = aim(rng, &mid, 0.1);
-            let ray = Ray::from_origin(dir);
+            let ray = Ray::from_origin_unchecked(dir);
             let hit = clock.run(|| cyl.intersect(&ray, 1e-9, f64::INFINITY))?;
             let (ah, bh) = (r::hyperboloid(a.coords()), r::hyperboloid(b.coords()));
             let s = R::f(radius).sinh();
@@ -443,17 +442,17 @@ pub fn rod_hits(rng: &mut Rng, n: usize) -> Family {
             let a = rng.point_in(0.5, 6.0);
             let b = rng.point_in(0.5, 6.0);
             let radius = rng.range(0.01, 0.3);
-            let rod = Rod::try_new(a.into(), b.into(), radius).ok()?;
+            let rod = Rod::new(a.into(), b.into(), radius).ok()?;
             let dir = if rng.unit() < 0.5 {
                 aim(rng, &a, 0.02)
             } else {
                 aim(
                     rng,
-                    &Point::try_new((a.coords() + b.coords()) * 0.5).ok()?,
+                    &Point::from_coords((a.coords() + b.coords()) * 0.5).ok()?,
                     0.05,
                 )
             };
-            let ray = Ray::from_origin(dir);
+            let ray = Ray::from_origin_unchecked(dir);
             let hit = clock.run(|| rod.intersect(&ray, 1e-9, f64::INFINITY))?;
             let (ah, bh) = (r::hyperboloid(a.coords()), r::hyperboloid(b.coords()));
             let s = R::f(radius).sinh();
@@ -476,9 +475,9 @@ pub fn horosphere_hits(rng: &mut Rng, n: usize) -> Family {
             let xi_dir = rng.direction();
             let xi = IdealPoint::from_direction(xi_dir).ok()?;
             let q = rng.point_in(0.0, 10.0);
-            let h = Horosphere::try_new(xi, &q).ok()?;
+            let h = Horosphere::new(xi, &q).ok()?;
             let dir = (xi_dir + rng.direction() * 0.5).normalize();
-            let ray = Ray::from_origin(dir);
+            let ray = Ray::from_origin_unchecked(dir);
             let hit = clock.run(|| h.intersect(&ray, 0.0, f64::INFINITY))?;
             let l = r::ideal(xi.coords());
             let k = -r::ldot(&r::hyperboloid(q.coords()), &l);

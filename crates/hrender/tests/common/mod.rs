@@ -41,7 +41,7 @@ pub fn agreement(a: &hrender::Image, b: &hrender::Image, tol: f32) -> f64 {
 
 /// An h-point from ball coordinates.
 pub fn p(x: f64, y: f64, z: f64) -> Point {
-    Point::try_new(DVec3::new(x, y, z)).expect("test point inside the ball")
+    Point::from_coords(DVec3::new(x, y, z)).expect("test point inside the ball")
 }
 
 /// An h-point at hyperbolic distance `d` from the origin in direction `dir`.
@@ -187,20 +187,20 @@ pub fn scene(
 }
 
 pub fn sphere(c: Point, r: f64) -> Shape {
-    Shape::Sphere(HSphere::try_new(c, r).expect("test sphere"))
+    Shape::Sphere(HSphere::new(c, r).expect("test sphere"))
 }
 
 pub fn rod(a: Point, b: Point, r: f64) -> Shape {
-    Shape::Rod(Rod::try_new(a.into(), b.into(), r).expect("test rod"))
+    Shape::Rod(Rod::new(a.into(), b.into(), r).expect("test rod"))
 }
 
 pub fn cylinder(a: Point, b: Point, r: f64) -> Shape {
     let line = HLine::through(&a.into(), &b.into()).expect("test line");
-    Shape::Cylinder(HCylinder::try_new(line, r).expect("test cylinder"))
+    Shape::Cylinder(HCylinder::new(line, r).expect("test cylinder"))
 }
 
 pub fn polygon(vs: Vec<Vertex>) -> Shape {
-    Shape::Polygon(ConvexPolygon::try_new(vs).expect("test polygon"))
+    Shape::Polygon(ConvexPolygon::new(vs).expect("test polygon"))
 }
 
 /// The mixed scene of the invariance tests: spheres, a polygon, a rod and a
@@ -311,7 +311,7 @@ impl Rng {
             q *= DMat3::from_diagonal(DVec3::new(1.0, 1.0, -1.0));
         }
         let shift = at(self.direction(), self.range(0.5 * max_shift, max_shift));
-        Isometry::transvection_from_origin(shift).compose(&Isometry::orthogonal(q))
+        Isometry::transvection_from_origin(shift).compose(&Isometry::orthogonal_unchecked(q))
     }
 }
 
@@ -334,7 +334,7 @@ pub fn many_rods_scene(n: usize, size: u32) -> Scene {
         let to_origin = Isometry::transvection_from_origin(centre);
         let a = to_origin.apply(&at(rng.direction(), rng.range(0.05, 0.25)));
         let b = to_origin.apply(&at(rng.direction(), rng.range(0.05, 0.25)));
-        let r = Rod::try_new(a.into(), b.into(), 0.008).expect("random rod");
+        let r = Rod::new(a.into(), b.into(), 0.008).expect("random rod");
         if i < n {
             objects.push(obj(Shape::Rod(r), 0));
         } else {
@@ -372,10 +372,10 @@ pub fn solids_scene(net: Net, size: u32, window: f64) -> Scene {
     for f in cube.faces() {
         let vs = f.vertices();
         for i in 0..vs.len() {
-            edges.push(Rod::try_new(vs[i], vs[(i + 1) % vs.len()], 0.01).expect("edge"));
+            edges.push(Rod::new(vs[i], vs[(i + 1) % vs.len()], 0.01).expect("edge"));
         }
     }
-    let horo = Horosphere::try_new(ideal(DVec3::new(0.0, -1.0, 0.3)), &p(0.0, -0.25, 0.35))
+    let horo = Horosphere::new(ideal(DVec3::new(0.0, -1.0, 0.3)), &p(0.0, -0.25, 0.35))
         .expect("horosphere");
     let objects = vec![
         obj(Shape::Polyhedron(dodeca), 0),
@@ -450,7 +450,7 @@ trait ThenSign {
 impl ThenSign for Point {
     fn then_sign(self, s: f64) -> Point {
         if s < 0.0 {
-            Point::try_new(-self.coords()).expect("mirror image")
+            Point::from_coords(-self.coords()).expect("mirror image")
         } else {
             self
         }

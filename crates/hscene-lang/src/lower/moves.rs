@@ -114,7 +114,7 @@ impl Lowerer<'_> {
                         }
                     }
                 }
-                TargetSlot::Light(Some(i)) => match iso.try_apply(&self.lights[i].0.position) {
+                TargetSlot::Light(Some(i)) => match iso.checked_apply(&self.lights[i].0.position) {
                     Ok(p) => self.lights[i].0.position = p,
                     Err(_) => self.out_of_range(&target, "this light"),
                 },
@@ -171,10 +171,10 @@ fn move_camera(cam: &mut Camera, iso: &Isometry) -> Option<()> {
     if cam.up.is_none() {
         cam.up = default_up_point(&cam.eye);
     }
-    let eye = iso.try_apply(&cam.eye).ok()?;
-    let target = iso.try_apply(&cam.target).ok()?;
+    let eye = iso.checked_apply(&cam.eye).ok()?;
+    let target = iso.checked_apply(&cam.target).ok()?;
     let up = match &cam.up {
-        Some(u) => Some(iso.try_apply(u).ok()?),
+        Some(u) => Some(iso.checked_apply(u).ok()?),
         None => None,
     };
     *cam = Camera { eye, target, up };

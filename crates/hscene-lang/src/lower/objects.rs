@@ -589,7 +589,7 @@ impl Lowerer<'_> {
         values: &[&Value],
     ) -> Option<Vec<Shape>> {
         match (kind, args) {
-            (Kind::Sphere, [Arg::Point(c), Arg::Number(r)]) => HSphere::try_new(*c, *r)
+            (Kind::Sphere, [Arg::Point(c), Arg::Number(r)]) => HSphere::new(*c, *r)
                 .map_err(|e| self.geom_failure(values[1].span(), "this sphere", &e))
                 .ok()
                 .map(|s| vec![Shape::Sphere(s)]),
@@ -601,7 +601,7 @@ impl Lowerer<'_> {
                     .map(|p| vec![Shape::Polygon(p)])
             }
             (Kind::Rod, [Arg::Vertex(a), Arg::Vertex(b), Arg::Number(r)]) => {
-                match Rod::try_new(*a, *b, *r) {
+                match Rod::new(*a, *b, *r) {
                     Ok(rod) => Some(vec![Shape::Rod(rod)]),
                     Err(e) => {
                         self.line_failure(values[0].span(), values[1].span(), "rod", &e);
@@ -610,7 +610,7 @@ impl Lowerer<'_> {
                 }
             }
             (Kind::Cylinder, [Arg::Vertex(a), Arg::Vertex(b), Arg::Number(r)]) => {
-                match HLine::through(a, b).and_then(|l| HCylinder::try_new(l, *r)) {
+                match HLine::through(a, b).and_then(|l| HCylinder::new(l, *r)) {
                     Ok(c) => Some(vec![Shape::Cylinder(c)]),
                     Err(e) => {
                         self.line_failure(values[0].span(), values[1].span(), "cylinder", &e);
@@ -621,7 +621,7 @@ impl Lowerer<'_> {
             (Kind::Plane, [Arg::Vertex(a), Arg::Vertex(b), Arg::Vertex(c)]) => {
                 // A triangle's plane is oriented by the right-hand rule on its
                 // vertex order, the rule polygons follow too.
-                match ConvexPolygon::try_new(vec![*a, *b, *c]) {
+                match ConvexPolygon::new(vec![*a, *b, *c]) {
                     Ok(t) => Some(vec![Shape::Plane(t.plane())]),
                     Err(_) => {
                         self.report(
@@ -636,15 +636,13 @@ impl Lowerer<'_> {
                     }
                 }
             }
-            (Kind::Horosphere, [Arg::Ideal(c), Arg::Point(p)]) => {
-                match Horosphere::try_new(*c, p) {
-                    Ok(h) => Some(vec![Shape::Horosphere(h)]),
-                    Err(e) => {
-                        self.geom_failure(values[1].span(), "this horosphere", &e);
-                        None
-                    }
+            (Kind::Horosphere, [Arg::Ideal(c), Arg::Point(p)]) => match Horosphere::new(*c, p) {
+                Ok(h) => Some(vec![Shape::Horosphere(h)]),
+                Err(e) => {
+                    self.geom_failure(values[1].span(), "this horosphere", &e);
+                    None
                 }
-            }
+            },
             (Kind::Mesh, [Arg::File(file), Arg::Number(size)]) => {
                 self.mesh(file, *size, values).map(|m| vec![Shape::Mesh(m)])
             }
@@ -816,7 +814,7 @@ impl Lowerer<'_> {
         items: &[Value],
         list_span: Span,
     ) -> Option<ConvexPolygon> {
-        match ConvexPolygon::try_new(vertices) {
+        match ConvexPolygon::new(vertices) {
             Ok(p) => Some(p),
             Err(e) => {
                 let at = |i: usize| items.get(i).map_or(list_span, Value::span);
@@ -953,7 +951,7 @@ pub(super) fn wireframe(shapes: &[Shape], radius: f64) -> Result<Vec<Rod>, GeomE
             let (ka, kb) = (key(a), key(b));
             let k = if ka <= kb { (ka, kb) } else { (kb, ka) };
             if seen.insert(k) {
-                rods.push(Rod::try_new(*a, *b, radius)?);
+                rods.push(Rod::new(*a, *b, radius)?);
             }
         }
         Ok(())
