@@ -21,8 +21,10 @@ pub mod ir;
 mod lower;
 pub mod mesh_file;
 mod parser;
+pub mod symbols;
 pub mod syntax;
 pub mod tokens;
+pub mod vocabulary;
 
 pub use diagnostic::{Code, Diagnostic, LineIndex, Severity, Span};
 pub use format::{FormatError, format};
