@@ -77,7 +77,12 @@ pub fn run(code: &str) -> ExitCode {
     let known = Code::ALL.iter().any(|c| c.as_str() == code);
     match lookup(&code) {
         Some(e) if known => {
-            println!("{code} ({}): {}, {}", e.severity, e.name, e.section.to_lowercase());
+            println!(
+                "{code} ({}): {}, {}",
+                e.severity,
+                e.name,
+                e.section.to_lowercase()
+            );
             println!();
             println!("{}", e.meaning);
             println!();

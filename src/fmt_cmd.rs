@@ -75,7 +75,10 @@ fn formatted(name: &Path, source: &str, color: ColorChoice) -> Option<String> {
                 "{}",
                 report::format_diagnostics(name, source, &diagnostics, format, color.enabled(tty))
             );
-            eprintln!("error: {} not formatted: it has syntax errors", name.display());
+            eprintln!(
+                "error: {} not formatted: it has syntax errors",
+                name.display()
+            );
             None
         }
     }

@@ -99,7 +99,8 @@ fn check(args: &CheckArgs, color: ColorChoice) -> ExitCode {
             }
         };
         let compiled = hscene_lang::compile_with(&source, &compile_options(path, args.frame));
-        any_errors |= compiled.has_errors() || (args.deny_warnings && !compiled.diagnostics.is_empty());
+        any_errors |=
+            compiled.has_errors() || (args.deny_warnings && !compiled.diagnostics.is_empty());
         let text = report::format_diagnostics(
             path,
             &source,

@@ -151,7 +151,10 @@ impl SymbolIndex {
                 } else {
                     let Some(b) = broken.next() else { break };
                     if let Some(kind @ (SymbolKind::Point | SymbolKind::Material)) = kind {
-                        let name = b.name.clone().filter(|_| b.labelled || kind == SymbolKind::Point);
+                        let name = b
+                            .name
+                            .clone()
+                            .filter(|_| b.labelled || kind == SymbolKind::Point);
                         index.declare(kind, name, b.span, &mut counts);
                     }
                     for r in &b.references {
@@ -165,15 +168,24 @@ impl SymbolIndex {
                 }
             }
         }
-        let resolved: Vec<Option<usize>> =
-            index.uses.iter().map(|u| index.resolve(&u.reference, u.kinds)).collect();
+        let resolved: Vec<Option<usize>> = index
+            .uses
+            .iter()
+            .map(|u| index.resolve(&u.reference, u.kinds))
+            .collect();
         for (u, d) in index.uses.iter_mut().zip(resolved) {
             u.definition = d;
         }
         index
     }
 
-    fn declare(&mut self, kind: SymbolKind, name: Option<Ident>, span: Span, counts: &mut [usize; 4]) {
+    fn declare(
+        &mut self,
+        kind: SymbolKind,
+        name: Option<Ident>,
+        span: Span,
+        counts: &mut [usize; 4],
+    ) {
         let number = match kind {
             SymbolKind::Point => Some(0),
             SymbolKind::Material => Some(1),
@@ -212,7 +224,11 @@ impl SymbolIndex {
                     target, name, arg, ..
                 } => {
                     if let Some(t) = target {
-                        let kinds = if t.sigil == RefSigil::At { NAMED } else { POINT };
+                        let kinds = if t.sigil == RefSigil::At {
+                            NAMED
+                        } else {
+                            POINT
+                        };
                         self.add_use(t, kinds);
                     }
                     let Some(arg) = arg else { continue };
@@ -226,7 +242,9 @@ impl SymbolIndex {
                         (Some(kinds), Value::Tuple { items, .. }) => {
                             for (i, item) in items.iter().enumerate() {
                                 match item {
-                                    Value::Reference(r) if i == 0 && r.sigil == RefSigil::Percent => {
+                                    Value::Reference(r)
+                                        if i == 0 && r.sigil == RefSigil::Percent =>
+                                    {
                                         self.add_use(r, kinds)
                                     }
                                     v => self.value_uses(v),
@@ -380,7 +398,10 @@ mod tests {
         assert_eq!(target("%axis", 0), "%axis");
         // `Reflect(%1)`: plane 1, not point 1.
         let reflect = ix.uses.last().unwrap();
-        assert_eq!(ix.definitions[reflect.definition.unwrap()].kind, SymbolKind::Plane);
+        assert_eq!(
+            ix.definitions[reflect.definition.unwrap()].kind,
+            SymbolKind::Plane
+        );
         assert_eq!(target("@ball", 0), "@ball");
     }
 

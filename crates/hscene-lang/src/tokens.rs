@@ -189,7 +189,8 @@ mod tests {
     #[test]
     fn every_kind_with_line_breaks() {
         use TokenKind::*;
-        let src = "Objects { // c\n\n  a: %1->Rotate(%2,-0.7), at = 2e-3; /* b\n */ \"m.ply\" #x @y ? }";
+        let src =
+            "Objects { // c\n\n  a: %1->Rotate(%2,-0.7), at = 2e-3; /* b\n */ \"m.ply\" #x @y ? }";
         assert_eq!(
             kinds(src),
             vec![
@@ -223,7 +224,10 @@ mod tests {
 
     #[test]
     fn unterminated_things_run_to_the_end() {
-        assert_eq!(kinds("/* open"), vec![(TokenKind::BlockComment, "/* open", 0)]);
+        assert_eq!(
+            kinds("/* open"),
+            vec![(TokenKind::BlockComment, "/* open", 0)]
+        );
         assert_eq!(
             kinds("\"open\nx"),
             vec![(TokenKind::Str, "\"open", 0), (TokenKind::Ident, "x", 1)]

@@ -44,15 +44,19 @@ fn every_shipped_scene_formats_idempotently_to_the_same_ir() {
     assert!(all.len() >= 20, "found only {} scenes", all.len());
     for path in &all {
         let source = std::fs::read_to_string(path).unwrap();
-        let formatted =
-            format(&source).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let formatted = format(&source).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         assert_eq!(
             format(&formatted).unwrap(),
             formatted,
             "{}: not idempotent",
             path.display()
         );
-        assert_eq!(token_texts(&source), token_texts(&formatted), "{}", path.display());
+        assert_eq!(
+            token_texts(&source),
+            token_texts(&formatted),
+            "{}",
+            path.display()
+        );
         let options = |frame| Options {
             base_dir: path.parent().map(Path::to_path_buf),
             frame,
@@ -62,12 +66,29 @@ fn every_shipped_scene_formats_idempotently_to_the_same_ir() {
         for frame in [0, 1, frames.saturating_sub(1)] {
             let a = compile_with(&source, &options(frame));
             let b = compile_with(&formatted, &options(frame));
-            assert!(a.scene.is_some(), "{}: shipped scene has errors", path.display());
-            assert_eq!(a.scene, b.scene, "{} frame {frame}: IR changed", path.display());
+            assert!(
+                a.scene.is_some(),
+                "{}: shipped scene has errors",
+                path.display()
+            );
+            assert_eq!(
+                a.scene,
+                b.scene,
+                "{} frame {frame}: IR changed",
+                path.display()
+            );
             let codes = |c: &hscene_lang::Compiled| -> Vec<_> {
-                c.diagnostics.iter().map(|d| (d.code, d.message.clone())).collect()
+                c.diagnostics
+                    .iter()
+                    .map(|d| (d.code, d.message.clone()))
+                    .collect()
             };
-            assert_eq!(codes(&a), codes(&b), "{}: diagnostics changed", path.display());
+            assert_eq!(
+                codes(&a),
+                codes(&b),
+                "{}: diagnostics changed",
+                path.display()
+            );
         }
     }
 }
