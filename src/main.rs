@@ -87,9 +87,11 @@ fn check(args: &CheckArgs, color: ColorChoice) -> ExitCode {
     for path in &args.scenes {
         let read = read_scene(path);
         // A scene from stdin takes the name (and mesh directory) given for it.
-        let path = match &args.stdin_filename {
-            Some(name) if path == Path::new("-") => name,
-            _ => path,
+        let stdin_name = Path::new("<stdin>");
+        let path = if path == Path::new("-") {
+            args.stdin_filename.as_deref().unwrap_or(stdin_name)
+        } else {
+            path
         };
         let source = match read {
             Ok(s) => s,

@@ -104,9 +104,9 @@ impl Server {
     }
 
     fn next_message(&self, waiting_for: &str) -> Value {
-        self.messages
-            .recv_timeout(TIMEOUT)
-            .unwrap_or_else(|_| panic!("no message from the server while waiting for {waiting_for}"))
+        self.messages.recv_timeout(TIMEOUT).unwrap_or_else(|_| {
+            panic!("no message from the server while waiting for {waiting_for}")
+        })
     }
 
     /// The next `publishDiagnostics` notification.
@@ -182,9 +182,13 @@ fn a_whole_editor_session() {
     assert_eq!(arity["severity"], 1);
     assert_eq!(arity["source"], "hscene");
     assert_eq!(arity["range"]["start"]["line"], 3);
-    let related = arity["relatedInformation"].as_array().expect("related information");
+    let related = arity["relatedInformation"]
+        .as_array()
+        .expect("related information");
     assert!(
-        related.iter().any(|r| r["location"]["range"]["start"]["line"] == 0),
+        related
+            .iter()
+            .any(|r| r["location"]["range"]["start"]["line"] == 0),
         "a related location in Points: {related:?}"
     );
 
@@ -212,7 +216,10 @@ fn a_whole_editor_session() {
         .map(|x| x.parse().unwrap())
         .collect();
     // Translate along the line from %2 to %q takes %2 onto %q.
-    assert!((coords[0] - 0.5).abs() < 1e-12 && coords[1].abs() < 1e-12, "{coords:?}");
+    assert!(
+        (coords[0] - 0.5).abs() < 1e-12 && coords[1].abs() < 1e-12,
+        "{coords:?}"
+    );
     let distance: f64 = text
         .split("distance from the eye: `")
         .nth(1)
@@ -221,13 +228,19 @@ fn a_whole_editor_session() {
         .parse()
         .unwrap();
     let expected = ball_distance([0.0, 0.0, 0.5], [coords[0], coords[1], coords[2]]);
-    assert!((distance - expected).abs() < 1e-9, "{distance} vs {expected}");
+    assert!(
+        (distance - expected).abs() < 1e-9,
+        "{distance} vs {expected}"
+    );
     assert_eq!(hover["range"]["start"], pos(SCENE, "%2", 0));
 
     // Hover on a material reference: its fields.
     let hover = server.request("textDocument/hover", at(SCENE, "#glass", 0));
     let text = hover["contents"]["value"].as_str().unwrap();
-    assert!(text.contains("material #glass") && text.contains("| shininess | `20` |"), "{text}");
+    assert!(
+        text.contains("material #glass") && text.contains("| shininess | `20` |"),
+        "{text}"
+    );
 
     // Definition of `%q` used in the hline (after non-ASCII text on line 0).
     let def = server.request("textDocument/definition", at(SCENE, "%q", 1));
@@ -280,7 +293,12 @@ fn a_whole_editor_session() {
         "textDocument/rename",
         json!({"textDocument": {"uri": URI}, "position": pos(SCENE, "%2", 0), "newName": "x"}),
     );
-    assert!(refused["error"]["message"].as_str().unwrap().contains("no name"));
+    assert!(
+        refused["error"]["message"]
+            .as_str()
+            .unwrap()
+            .contains("no name")
+    );
     let refused = server.request(
         "textDocument/rename",
         json!({"textDocument": {"uri": URI}, "position": pos(SCENE, "q:", 0), "newName": "2bad"}),
@@ -297,7 +315,10 @@ fn a_whole_editor_session() {
     };
     let items = server.request("textDocument/completion", at(SCENE, "glass;", 0));
     let names = labels(&items);
-    assert!(names.contains(&"glass".to_owned()) && names.contains(&"1".to_owned()), "{names:?}");
+    assert!(
+        names.contains(&"glass".to_owned()) && names.contains(&"1".to_owned()),
+        "{names:?}"
+    );
     let items = server.request("textDocument/completion", at(SCENE, "ball:", 0));
     assert!(labels(&items).contains(&"Sphere".to_owned()));
     let items = server.request("textDocument/completion", at(SCENE, "Globals", 0));
@@ -322,7 +343,13 @@ fn a_whole_editor_session() {
             (s["name"].as_str().unwrap().to_owned(), children)
         })
         .collect();
-    assert_eq!(outline[0], ("Points".to_owned(), vec!["%eye".into(), "%2".into(), "%q".into(), "%4".into()]));
+    assert_eq!(
+        outline[0],
+        (
+            "Points".to_owned(),
+            vec!["%eye".into(), "%2".into(), "%q".into(), "%4".into()]
+        )
+    );
     assert_eq!(outline[2], ("BRDFs".to_owned(), vec!["#glass".into()]));
     assert_eq!(outline[4].1, vec!["%axis".to_owned()]);
 
@@ -334,11 +361,17 @@ fn a_whole_editor_session() {
     let edits = edits.as_array().unwrap();
     assert_eq!(edits.len(), 1);
     assert_eq!(edits[0]["newText"], hscene_lang::format(SCENE).unwrap());
-    assert_eq!(edits[0]["range"]["start"], json!({"line": 0, "character": 0}));
+    assert_eq!(
+        edits[0]["range"]["start"],
+        json!({"line": 0, "character": 0})
+    );
     assert_eq!(edits[0]["range"]["end"], json!({"line": 5, "character": 0}));
 
     // An unknown request is an error, not a crash.
-    let unknown = server.request("textDocument/codeLens", json!({"textDocument": {"uri": URI}}));
+    let unknown = server.request(
+        "textDocument/codeLens",
+        json!({"textDocument": {"uri": URI}}),
+    );
     assert_eq!(unknown["error"]["code"], -32601);
 
     let shutdown = server.request("shutdown", Value::Null);
