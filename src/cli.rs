@@ -97,6 +97,32 @@ pub struct RenderArgs {
     /// OUTPUT-0000.png, OUTPUT-0001.png, ...
     #[arg(long, value_name = "K")]
     pub frame: Option<u32>,
+    /// Render only the rectangle of W x H pixels whose top-left pixel is
+    /// (X, Y) of the whole image; tiles put side by side give the whole
+    /// image exactly (docs/distributed.md).
+    #[arg(long, value_name = "X,Y,W,H", value_parser = parse_crop)]
+    pub crop: Option<hrender::Region>,
+}
+
+fn parse_crop(s: &str) -> Result<hrender::Region, String> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    let [x, y, w, h] = parts.as_slice() else {
+        return Err("expected X,Y,WIDTH,HEIGHT in pixels, e.g. 0,0,600,400".into());
+    };
+    let n = |v: &str, what: &str| {
+        v.parse::<u32>()
+            .map_err(|_| format!("bad {what} `{v}`: expected a whole number of pixels"))
+    };
+    let region = hrender::Region {
+        x: n(x, "X")?,
+        y: n(y, "Y")?,
+        width: n(w, "width")?,
+        height: n(h, "height")?,
+    };
+    if region.width == 0 || region.height == 0 {
+        return Err("the crop must be at least 1x1 pixels".into());
+    }
+    Ok(region)
 }
 
 #[derive(Clone, Copy, Debug, ValueEnum)]

@@ -235,10 +235,15 @@ fn render_frame(
         seed: args.seed,
         exposure: args.exposure,
     };
-    let height = options
-        .resolution
-        .unwrap_or(scene.settings.resolution)
-        .height;
+    let height = args.crop.map_or_else(
+        || {
+            options
+                .resolution
+                .unwrap_or(scene.settings.resolution)
+                .height
+        },
+        |c| c.height,
+    );
     let bar = stderr_tty.then(|| {
         let bar = indicatif::ProgressBar::new(u64::from(height));
         bar.set_style(
@@ -256,7 +261,7 @@ fn render_frame(
             bar.set_position(u64::from(rows));
         }
     };
-    let rendered = match hrender::render(scene, &options, &progress) {
+    let rendered = match hrender::render_region(scene, &options, args.crop, &progress) {
         Ok(r) => r,
         Err(e) => {
             eprintln!("error: {e}");

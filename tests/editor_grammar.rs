@@ -57,5 +57,8 @@ fn grammar_keywords_are_the_compilers() {
     );
     let mut moves = set(vocabulary::transformations());
     moves.insert("animate".into());
-    assert_eq!(alternation(&g, "support.function.transformation.hscene"), moves);
+    assert_eq!(
+        alternation(&g, "support.function.transformation.hscene"),
+        moves
+    );
 }
