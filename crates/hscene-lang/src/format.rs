@@ -270,12 +270,10 @@ impl Writer<'_> {
         let Some(prev) = self.prev else {
             return false;
         };
-        match (prev, next) {
-            (_, Comma | Semi | RParen | Colon) => false,
-            (LParen | Arrow, _) | (_, Arrow) => false,
-            (Ident, LParen) => false,
-            _ => true,
-        }
+        !matches!(
+            (prev, next),
+            (_, Comma | Semi | RParen | Colon) | (LParen | Arrow, _) | (_, Arrow) | (Ident, LParen)
+        )
     }
 }
 
