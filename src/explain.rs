@@ -77,19 +77,16 @@ pub fn run(code: &str) -> ExitCode {
     let known = Code::ALL.iter().any(|c| c.as_str() == code);
     match lookup(&code) {
         Some(e) if known => {
-            println!(
-                "{code} ({}): {}, {}",
+            let text = format!(
+                "{code} ({}): {}, {}\n\n{}\n\nExample: {}\n\nFix: {}\n",
                 e.severity,
                 e.name,
-                e.section.to_lowercase()
+                e.section.to_lowercase(),
+                e.meaning,
+                e.example,
+                e.fix
             );
-            println!();
-            println!("{}", e.meaning);
-            println!();
-            println!("Example: {}", e.example);
-            println!();
-            println!("Fix: {}", e.fix);
-            ExitCode::SUCCESS
+            crate::print_bytes(text.as_bytes())
         }
         _ => {
             eprintln!(

@@ -34,17 +34,30 @@ fn main() -> ExitCode {
         Command::Lsp => lsp::run(),
         Command::Explain { code } => explain::run(&code),
         Command::Completions { shell } => {
+            // Generated into memory: clap_complete panics on a write error
+            // (`| head` closing the pipe).
+            let mut script = Vec::new();
             let mut cmd = <Cli as clap::CommandFactory>::command();
-            clap_complete::generate(shell, &mut cmd, "hscene", &mut std::io::stdout());
-            ExitCode::SUCCESS
+            clap_complete::generate(shell, &mut cmd, "hscene", &mut script);
+            print_bytes(&script)
         }
         Command::Man => {
+            let mut page = Vec::new();
             let man = clap_mangen::Man::new(<Cli as clap::CommandFactory>::command());
-            match man.render(&mut std::io::stdout()) {
-                Ok(()) => ExitCode::SUCCESS,
+            match man.render(&mut page) {
+                Ok(()) => print_bytes(&page),
                 Err(_) => ExitCode::from(EXIT_USAGE_OR_IO),
             }
         }
+    }
+}
+
+/// Writes to stdout; a reader that stops early (`| head`) is not an error.
+fn print_bytes(bytes: &[u8]) -> ExitCode {
+    match std::io::stdout().lock().write_all(bytes) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+        Err(_) => ExitCode::from(EXIT_USAGE_OR_IO),
     }
 }
 
