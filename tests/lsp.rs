@@ -242,6 +242,25 @@ fn a_whole_editor_session() {
         "{text}"
     );
 
+    // `@camera` is not declared but has a hover: the eye after its moves.
+    let with_camera = format!("{SCENE}Transformations {{ @camera->Translate(%axis); }}\n");
+    server.notify(
+        "textDocument/didChange",
+        json!({"textDocument": {"uri": URI, "version": 3}, "contentChanges": [{"text": with_camera}]}),
+    );
+    assert_eq!(server.diagnostics()["version"], 3);
+    let hover = server.request("textDocument/hover", at(&with_camera, "@camera", 0));
+    let text = hover["contents"]["value"].as_str().unwrap();
+    assert!(
+        text.contains("Eye: `(") && !text.contains("Eye: `(0, 0, 0.5)`"),
+        "{text}"
+    );
+    server.notify(
+        "textDocument/didChange",
+        json!({"textDocument": {"uri": URI, "version": 4}, "contentChanges": [{"text": SCENE}]}),
+    );
+    assert_eq!(server.diagnostics()["version"], 4);
+
     // Definition of `%q` used in the hline (after non-ASCII text on line 0).
     let def = server.request("textDocument/definition", at(SCENE, "%q", 1));
     assert_eq!(def["uri"], URI);
@@ -288,6 +307,10 @@ fn a_whole_editor_session() {
     let edits = edit["changes"][URI].as_array().unwrap();
     assert_eq!(edits.len(), 2, "{edits:?}");
     assert!(edits.iter().all(|e| e["newText"] == "target"));
+    // Exact ranges: `q` of the declaration, and the name after the sigil.
+    assert_eq!(edits[0]["range"]["start"], pos(SCENE, "q:", 0));
+    assert_eq!(edits[1]["range"]["start"], pos(SCENE, "q);", 0));
+    assert_eq!(edits[1]["range"]["end"], pos(SCENE, ");", 5));
     // A numbered point has no name to rename; a bad name is refused.
     let refused = server.request(
         "textDocument/rename",

@@ -27,10 +27,15 @@ pub fn hover(docs: &Documents, p: HoverParams) -> Result<Option<Hover>, RequestE
             .as_ref()
             .map_or(symbols.definitions[d].span, |n| n.span),
     };
-    let Some(d) = symbols.definition_of(hit) else {
-        return Ok(None);
+    let text = match symbols.definition_of(hit) {
+        Some(d) => describe(doc, &symbols.definitions[d]),
+        None => match hit {
+            hscene_lang::symbols::Hit::Use(u) if is_camera(&symbols.uses[u].reference) => {
+                camera(doc.compiled.scene.as_ref())
+            }
+            _ => return Ok(None),
+        },
     };
-    let text = describe(doc, &symbols.definitions[d]);
     Ok(Some(Hover {
         contents: HoverContents::Markup(MarkupContent {
             kind: MarkupKind::Markdown,
@@ -38,6 +43,24 @@ pub fn hover(docs: &Documents, p: HoverParams) -> Result<Option<Hover>, RequestE
         }),
         range: Some(range(&doc.text, hit_span)),
     }))
+}
+
+fn is_camera(r: &hscene_lang::syntax::Reference) -> bool {
+    r.sigil == hscene_lang::syntax::RefSigil::At
+        && r.target == hscene_lang::syntax::RefTarget::Name("camera".into())
+}
+
+/// `@camera`: where the eye looks from and to (after its transformations).
+fn camera(scene: Option<&Scene>) -> String {
+    let mut out = String::from("**the camera** `@camera`\n\n");
+    match scene {
+        Some(s) => {
+            let _ = writeln!(out, "Eye: `{}`  ", coords(s.camera.eye));
+            let _ = writeln!(out, "Looking at: `{}`", coords(s.camera.target));
+        }
+        None => out.push_str("The scene has errors: final positions are not known.\n"),
+    }
+    out
 }
 
 fn describe(doc: &Document, def: &Definition) -> String {
