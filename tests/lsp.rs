@@ -412,3 +412,31 @@ fn a_whole_editor_session() {
         std::thread::sleep(Duration::from_millis(20));
     }
 }
+
+#[test]
+fn a_client_that_goes_away_ends_the_server() {
+    let mut server = Server::start();
+    server.request(
+        "initialize",
+        json!({"processId": null, "rootUri": null, "capabilities": {}}),
+    );
+    server.notify("initialized", json!({}));
+    // A request about a document never opened is an error answer.
+    let answer = server.request("textDocument/hover", at(SCENE, "%2", 0));
+    assert!(
+        answer["error"]["message"]
+            .as_str()
+            .unwrap()
+            .contains("not open")
+    );
+    // No shutdown, no exit: stdin just closes.
+    drop(server.stdin);
+    let started = std::time::Instant::now();
+    while server.child.try_wait().unwrap().is_none() {
+        assert!(
+            started.elapsed() < TIMEOUT,
+            "the server outlived its client"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
