@@ -11,6 +11,30 @@ use hscene_lang::MAX_PIXELS;
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
+    /// When to colour diagnostics: `auto` colours a terminal unless the
+    /// NO_COLOR environment variable is set and not empty.
+    #[arg(long, global = true, value_name = "WHEN", default_value = "auto")]
+    pub color: ColorChoice,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum ColorChoice {
+    Auto,
+    Always,
+    Never,
+}
+
+impl ColorChoice {
+    /// Whether to colour output going to a stream that is (or is not) a terminal.
+    pub fn enabled(self, is_terminal: bool) -> bool {
+        match self {
+            ColorChoice::Always => true,
+            ColorChoice::Never => false,
+            ColorChoice::Auto => {
+                is_terminal && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
+            }
+        }
+    }
 }
 
 #[derive(Debug, Subcommand)]
@@ -19,6 +43,22 @@ pub enum Command {
     Render(RenderArgs),
     /// Check scenes for errors and warnings without rendering.
     Check(CheckArgs),
+    /// Format scenes in the canonical layout (in place, or `-` from stdin to stdout).
+    Fmt(crate::fmt_cmd::FmtArgs),
+    /// Run the language server on stdin/stdout (for editors).
+    Lsp,
+    /// Print the documentation of a diagnostic code, e.g. `hscene explain HSC0305`.
+    Explain {
+        /// The code, e.g. HSC0305 (the `HSC` may be left out).
+        code: String,
+    },
+    /// Print a shell completion script to stdout.
+    Completions {
+        /// The shell.
+        shell: clap_complete::Shell,
+    },
+    /// Print the man page (roff) to stdout.
+    Man,
 }
 
 #[derive(Debug, clap::Args)]
@@ -57,6 +97,32 @@ pub struct RenderArgs {
     /// OUTPUT-0000.png, OUTPUT-0001.png, ...
     #[arg(long, value_name = "K")]
     pub frame: Option<u32>,
+    /// Render only the rectangle of W x H pixels whose top-left pixel is
+    /// (X, Y) of the whole image; tiles put side by side give the whole
+    /// image exactly (docs/distributed.md).
+    #[arg(long, value_name = "X,Y,W,H", value_parser = parse_crop)]
+    pub crop: Option<hrender::Region>,
+}
+
+fn parse_crop(s: &str) -> Result<hrender::Region, String> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    let [x, y, w, h] = parts.as_slice() else {
+        return Err("expected X,Y,WIDTH,HEIGHT in pixels, e.g. 0,0,600,400".into());
+    };
+    let n = |v: &str, what: &str| {
+        v.parse::<u32>()
+            .map_err(|_| format!("bad {what} `{v}`: expected a whole number of pixels"))
+    };
+    let region = hrender::Region {
+        x: n(x, "X")?,
+        y: n(y, "Y")?,
+        width: n(w, "width")?,
+        height: n(h, "height")?,
+    };
+    if region.width == 0 || region.height == 0 {
+        return Err("the crop must be at least 1x1 pixels".into());
+    }
+    Ok(region)
 }
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -71,9 +137,16 @@ pub enum Depth {
 
 #[derive(Debug, clap::Args)]
 pub struct CheckArgs {
-    /// Scene files to check.
+    /// Scene files to check; `-` reads a scene from stdin.
     #[arg(required = true)]
     pub scenes: Vec<PathBuf>,
+    /// The file name to show in messages for a scene read from stdin (`-`);
+    /// its directory is where relative mesh file names are found.
+    #[arg(long, value_name = "PATH")]
+    pub stdin_filename: Option<PathBuf>,
+    /// Exit with status 1 when there are warnings, as for errors (for CI).
+    #[arg(long)]
+    pub deny_warnings: bool,
     /// Output format (default: human on a terminal, short otherwise).
     #[arg(long)]
     pub format: Option<Format>,

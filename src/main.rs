@@ -3,6 +3,9 @@
 
 mod cli;
 mod emit;
+mod explain;
+mod fmt_cmd;
+mod lsp;
 mod report;
 
 use std::io::{IsTerminal, Write};
@@ -14,7 +17,7 @@ use clap::Parser;
 use hrender::{RenderOptions, SampleDepth};
 use hscene_lang::ir::{Net, Resolution};
 
-use cli::{CheckArgs, Cli, Command, Depth, Emit, Format, RenderArgs};
+use cli::{CheckArgs, Cli, ColorChoice, Command, Depth, Emit, Format, RenderArgs};
 
 /// Exit status: the scene has errors.
 const EXIT_SCENE_ERRORS: u8 = 1;
@@ -23,9 +26,38 @@ const EXIT_USAGE_OR_IO: u8 = 2;
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    let color = cli.color;
     match cli.command {
-        Command::Render(args) => render(&args),
-        Command::Check(args) => check(&args),
+        Command::Render(args) => render(&args, color),
+        Command::Check(args) => check(&args, color),
+        Command::Fmt(args) => fmt_cmd::run(&args, color),
+        Command::Lsp => lsp::run(),
+        Command::Explain { code } => explain::run(&code),
+        Command::Completions { shell } => {
+            // Generated into memory: clap_complete panics on a write error
+            // (`| head` closing the pipe).
+            let mut script = Vec::new();
+            let mut cmd = <Cli as clap::CommandFactory>::command();
+            clap_complete::generate(shell, &mut cmd, "hscene", &mut script);
+            print_bytes(&script)
+        }
+        Command::Man => {
+            let mut page = Vec::new();
+            let man = clap_mangen::Man::new(<Cli as clap::CommandFactory>::command());
+            match man.render(&mut page) {
+                Ok(()) => print_bytes(&page),
+                Err(_) => ExitCode::from(EXIT_USAGE_OR_IO),
+            }
+        }
+    }
+}
+
+/// Writes to stdout; a reader that stops early (`| head`) is not an error.
+fn print_bytes(bytes: &[u8]) -> ExitCode {
+    match std::io::stdout().lock().write_all(bytes) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+        Err(_) => ExitCode::from(EXIT_USAGE_OR_IO),
     }
 }
 
@@ -38,13 +70,18 @@ fn compile_options(scene: &Path, frame: u32) -> hscene_lang::Options {
 }
 
 fn read_scene(path: &Path) -> Result<String, ExitCode> {
-    std::fs::read_to_string(path).map_err(|e| {
+    let read = if path == Path::new("-") {
+        std::io::read_to_string(std::io::stdin())
+    } else {
+        std::fs::read_to_string(path)
+    };
+    read.map_err(|e| {
         eprintln!("error: cannot read {}: {e}", path.display());
         ExitCode::from(EXIT_USAGE_OR_IO)
     })
 }
 
-fn check(args: &CheckArgs) -> ExitCode {
+fn check(args: &CheckArgs, color: ColorChoice) -> ExitCode {
     // With `--emit ir` stdout carries only JSON; the diagnostics go to stderr.
     let emit_ir = args.emit == Some(Emit::Ir);
     let diag_tty = if emit_ir {
@@ -61,7 +98,15 @@ fn check(args: &CheckArgs) -> ExitCode {
     let mut io_failure = false;
     let mut out = std::io::stdout().lock();
     for path in &args.scenes {
-        let source = match read_scene(path) {
+        let read = read_scene(path);
+        // A scene from stdin takes the name (and mesh directory) given for it.
+        let stdin_name = Path::new("<stdin>");
+        let path = if path == Path::new("-") {
+            args.stdin_filename.as_deref().unwrap_or(stdin_name)
+        } else {
+            path
+        };
+        let source = match read {
             Ok(s) => s,
             Err(_) => {
                 io_failure = true;
@@ -69,9 +114,15 @@ fn check(args: &CheckArgs) -> ExitCode {
             }
         };
         let compiled = hscene_lang::compile_with(&source, &compile_options(path, args.frame));
-        any_errors |= compiled.has_errors();
-        let text =
-            report::format_diagnostics(path, &source, &compiled.diagnostics, format, diag_tty);
+        any_errors |=
+            compiled.has_errors() || (args.deny_warnings && !compiled.diagnostics.is_empty());
+        let text = report::format_diagnostics(
+            path,
+            &source,
+            &compiled.diagnostics,
+            format,
+            color.enabled(diag_tty),
+        );
         if emit_ir {
             eprint!("{text}");
             // A scene with errors has no IR (`compiled.scene` is `None`).
@@ -94,7 +145,7 @@ fn check(args: &CheckArgs) -> ExitCode {
     }
 }
 
-fn render(args: &RenderArgs) -> ExitCode {
+fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
     let source = match read_scene(&args.scene) {
         Ok(s) => s,
         Err(code) => return code,
@@ -115,7 +166,13 @@ fn render(args: &RenderArgs) -> ExitCode {
         };
         eprint!(
             "{}",
-            report::format_diagnostics(&args.scene, &source, diagnostics, format, stderr_tty)
+            report::format_diagnostics(
+                &args.scene,
+                &source,
+                diagnostics,
+                format,
+                color.enabled(stderr_tty)
+            )
         );
     };
     if !compiled.diagnostics.is_empty() {
@@ -191,10 +248,15 @@ fn render_frame(
         seed: args.seed,
         exposure: args.exposure,
     };
-    let height = options
-        .resolution
-        .unwrap_or(scene.settings.resolution)
-        .height;
+    let height = args.crop.map_or_else(
+        || {
+            options
+                .resolution
+                .unwrap_or(scene.settings.resolution)
+                .height
+        },
+        |c| c.height,
+    );
     let bar = stderr_tty.then(|| {
         let bar = indicatif::ProgressBar::new(u64::from(height));
         bar.set_style(
@@ -212,7 +274,7 @@ fn render_frame(
             bar.set_position(u64::from(rows));
         }
     };
-    let rendered = match hrender::render(scene, &options, &progress) {
+    let rendered = match hrender::render_region(scene, &options, args.crop, &progress) {
         Ok(r) => r,
         Err(e) => {
             eprintln!("error: {e}");

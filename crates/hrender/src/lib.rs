@@ -141,6 +141,33 @@ pub fn render(
     options: &RenderOptions,
     progress: &(dyn Fn(u32) + Sync),
 ) -> Result<Rendered, RenderError> {
+    render_region(scene, options, None, progress)
+}
+
+/// A rectangle of the image in pixels, from its top-left corner.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Region {
+    /// First column.
+    pub x: u32,
+    /// First row (row 0 is the top).
+    pub y: u32,
+    /// Columns, at least 1.
+    pub width: u32,
+    /// Rows, at least 1.
+    pub height: u32,
+}
+
+/// Render only `region` of the image (`None`: all of it). Every pixel is
+/// computed exactly as in the whole image (its rays, samples and jitter
+/// depend on its position in the whole image only), so tiles rendered apart
+/// and put side by side give the whole image bit for bit. `progress` counts
+/// the region's rows.
+pub fn render_region(
+    scene: &Scene,
+    options: &RenderOptions,
+    region: Option<Region>,
+    progress: &(dyn Fn(u32) + Sync),
+) -> Result<Rendered, RenderError> {
     options.validate()?;
     let pool = {
         let mut b = rayon::ThreadPoolBuilder::new();
@@ -149,7 +176,7 @@ pub fn render(
         }
         b.build().map_err(|e| RenderError::Threads(e.to_string()))?
     };
-    pool.install(|| render_in_pool(scene, options, progress))
+    pool.install(|| render_in_pool(scene, options, region, progress))
 }
 
 /// Everything a row of pixels needs, shared by all rows.
@@ -186,12 +213,18 @@ impl Frame<'_> {
         }
     }
 
-    /// Row `j`: every pixel's samples, box-filtered and exposed.
-    fn row(&self, j: u32, stats: &mut TraceStats) -> (Vec<[f32; 3]>, u64) {
+    /// Columns `columns` of row `j`: every pixel's samples, box-filtered
+    /// and exposed.
+    fn row(
+        &self,
+        j: u32,
+        columns: std::ops::Range<u32>,
+        stats: &mut TraceStats,
+    ) -> (Vec<[f32; 3]>, u64) {
         let (w, h) = (f64::from(self.width), f64::from(self.height));
         let mut nodes = NodeCache::default();
         let mut failed_pixels = 0;
-        let pixels = (0..self.width)
+        let pixels = columns
             .map(|i| {
                 let mut sum = Color::default();
                 let mut failed = false;
@@ -300,6 +333,7 @@ struct NodeCache(HashMap<(i64, i64), (Color, bool)>);
 fn render_in_pool(
     scene: &Scene,
     options: &RenderOptions,
+    region: Option<Region>,
     progress: &(dyn Fn(u32) + Sync),
 ) -> Result<Rendered, RenderError> {
     let camera = CanonicalCamera::new(&scene.camera)?;
@@ -310,6 +344,21 @@ fn render_in_pool(
         return Err(RenderError::InvalidOption(
             "resolution must be at least 1x1".into(),
         ));
+    }
+    let region = region.unwrap_or(Region {
+        x: 0,
+        y: 0,
+        width,
+        height,
+    });
+    let fits = |start: u32, len: u32, total: u32| {
+        len > 0 && start.checked_add(len).is_some_and(|end| end <= total)
+    };
+    if !(fits(region.x, region.width, width) && fits(region.y, region.height, height)) {
+        return Err(RenderError::InvalidOption(format!(
+            "the crop {}x{} at ({}, {}) is not inside the {width}x{height} image",
+            region.width, region.height, region.x, region.y
+        )));
     }
     let frame = Frame {
         net,
@@ -330,11 +379,12 @@ fn render_in_pool(
     };
 
     let done = std::sync::atomic::AtomicU32::new(0);
-    let rows: Vec<(Vec<[f32; 3]>, u64, TraceStats)> = (0..height)
+    let columns = region.x..region.x + region.width;
+    let rows: Vec<(Vec<[f32; 3]>, u64, TraceStats)> = (region.y..region.y + region.height)
         .into_par_iter()
         .map(|j| {
             let mut stats = TraceStats::default();
-            let (row, failed) = frame.row(j, &mut stats);
+            let (row, failed) = frame.row(j, columns.clone(), &mut stats);
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(n);
             (row, failed, stats)
@@ -342,14 +392,14 @@ fn render_in_pool(
         .collect();
 
     let mut stats = RenderStats::default();
-    let mut pixels = Vec::with_capacity(width as usize * height as usize);
+    let mut pixels = Vec::with_capacity(region.width as usize * region.height as usize);
     for (row, failed, s) in rows {
         pixels.extend(row);
         stats.rays += s.rays;
         stats.numeric_failures += failed;
     }
     Ok(Rendered {
-        image: Image::from_pixels(width, height, pixels),
+        image: Image::from_pixels(region.width, region.height, pixels),
         stats,
     })
 }

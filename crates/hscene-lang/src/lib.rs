@@ -16,13 +16,18 @@
 //! ```
 
 pub mod diagnostic;
+pub mod format;
 pub mod ir;
 mod lower;
 pub mod mesh_file;
 mod parser;
+pub mod symbols;
 pub mod syntax;
+pub mod tokens;
+pub mod vocabulary;
 
 pub use diagnostic::{Code, Diagnostic, LineIndex, Severity, Span};
+pub use format::{FormatError, format};
 pub use lower::{MAX_FRAMES, MAX_PIXELS, MAX_SAMPLES};
 pub use parser::{Parsed, parse};
 

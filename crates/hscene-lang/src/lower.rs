@@ -9,7 +9,7 @@
 
 mod figures;
 mod moves;
-mod objects;
+pub(crate) mod objects;
 
 use std::collections::HashMap;
 use std::path::Path;
@@ -36,7 +36,7 @@ enum TargetSlot {
 }
 
 /// Section names, in processing order.
-const SECTIONS: [&str; 6] = [
+pub(crate) const SECTIONS: [&str; 6] = [
     "Points",
     "BRDFs",
     "Transformations",
@@ -1922,7 +1922,7 @@ enum NameKind {
 /// Where ideal points may stand, for the help of `IdealPointNotAllowed`.
 const IDEAL_ALLOWED_HELP: &str = "ideal points are allowed only as polygon vertices, rod and cylinder ends, `Plane` and `hplane` points and horosphere centres";
 
-const GLOBAL_KEYS: &[&str] = &[
+pub(crate) const GLOBAL_KEYS: &[&str] = &[
     "recursion_depth",
     "resolution",
     "window_size",
@@ -1936,7 +1936,7 @@ const GLOBAL_KEYS: &[&str] = &[
     "ambient",
 ];
 
-const MATERIAL_FIELDS: &[&str] = &[
+pub(crate) const MATERIAL_FIELDS: &[&str] = &[
     "ambient",
     "diffuse",
     "specular",
@@ -1951,7 +1951,7 @@ const MATERIAL_FIELDS: &[&str] = &[
 
 const MATERIAL_FIELDS_HELP: &str = "material fields are ambient, diffuse, specular, alpha, trans, shininess, refraction, checker, checker_diffuse, checker_ambient";
 
-const TRANSFORMATIONS: &[&str] = &["hline", "hplane", "Rotate", "Translate", "Reflect"];
+pub(crate) const TRANSFORMATIONS: &[&str] = &["hline", "hplane", "Rotate", "Translate", "Reflect"];
 
 /// `help`, preceded by "did you mean `X`?" when `word` is a near miss of
 /// one of `candidates`.

@@ -46,7 +46,7 @@ pub(super) enum Kind {
 }
 
 /// Every object keyword, in the order the help lists them.
-pub(super) fn object_names() -> Vec<&'static str> {
+pub(crate) fn object_names() -> Vec<&'static str> {
     let mut names = vec![
         "Sphere",
         "Polygon",
@@ -239,7 +239,7 @@ struct Options {
     at: Option<(Point, Span)>,
 }
 
-const OPTION_NAMES: [&str; 4] = ["wireframe", "edges", "edge_material", "at"];
+pub(crate) const OPTION_NAMES: [&str; 4] = ["wireframe", "edges", "edge_material", "at"];
 
 impl Lowerer<'_> {
     pub(super) fn objects_section(&mut self, section: &crate::syntax::Section) {
