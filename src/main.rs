@@ -11,10 +11,12 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use clap::Parser;
-use hrender::{RenderOptions, SampleDepth};
+use hrender::{DisplayTransform, Encoding, RenderOptions, SampleDepth, ToneMap};
 use hscene_lang::ir::{Net, Resolution};
 
-use cli::{CheckArgs, Cli, Command, Depth, Emit, Format, RenderArgs};
+use cli::{
+    CheckArgs, Cli, Command, Depth, Emit, EncodingArg, ExposureArg, Format, RenderArgs, ToneMapArg,
+};
 
 /// Exit status: the scene has errors.
 const EXIT_SCENE_ERRORS: u8 = 1;
@@ -99,11 +101,15 @@ fn render(args: &RenderArgs) -> ExitCode {
         Ok(s) => s,
         Err(code) => return code,
     };
-    // Refuse a bad output name before spending time on the render.
-    if let Err(e) = hrender::ImageFormat::from_path(&args.output) {
+    // Refuse a bad output name or depth before spending time on the render.
+    if let Err(e) = hrender::ImageFormat::from_path(&args.output)
+        .and_then(|f| hrender::check_depth(f, sample_depth(args.depth, f)))
+    {
         eprintln!("error: {e}");
         return ExitCode::from(EXIT_USAGE_OR_IO);
     }
+    // `--exposure auto` is measured on the first frame rendered and kept.
+    let auto_ev = std::cell::Cell::new(None);
     let stderr_tty = std::io::stderr().is_terminal();
     let first = args.frame.unwrap_or(0);
     let compiled = hscene_lang::compile_with(&source, &compile_options(&args.scene, first));
@@ -135,7 +141,7 @@ fn render(args: &RenderArgs) -> ExitCode {
         return ExitCode::from(EXIT_USAGE_OR_IO);
     }
     if args.frame.is_some() || frames == 1 {
-        return render_frame(args, &scene, &args.output, stderr_tty);
+        return render_frame(args, &scene, &args.output, stderr_tty, &auto_ev);
     }
     // Every frame, each compiled on its own: the animated transformations
     // are applied per frame. Diagnostics were shown for frame 0; those of
@@ -154,12 +160,28 @@ fn render(args: &RenderArgs) -> ExitCode {
                 }
             }
         };
-        let code = render_frame(args, &scene, &frame_path(&args.output, k), stderr_tty);
+        let code = render_frame(
+            args,
+            &scene,
+            &frame_path(&args.output, k),
+            stderr_tty,
+            &auto_ev,
+        );
         if code != ExitCode::SUCCESS {
             return code;
         }
     }
     ExitCode::SUCCESS
+}
+
+/// The depth asked for, or the format's own default.
+fn sample_depth(depth: Option<Depth>, format: hrender::ImageFormat) -> SampleDepth {
+    match depth {
+        Some(Depth::Eight) => SampleDepth::Eight,
+        Some(Depth::Sixteen) => SampleDepth::Sixteen,
+        Some(Depth::Float32) => SampleDepth::Float32,
+        None => format.default_depth(),
+    }
 }
 
 /// `out.png` -> `out-0007.png` for frame 7 (at least four digits).
@@ -180,6 +202,7 @@ fn render_frame(
     scene: &hscene_lang::ir::Scene,
     output: &Path,
     stderr_tty: bool,
+    auto_ev: &std::cell::Cell<Option<f64>>,
 ) -> ExitCode {
     let options = RenderOptions {
         net: args.net.and_then(|n| Net::from_index(u64::from(n))),
@@ -189,7 +212,10 @@ fn render_frame(
         threads: args.threads,
         samples: args.samples,
         seed: args.seed,
-        exposure: args.exposure,
+        exposure: match args.exposure {
+            ExposureArg::Stops(ev) => ev,
+            ExposureArg::Auto => 0.0,
+        },
     };
     let height = options
         .resolution
@@ -212,7 +238,7 @@ fn render_frame(
             bar.set_position(u64::from(rows));
         }
     };
-    let rendered = match hrender::render(scene, &options, &progress) {
+    let mut rendered = match hrender::render(scene, &options, &progress) {
         Ok(r) => r,
         Err(e) => {
             eprintln!("error: {e}");
@@ -231,12 +257,33 @@ fn render_frame(
     if let Some(bar) = &bar {
         bar.finish_and_clear();
     }
-    let depth = match args.depth {
-        Depth::Eight => SampleDepth::Eight,
-        Depth::Sixteen => SampleDepth::Sixteen,
-        Depth::Float32 => SampleDepth::Float32,
+    let auto = (args.exposure == ExposureArg::Auto).then(|| {
+        let ev = auto_ev
+            .get()
+            .unwrap_or_else(|| hrender::auto_exposure(&rendered.image));
+        auto_ev.set(Some(ev));
+        rendered.image.expose(ev);
+        ev
+    });
+    let depth = match hrender::ImageFormat::from_path(output) {
+        Ok(format) => sample_depth(args.depth, format),
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(EXIT_USAGE_OR_IO);
+        }
     };
-    if let Err(e) = hrender::write_image(&rendered.image, output, depth) {
+    let display = DisplayTransform {
+        tone: match args.tonemap {
+            ToneMapArg::Clip => ToneMap::Clip,
+            ToneMapArg::Reinhard => ToneMap::Reinhard,
+            ToneMapArg::Aces => ToneMap::Aces,
+        },
+        encoding: match args.encoding {
+            EncodingArg::Srgb => Encoding::Srgb,
+            EncodingArg::Linear => Encoding::Linear,
+        },
+    };
+    if let Err(e) = hrender::write_image_with(&rendered.image, output, depth, display) {
         eprintln!("error: {e}");
         return ExitCode::from(EXIT_USAGE_OR_IO);
     }
@@ -245,6 +292,9 @@ fn render_frame(
             "warning: {} pixel(s) had a numeric failure; their failing rays show the background",
             rendered.stats.numeric_failures
         );
+    }
+    if let Some(ev) = auto {
+        eprintln!("note: --exposure auto chose {ev:.2} stops");
     }
     if stderr_tty {
         let secs = started.elapsed().as_secs_f64();

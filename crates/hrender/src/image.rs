@@ -47,6 +47,21 @@ impl Image {
         self.pixels[y as usize * self.width as usize + x as usize]
     }
 
+    /// Every sample multiplied by `2^ev`, for an exposure chosen after the
+    /// render ([`crate::auto_exposure`] keeps the result finite). A sample
+    /// the product would take past f32 becomes the largest finite f32.
+    pub fn expose(&mut self, ev: f64) {
+        let k = ev.exp2();
+        for c in self.pixels.iter_mut().flatten() {
+            let v = (f64::from(*c) * k) as f32;
+            *c = if v.is_finite() {
+                v
+            } else {
+                f32::MAX.copysign(v)
+            };
+        }
+    }
+
     /// Samples clamped to `[0, 1]` and quantised to 8 bits.
     pub fn to_rgb8(&self) -> Vec<u8> {
         self.pixels

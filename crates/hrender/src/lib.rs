@@ -21,7 +21,10 @@
 mod bvh;
 mod camera;
 mod color;
+mod display;
 mod error;
+mod exposure;
+mod icc;
 mod image;
 mod nets;
 mod output;
@@ -37,10 +40,12 @@ use rayon::prelude::*;
 
 pub use camera::CanonicalCamera;
 pub use color::Color;
+pub use display::{DisplayTransform, Encoding, ToneMap, srgb_decode, srgb_encode};
 pub use error::RenderError;
+pub use exposure::{AUTO_KEY, auto_exposure, luminance};
 pub use image::Image;
 pub use nets::{PixelNet, Sample};
-pub use output::{ImageFormat, SampleDepth, write_image};
+pub use output::{ImageFormat, SampleDepth, check_depth, write_image, write_image_with};
 pub use sampling::{SampleStream, Sampler};
 pub use scene::{Nearest, PreparedScene};
 pub use tracer::{TraceStats, Tracer};
