@@ -62,28 +62,8 @@ impl Image {
         }
     }
 
-    /// Samples clamped to `[0, 1]` and quantised to 8 bits.
-    pub fn to_rgb8(&self) -> Vec<u8> {
-        self.pixels
-            .iter()
-            .flat_map(|p| p.map(|c| quantize(c, 255.0) as u8))
-            .collect()
-    }
-
-    /// Samples clamped to `[0, 1]` and quantised to 16 bits.
-    pub fn to_rgb16(&self) -> Vec<u16> {
-        self.pixels
-            .iter()
-            .flat_map(|p| p.map(|c| quantize(c, 65535.0) as u16))
-            .collect()
-    }
-
     /// The unclamped samples, interleaved.
     pub fn to_rgb32f(&self) -> Vec<f32> {
         self.pixels.iter().flatten().copied().collect()
     }
-}
-
-fn quantize(c: f32, max: f32) -> f32 {
-    (c.clamp(0.0, 1.0) * max).round()
 }
