@@ -24,6 +24,7 @@ mod color;
 mod display;
 mod error;
 mod exposure;
+mod fog;
 mod icc;
 mod image;
 mod nets;
@@ -36,6 +37,7 @@ use std::collections::HashMap;
 
 use hgeom::Ray;
 use hscene_lang::ir::{Net, Resolution, Scene, Window};
+use hscene_lang::view::FovError;
 use rayon::prelude::*;
 
 pub use camera::CanonicalCamera;
@@ -298,6 +300,28 @@ impl Frame<'_> {
     }
 }
 
+/// The scene's window, or the one its `fov` gives for this net, resolution
+/// and view-plane distance.
+fn view_window(
+    scene: &Scene,
+    net: Net,
+    resolution: Resolution,
+    view_distance: f64,
+) -> Result<Window, RenderError> {
+    let Some(fov) = scene.settings.fov else {
+        return Ok(scene.settings.window);
+    };
+    hscene_lang::view::fov_window(fov, net, resolution, view_distance).map_err(|e| {
+        RenderError::InvalidOption(match e {
+            FovError::OutOfRange => format!("fov must be between 0 and 180 degrees, not {fov}"),
+            FovError::BeyondViewPlane(max) => format!(
+                "net {} cannot show fov = {fov}: the view h-plane spans less than {max:.1} degrees from the eye",
+                net.index()
+            ),
+        })
+    })
+}
+
 /// Net-3 nodes already traced for the current row, by lattice index.
 #[derive(Default)]
 struct NodeCache(HashMap<(i64, i64), (Color, bool)>);
@@ -316,10 +340,16 @@ fn render_in_pool(
             "resolution must be at least 1x1".into(),
         ));
     }
+    let window = view_window(
+        scene,
+        net,
+        Resolution { width, height },
+        camera.view_distance,
+    )?;
     let frame = Frame {
         net,
-        pixel_net: PixelNet::new(net, scene.settings.window, camera.view_distance),
-        window: scene.settings.window,
+        pixel_net: PixelNet::new(net, window, camera.view_distance),
+        window,
         width,
         height,
         sampler: Sampler::new(

@@ -21,6 +21,7 @@ mod lower;
 pub mod mesh_file;
 mod parser;
 pub mod syntax;
+pub mod view;
 
 pub use diagnostic::{Code, Diagnostic, LineIndex, Severity, Span};
 pub use lower::{MAX_FRAMES, MAX_PIXELS, MAX_SAMPLES};

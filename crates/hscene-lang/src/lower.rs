@@ -10,6 +10,7 @@
 mod figures;
 mod moves;
 mod objects;
+mod view_globals;
 
 use std::collections::HashMap;
 use std::path::Path;
@@ -91,6 +92,8 @@ fn default_settings() -> Settings {
         ambient: Rgb::new(0.1, 0.1, 0.1),
         samples: 1,
         frames: 1,
+        fov: None,
+        fog: None,
     }
 }
 
@@ -132,6 +135,7 @@ struct Lowerer<'d> {
     moves: Vec<moves::PendingMove>,
     settings: Settings,
     camera_parts: CameraParts,
+    view: view_globals::ViewParts,
     /// A point reference failed (undefined, or something else where a point
     /// was needed, or text was skipped): the point meant may look unused.
     point_ref_failed: bool,
@@ -202,6 +206,7 @@ pub(crate) fn lower(
         moves: Vec::new(),
         settings: default_settings(),
         camera_parts: CameraParts::default(),
+        view: view_globals::ViewParts::default(),
         point_ref_failed: file.incomplete,
         material_ref_failed: file.incomplete,
     };
@@ -232,6 +237,7 @@ pub(crate) fn lower(
     }
     let mut camera = lw.camera();
     lw.apply_moves(&mut camera);
+    lw.settle_view(camera.as_ref());
     if let Some(camera) = &camera {
         lw.lint_scene(camera);
     }
@@ -922,6 +928,7 @@ impl Lowerer<'_> {
                 }
             }
             "window_size" => {
+                self.view.window_span = Some(value.span());
                 if let Some(v) = self.tuple_of_numbers(value, 2, "window_size = (width, height)") {
                     if v.iter().all(|x| *x > 0.0) {
                         self.settings.window = Window {
@@ -962,6 +969,7 @@ impl Lowerer<'_> {
                 self.settings.background = self.rgb(value).unwrap_or(self.settings.background)
             }
             "ambient" => self.settings.ambient = self.rgb(value).unwrap_or(self.settings.ambient),
+            k if view_globals::VIEW_KEYS.contains(&k) => self.view_global(key, value),
             "from" | "eye" | "to" | "up" => {
                 let role = match key.text.as_str() {
                     "to" => "the view target",
@@ -1931,6 +1939,9 @@ const GLOBAL_KEYS: &[&str] = &[
     "up",
     "background",
     "ambient",
+    "fov",
+    "fog_color",
+    "fog_distance",
 ];
 
 const MATERIAL_FIELDS: &[&str] = &[
@@ -1971,7 +1982,7 @@ fn section_meant(name: &str) -> Option<&'static str> {
         .copied()
 }
 
-const GLOBAL_KEYS_HELP: &str = "globals are recursion_depth, resolution, window_size, net_type, samples, frames, from, to, up, background, ambient";
+const GLOBAL_KEYS_HELP: &str = "globals are recursion_depth, resolution, window_size, fov, net_type, samples, frames, from, to, up, background, ambient, fog_color, fog_distance";
 
 /// A reference as written, shortened like [`quote`] (without the backticks).
 fn reference_text(r: &Reference) -> String {
