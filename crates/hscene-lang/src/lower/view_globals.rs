@@ -20,6 +20,9 @@ pub(super) struct ViewParts {
     pub(super) window_span: Option<Span>,
     fog_color: Option<(Rgb, Span)>,
     fog_distance: Option<f64>,
+    /// `fog_distance` was given but refused (already reported): a lint
+    /// about `fog_color` would only cascade.
+    fog_distance_failed: bool,
 }
 
 /// Keys this module handles.
@@ -50,9 +53,11 @@ impl Lowerer<'_> {
                 }
             }
             _ => {
+                self.view.fog_distance_failed = true;
                 let Some(x) = self.number(value) else { return };
                 if x > 0.0 && x.is_finite() {
                     self.view.fog_distance = Some(x);
+                    self.view.fog_distance_failed = false;
                 } else {
                     self.report(
                         Diagnostic::new(
@@ -112,7 +117,7 @@ impl Lowerer<'_> {
                     distance,
                 });
             }
-            (None, Some((_, span))) => self.report(
+            (None, Some((_, span))) if !self.view.fog_distance_failed => self.report(
                 Diagnostic::new(
                     Code::IneffectiveOption,
                     span,
@@ -122,7 +127,7 @@ impl Lowerer<'_> {
                     "add `fog_distance = 3;` (say) to turn the fog on, or remove `fog_color`",
                 ),
             ),
-            (None, None) => {}
+            (None, _) => {}
         }
     }
 }
