@@ -8,6 +8,7 @@
 //! past errors so one run reports as much as it can.
 
 mod figures;
+mod light_strength;
 mod moves;
 mod objects;
 mod view_globals;
@@ -730,7 +731,11 @@ impl Lowerer<'_> {
             match clause {
                 Clause::Value(v) if options.is_empty() => values.push(v),
                 Clause::Assign { key, .. }
-                    if values.len() < 3 && !matches!(key.text.as_str(), "radius" | "samples") =>
+                    if values.len() < 3
+                        && !matches!(
+                            key.text.as_str(),
+                            "radius" | "samples" | light_strength::KEY
+                        ) =>
                 {
                     self.report(
                         Diagnostic::new(
@@ -770,8 +775,13 @@ impl Lowerer<'_> {
         let position = self.point_arg(values[0], "a light");
         let diffuse = self.rgb(values[1]);
         let specular = self.rgb(values[2]);
+        let (options, irradiance_at) = self.take_irradiance_at(options);
         let (radius, samples) = self.light_options(&options)?;
-        let (position, diffuse, specular) = (position?, diffuse?, specular?);
+        let (position, mut diffuse, mut specular) = (position?, diffuse?, specular?);
+        if let Some(d) = irradiance_at.ok()? {
+            diffuse = light_strength::intensity_for_irradiance(diffuse, d);
+            specular = light_strength::intensity_for_irradiance(specular, d);
+        }
         self.lights.push((
             Light {
                 position,
@@ -838,8 +848,8 @@ impl Lowerer<'_> {
                         )
                         .with_help(did_you_mean(
                             other,
-                            &["radius", "samples"],
-                            "the options of a light are `radius` (hyperbolic, 0 for a point light) and `samples` (shadow rays per shading point)",
+                            &["radius", "samples", light_strength::KEY],
+                            "the options of a light are `radius` (hyperbolic, 0 for a point light), `samples` (shadow rays per shading point) and `irradiance_at` (the colours are the irradiance at this distance)",
                         )),
                     );
                 }
