@@ -174,6 +174,24 @@ fn render(args: &RenderArgs) -> ExitCode {
     ExitCode::SUCCESS
 }
 
+/// The lint for an image that would come out almost black (fewer than 1 %
+/// of its pixels at sRGB level 16 or above), with the exposure that would
+/// fix it.
+fn warn_if_almost_black(image: &hrender::Image, display: DisplayTransform, auto: bool) {
+    if !hrender::is_almost_black(image, display) {
+        return;
+    }
+    let ev = hrender::auto_exposure(image);
+    let hint = if auto || ev <= 0.0 {
+        String::new()
+    } else {
+        format!("; try --exposure {ev:.1} (or --exposure auto), brighter lights or `irradiance_at`")
+    };
+    eprintln!(
+        "warning: the image is almost black: under 1 % of its pixels reach level 16 of 255{hint}"
+    );
+}
+
 /// The depth asked for, or the format's own default.
 fn sample_depth(depth: Option<Depth>, format: hrender::ImageFormat) -> SampleDepth {
     match depth {
@@ -296,6 +314,7 @@ fn render_frame(
     if let Some(ev) = auto {
         eprintln!("note: --exposure auto chose {ev:.2} stops");
     }
+    warn_if_almost_black(&rendered.image, display, auto.is_some());
     if stderr_tty {
         let secs = started.elapsed().as_secs_f64();
         eprintln!(

@@ -6,6 +6,7 @@ use std::fs;
 use std::path::Path;
 
 use assert_cmd::Command;
+use predicates::prelude::PredicateBooleanExt;
 
 fn hscene() -> Command {
     Command::cargo_bin("hscene").expect("binary is built by cargo test")
@@ -158,4 +159,45 @@ fn tone_curves_and_auto_exposure() {
     let auto = image::open(&out).unwrap().into_rgb8();
     let sum = |i: &image::RgbImage| i.as_raw().iter().map(|&v| u64::from(v)).sum::<u64>();
     assert!(sum(&auto) > sum(&clip));
+}
+
+/// A scene lit by a faint light far away warns that it is almost black and
+/// names the exposure that would fix it; the Appendix A scene does not.
+#[test]
+fn an_almost_black_image_is_reported() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("dark.hsc");
+    fs::write(
+        &scene,
+        "Globals { resolution = (32, 32); }
+         Points { (0, 0, 0.9); (0, 0.5, 0); }
+         BRDFs { diffuse = (1, 1, 1), ambient = (0, 0, 0); }
+         Lights { %2, (0.01, 0.01, 0.01), (0, 0, 0); }
+         Objects { Sphere %1, 0.5, #1; }",
+    )
+    .unwrap();
+    hscene()
+        .arg("render")
+        .arg(&scene)
+        .arg("-o")
+        .arg(dir.path().join("dark.png"))
+        .assert()
+        .success()
+        .stderr(
+            predicates::str::contains("the image is almost black")
+                .and(predicates::str::contains("try --exposure")),
+        );
+    let assert = hscene()
+        .args([
+            "render",
+            "scenes/thesis-appendix-a.hsc",
+            "--resolution",
+            "24x24",
+            "-o",
+        ])
+        .arg(dir.path().join("a.png"))
+        .assert()
+        .success();
+    let stderr = String::from_utf8_lossy(&assert.get_output().stderr).into_owned();
+    assert!(!stderr.contains("almost black"), "{stderr}");
 }

@@ -48,6 +48,23 @@ pub fn auto_exposure(image: &Image) -> f64 {
         .clamp(-crate::MAX_EXPOSURE, crate::MAX_EXPOSURE)
 }
 
+/// A pixel is dark when every channel, as stored by `display`, is below
+/// this (level 16 of 255: black to most eyes on most screens).
+pub const DARK_LEVEL: f64 = 16.0 / 255.0;
+
+/// True when the image would look almost black: fewer than 1 % of its
+/// pixels have a channel at or above [`DARK_LEVEL`] once tone-mapped and
+/// encoded by `display`. A cheap, documented criterion for the render
+/// warning; an empty image is not "almost black".
+pub fn is_almost_black(image: &Image, display: crate::DisplayTransform) -> bool {
+    let lit = image
+        .pixels()
+        .iter()
+        .filter(|p| p.iter().any(|&c| display.apply(c) >= DARK_LEVEL))
+        .count();
+    !image.pixels().is_empty() && lit * 100 < image.pixels().len()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -69,6 +86,38 @@ mod tests {
             auto_exposure(&Image::from_pixels(1, 1, vec![grey(0.0)])),
             0.0
         );
+    }
+
+    /// sRGB level 16 is linear 0.0052; under 1 % of pixels above it is
+    /// "almost black", and so is the same image stored linearly (level 16
+    /// there is 0.063).
+    #[test]
+    fn almost_black_needs_one_percent_of_visible_pixels() {
+        let srgb = crate::DisplayTransform::default();
+        let mut px = vec![[0.004f32; 3]; 200];
+        assert!(is_almost_black(
+            &Image::from_pixels(200, 1, px.clone()),
+            srgb
+        ));
+        px[0] = [0.006, 0.0, 0.0];
+        assert!(is_almost_black(
+            &Image::from_pixels(200, 1, px.clone()),
+            srgb
+        ));
+        px[1] = [0.0, 0.0, 0.5];
+        assert!(!is_almost_black(
+            &Image::from_pixels(200, 1, px.clone()),
+            srgb
+        ));
+        let linear = crate::DisplayTransform {
+            encoding: crate::Encoding::Linear,
+            ..srgb
+        };
+        assert!(is_almost_black(
+            &Image::from_pixels(200, 1, vec![[0.05; 3]; 200]),
+            linear
+        ));
+        assert!(!is_almost_black(&Image::from_pixels(0, 0, vec![]), srgb));
     }
 
     #[test]

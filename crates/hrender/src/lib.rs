@@ -44,7 +44,7 @@ pub use camera::CanonicalCamera;
 pub use color::Color;
 pub use display::{DisplayTransform, Encoding, ToneMap, srgb_decode, srgb_encode};
 pub use error::RenderError;
-pub use exposure::{AUTO_KEY, auto_exposure, luminance};
+pub use exposure::{AUTO_KEY, DARK_LEVEL, auto_exposure, is_almost_black, luminance};
 pub use image::Image;
 pub use nets::{PixelNet, Sample};
 pub use output::{ImageFormat, SampleDepth, check_depth, write_image, write_image_with};
