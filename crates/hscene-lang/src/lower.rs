@@ -12,6 +12,7 @@ mod light_strength;
 mod moves;
 mod objects;
 mod view_globals;
+mod view_lint;
 
 use std::collections::HashMap;
 use std::path::Path;
@@ -241,6 +242,7 @@ pub(crate) fn lower(
     lw.settle_view(camera.as_ref());
     if let Some(camera) = &camera {
         lw.lint_scene(camera);
+        lw.lint_outside_view(camera);
     }
     lw.mark_failed_references(file);
     lw.lint_unused();

@@ -10,7 +10,38 @@
 //! square at the centre. `docs/rendering.md#field-of-view` derives the
 //! formulas below.
 
-use crate::ir::{Net, Resolution, Window};
+use hgeom::Isometry;
+use hgeom::glam::{DMat3, DVec3};
+
+use crate::ir::{Camera, Net, Resolution, Window};
+
+/// The camera's canonical frame: the isometry that takes the eye to the
+/// origin, the view direction to +z and up to +y, and the view-plane
+/// distance `f` there (`tanh(d/2)`, `d` the eye-target distance). First the
+/// transvection taking the eye to the origin; there the view direction is
+/// the diameter towards the moved target, and up is the direction towards
+/// the moved up point, made orthogonal to it (default: the image of the
+/// ball's `+y` at the eye). Then the rotation taking (right, up, view) to
+/// (x, y, z), with right = up x view: screen x grows to the right, y
+/// upwards, z away from the eye. `None` when view and up are degenerate.
+pub fn canonical_frame(camera: &Camera) -> Option<(Isometry, f64)> {
+    let to_origin = Isometry::transvection_from_origin(camera.eye).inverse();
+    let target = to_origin.apply(&camera.target);
+    let view = target.coords().normalize();
+    let up_hint = match &camera.up {
+        Some(u) => to_origin.apply(u).coords(),
+        None => to_origin.apply_direction(&camera.eye, DVec3::Y),
+    };
+    let up = (up_hint - view * up_hint.dot(view)).normalize();
+    let right = up.cross(view);
+    if !(view.is_finite() && up.is_finite() && right.is_finite()) {
+        return None;
+    }
+    // Rows right, up, view: maps those vectors to x, y, z.
+    let rotation = DMat3::from_cols(right, up, view).transpose();
+    let to_canonical = Isometry::orthogonal(rotation).compose(&to_origin);
+    Some((to_canonical, target.coords().length()))
+}
 
 /// Why a field of view gives no window.
 #[derive(Clone, Copy, Debug, PartialEq)]
