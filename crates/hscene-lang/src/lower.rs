@@ -777,13 +777,9 @@ impl Lowerer<'_> {
         let position = self.point_arg(values[0], "a light");
         let diffuse = self.rgb(values[1]);
         let specular = self.rgb(values[2]);
-        let (options, irradiance_at) = self.take_irradiance_at(options);
+        let (options, strength) = self.take_irradiance_at(options);
         let (radius, samples) = self.light_options(&options)?;
-        let (position, mut diffuse, mut specular) = (position?, diffuse?, specular?);
-        if let Some(d) = irradiance_at.ok()? {
-            diffuse = light_strength::intensity_for_irradiance(diffuse, d);
-            specular = light_strength::intensity_for_irradiance(specular, d);
-        }
+        let (position, (diffuse, specular)) = (position?, strength.apply(diffuse?, specular?)?);
         self.lights.push((
             Light {
                 position,

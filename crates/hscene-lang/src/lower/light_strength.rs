@@ -19,6 +19,35 @@ pub(super) const KEY: &str = "irradiance_at";
 /// any scene the renderer can represent (distance ~37 from the eye).
 const MAX_DISTANCE: f64 = 30.0;
 
+/// A light's `key = value` option, as written.
+pub(super) type LightOption<'v> = (&'v Ident, &'v Value);
+
+/// How a light's colours are meant.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Strength {
+    /// As intensities (no `irradiance_at`).
+    Intensity,
+    /// As the irradiance delivered at this distance.
+    IrradianceAt(f64),
+    /// `irradiance_at` was refused (already reported).
+    Refused,
+}
+
+impl Strength {
+    /// The light's diffuse and specular intensities from its colours;
+    /// `None` when refused.
+    pub(super) fn apply(self, diffuse: Rgb, specular: Rgb) -> Option<(Rgb, Rgb)> {
+        match self {
+            Strength::Intensity => Some((diffuse, specular)),
+            Strength::IrradianceAt(d) => Some((
+                intensity_for_irradiance(diffuse, d),
+                intensity_for_irradiance(specular, d),
+            )),
+            Strength::Refused => None,
+        }
+    }
+}
+
 /// The intensity that delivers irradiance `e` at distance `d`.
 pub fn intensity_for_irradiance(e: Rgb, d: f64) -> Rgb {
     let k = 4.0 * PI * d.sinh() * d.sinh();
@@ -27,16 +56,15 @@ pub fn intensity_for_irradiance(e: Rgb, d: f64) -> Rgb {
 
 impl Lowerer<'_> {
     /// Takes `irradiance_at = D` out of a light's options: the others, and
-    /// the distance (`Ok(None)` when not given, `Err(())` when refused,
-    /// already reported).
+    /// how the colours are meant.
     pub(super) fn take_irradiance_at<'v>(
         &mut self,
-        options: Vec<(&'v Ident, &'v Value)>,
-    ) -> (Vec<(&'v Ident, &'v Value)>, Result<Option<f64>, ()>) {
+        options: Vec<LightOption<'v>>,
+    ) -> (Vec<LightOption<'v>>, Strength) {
         let (ours, rest): (Vec<_>, Vec<_>) = options.into_iter().partition(|(k, _)| k.text == KEY);
-        let mut result = Ok(None);
+        let mut result = Strength::Intensity;
         for (key, value) in &ours {
-            if result != Ok(None) {
+            if result != Strength::Intensity {
                 self.report(Diagnostic::new(
                     Code::DuplicateKey,
                     key.span,
@@ -44,7 +72,7 @@ impl Lowerer<'_> {
                 ));
             }
             result = match self.number(value) {
-                Some(d) if d > 0.0 && d <= MAX_DISTANCE => Ok(Some(d)),
+                Some(d) if d > 0.0 && d <= MAX_DISTANCE => Strength::IrradianceAt(d),
                 Some(d) => {
                     self.report(
                         Diagnostic::new(
@@ -54,9 +82,9 @@ impl Lowerer<'_> {
                         )
                         .with_help("`irradiance_at = 1` makes the colours the light a surface receives at distance 1"),
                     );
-                    Err(())
+                    Strength::Refused
                 }
-                None => Err(()),
+                None => Strength::Refused,
             };
         }
         (rest, result)
