@@ -163,8 +163,7 @@ fn default_permissions() -> Option<std::fs::Permissions> {
     None
 }
 
-/// PNG through the png crate, which writes the `sRGB` chunk (with the
-/// `gAMA` and `cHRM` fallbacks the PNG specification recommends) for
+/// PNG through the png crate, which writes the `sRGB` chunk for
 /// sRGB-encoded samples; linear samples go untagged, as the thesis wrote
 /// them.
 fn encode_png(
