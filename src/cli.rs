@@ -39,7 +39,7 @@ impl ColorChoice {
 
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Render a scene to a PNG or TIFF image.
+    /// Render a scene to a PNG, TIFF or OpenEXR image.
     Render(RenderArgs),
     /// Check scenes for errors and warnings without rendering.
     Check(CheckArgs),
@@ -65,7 +65,7 @@ pub enum Command {
 pub struct RenderArgs {
     /// The scene file.
     pub scene: PathBuf,
-    /// Output image: .png, .tif or .tiff.
+    /// Output image: .png, .tif, .tiff or .exr.
     #[arg(short, long)]
     pub output: PathBuf,
     /// Pixel net 0-4, overriding the scene's `net_type`.
@@ -74,9 +74,19 @@ pub struct RenderArgs {
     /// Resolution WIDTHxHEIGHT, overriding the scene's.
     #[arg(long, value_parser = parse_resolution)]
     pub resolution: Option<(u32, u32)>,
-    /// Sample depth of the output: 8, 16, or 32f (float TIFF, unclamped HDR).
-    #[arg(long, default_value = "8")]
-    pub depth: Depth,
+    /// Sample depth of the output: 8, 16, or 32f (float TIFF or OpenEXR,
+    /// linear, unclamped HDR). Default: 8, and 32f for .exr.
+    #[arg(long)]
+    pub depth: Option<Depth>,
+    /// Transfer function of 8- and 16-bit samples: srgb (tagged as such) or
+    /// linear (raw linear values, untagged, as the thesis wrote them).
+    /// Float outputs are always linear.
+    #[arg(long, value_name = "CURVE", default_value = "srgb")]
+    pub encoding: EncodingArg,
+    /// Tone curve of 8- and 16-bit samples: clip (clamp to 1), reinhard
+    /// (x/(1+x)) or aces (filmic). Float outputs are never tone-mapped.
+    #[arg(long, value_name = "CURVE", default_value = "clip")]
+    pub tonemap: ToneMapArg,
     /// Worker threads (default: all cores).
     #[arg(long)]
     pub threads: Option<usize>,
@@ -89,9 +99,11 @@ pub struct RenderArgs {
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
     /// Exposure correction in stops: radiance is multiplied by 2^EV before
-    /// quantisation (and in float TIFF output).
-    #[arg(long, value_name = "EV", default_value_t = 0.0, allow_negative_numbers = true, value_parser = parse_exposure)]
-    pub exposure: f64,
+    /// tone mapping and quantisation (and in float outputs). `auto` maps the
+    /// log-average luminance of the lit pixels to 0.18 (the first frame's
+    /// exposure is kept for the whole animation).
+    #[arg(long, value_name = "EV|auto", default_value = "0", allow_negative_numbers = true, value_parser = parse_exposure)]
+    pub exposure: ExposureArg,
     /// Render only this animation frame (0-based) to exactly OUTPUT. Without
     /// it, a scene with `frames = N` (N > 1) renders every frame to
     /// OUTPUT-0000.png, OUTPUT-0001.png, ...
@@ -135,6 +147,33 @@ pub enum Depth {
     Float32,
 }
 
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum EncodingArg {
+    /// The sRGB transfer function, tagged.
+    Srgb,
+    /// Raw linear values, untagged.
+    Linear,
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum ToneMapArg {
+    /// Clamp to [0, 1].
+    Clip,
+    /// x / (1 + x).
+    Reinhard,
+    /// The ACES filmic curve (Narkowicz's fit).
+    Aces,
+}
+
+/// `--exposure`: fixed stops or chosen from the image.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ExposureArg {
+    /// This many stops.
+    Stops(f64),
+    /// From the log-average luminance.
+    Auto,
+}
+
 #[derive(Debug, clap::Args)]
 pub struct CheckArgs {
     /// Scene files to check; `-` reads a scene from stdin.
@@ -175,16 +214,19 @@ pub enum Format {
     Json,
 }
 
-fn parse_exposure(s: &str) -> Result<f64, String> {
+fn parse_exposure(s: &str) -> Result<ExposureArg, String> {
+    if s.trim() == "auto" {
+        return Ok(ExposureArg::Auto);
+    }
     let ev: f64 = s
         .trim()
         .parse()
-        .map_err(|_| format!("expected a number of stops, e.g. 2 or -1.5, not `{s}`"))?;
+        .map_err(|_| format!("expected a number of stops, e.g. 2 or -1.5, or `auto`, not `{s}`"))?;
     let max = hrender::MAX_EXPOSURE;
     if !(ev.is_finite() && ev.abs() <= max) {
         return Err(format!("exposure must be from -{max} to {max} stops"));
     }
-    Ok(ev)
+    Ok(ExposureArg::Stops(ev))
 }
 
 fn parse_resolution(s: &str) -> Result<(u32, u32), String> {

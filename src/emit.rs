@@ -28,6 +28,11 @@ pub fn scene_to_json(path: &Path, scene: &Scene) -> Value {
             "ambient": rgb(s.ambient),
             "samples": s.samples,
             "frames": s.frames,
+            "fov": s.fov,
+            "fog": s.fog.map(|f| json!({
+                "color": rgb(f.color),
+                "distance": f.distance,
+            })),
         },
         "frame": scene.frame,
         "camera": camera(&scene.camera),

@@ -14,10 +14,13 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use clap::Parser;
-use hrender::{RenderOptions, SampleDepth};
+use hrender::{DisplayTransform, Encoding, RenderOptions, SampleDepth, ToneMap};
 use hscene_lang::ir::{Net, Resolution};
 
-use cli::{CheckArgs, Cli, ColorChoice, Command, Depth, Emit, Format, RenderArgs};
+use cli::{
+    CheckArgs, Cli, ColorChoice, Command, Depth, Emit, EncodingArg, ExposureArg, Format,
+    RenderArgs, ToneMapArg,
+};
 
 /// Exit status: the scene has errors.
 const EXIT_SCENE_ERRORS: u8 = 1;
@@ -150,11 +153,15 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
         Ok(s) => s,
         Err(code) => return code,
     };
-    // Refuse a bad output name before spending time on the render.
-    if let Err(e) = hrender::ImageFormat::from_path(&args.output) {
+    // Refuse a bad output name or depth before spending time on the render.
+    if let Err(e) = hrender::ImageFormat::from_path(&args.output)
+        .and_then(|f| hrender::check_depth(f, sample_depth(args.depth, f)))
+    {
         eprintln!("error: {e}");
         return ExitCode::from(EXIT_USAGE_OR_IO);
     }
+    // `--exposure auto` is measured on the first frame rendered and kept.
+    let auto_ev = std::cell::Cell::new(None);
     let stderr_tty = std::io::stderr().is_terminal();
     let first = args.frame.unwrap_or(0);
     let compiled = hscene_lang::compile_with(&source, &compile_options(&args.scene, first));
@@ -192,7 +199,7 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
         return ExitCode::from(EXIT_USAGE_OR_IO);
     }
     if args.frame.is_some() || frames == 1 {
-        return render_frame(args, &scene, &args.output, stderr_tty);
+        return render_frame(args, &scene, &args.output, stderr_tty, &auto_ev);
     }
     // Every frame, each compiled on its own: the animated transformations
     // are applied per frame. Diagnostics were shown for frame 0; those of
@@ -211,12 +218,46 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
                 }
             }
         };
-        let code = render_frame(args, &scene, &frame_path(&args.output, k), stderr_tty);
+        let code = render_frame(
+            args,
+            &scene,
+            &frame_path(&args.output, k),
+            stderr_tty,
+            &auto_ev,
+        );
         if code != ExitCode::SUCCESS {
             return code;
         }
     }
     ExitCode::SUCCESS
+}
+
+/// The lint for an image that would come out almost black (fewer than 1 %
+/// of its pixels at sRGB level 16 or above), with the exposure that would
+/// fix it.
+fn warn_if_almost_black(image: &hrender::Image, display: DisplayTransform, auto: bool) {
+    if !hrender::is_almost_black(image, display) {
+        return;
+    }
+    let ev = hrender::auto_exposure(image);
+    let hint = if auto || ev <= 0.0 {
+        String::new()
+    } else {
+        format!("; try --exposure {ev:.1} (or --exposure auto), brighter lights or `irradiance_at`")
+    };
+    eprintln!(
+        "warning: the image is almost black: under 1 % of its pixels reach level 16 of 255{hint}"
+    );
+}
+
+/// The depth asked for, or the format's own default.
+fn sample_depth(depth: Option<Depth>, format: hrender::ImageFormat) -> SampleDepth {
+    match depth {
+        Some(Depth::Eight) => SampleDepth::Eight,
+        Some(Depth::Sixteen) => SampleDepth::Sixteen,
+        Some(Depth::Float32) => SampleDepth::Float32,
+        None => format.default_depth(),
+    }
 }
 
 /// `out.png` -> `out-0007.png` for frame 7 (at least four digits).
@@ -237,6 +278,7 @@ fn render_frame(
     scene: &hscene_lang::ir::Scene,
     output: &Path,
     stderr_tty: bool,
+    auto_ev: &std::cell::Cell<Option<f64>>,
 ) -> ExitCode {
     let options = RenderOptions {
         net: args.net.and_then(|n| Net::from_index(u64::from(n))),
@@ -246,7 +288,10 @@ fn render_frame(
         threads: args.threads,
         samples: args.samples,
         seed: args.seed,
-        exposure: args.exposure,
+        exposure: match args.exposure {
+            ExposureArg::Stops(ev) => ev,
+            ExposureArg::Auto => 0.0,
+        },
     };
     let height = args.crop.map_or_else(
         || {
@@ -274,7 +319,7 @@ fn render_frame(
             bar.set_position(u64::from(rows));
         }
     };
-    let rendered = match hrender::render_region(scene, &options, args.crop, &progress) {
+    let mut rendered = match hrender::render_region(scene, &options, args.crop, &progress) {
         Ok(r) => r,
         Err(e) => {
             eprintln!("error: {e}");
@@ -293,12 +338,33 @@ fn render_frame(
     if let Some(bar) = &bar {
         bar.finish_and_clear();
     }
-    let depth = match args.depth {
-        Depth::Eight => SampleDepth::Eight,
-        Depth::Sixteen => SampleDepth::Sixteen,
-        Depth::Float32 => SampleDepth::Float32,
+    let auto = (args.exposure == ExposureArg::Auto).then(|| {
+        let ev = auto_ev
+            .get()
+            .unwrap_or_else(|| hrender::auto_exposure(&rendered.image));
+        auto_ev.set(Some(ev));
+        rendered.image.expose(ev);
+        ev
+    });
+    let depth = match hrender::ImageFormat::from_path(output) {
+        Ok(format) => sample_depth(args.depth, format),
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(EXIT_USAGE_OR_IO);
+        }
     };
-    if let Err(e) = hrender::write_image(&rendered.image, output, depth) {
+    let display = DisplayTransform {
+        tone: match args.tonemap {
+            ToneMapArg::Clip => ToneMap::Clip,
+            ToneMapArg::Reinhard => ToneMap::Reinhard,
+            ToneMapArg::Aces => ToneMap::Aces,
+        },
+        encoding: match args.encoding {
+            EncodingArg::Srgb => Encoding::Srgb,
+            EncodingArg::Linear => Encoding::Linear,
+        },
+    };
+    if let Err(e) = hrender::write_image_with(&rendered.image, output, depth, display) {
         eprintln!("error: {e}");
         return ExitCode::from(EXIT_USAGE_OR_IO);
     }
@@ -308,6 +374,10 @@ fn render_frame(
             rendered.stats.numeric_failures
         );
     }
+    if let Some(ev) = auto {
+        eprintln!("note: --exposure auto chose {ev:.2} stops");
+    }
+    warn_if_almost_black(&rendered.image, display, auto.is_some());
     if stderr_tty {
         let secs = started.elapsed().as_secs_f64();
         eprintln!(

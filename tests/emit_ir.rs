@@ -138,3 +138,29 @@ fn example_scenes_check_clean_and_render() {
         assert!(fs::metadata(&out).unwrap().len() > 0, "{scene}");
     }
 }
+
+/// `fov` and fog appear in the settings (`null` when not set); a light
+/// given by `irradiance_at` shows its resulting intensity.
+#[test]
+fn emit_ir_shows_fov_fog_and_light_intensity() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("fog.hsc");
+    fs::write(
+        &path,
+        "Globals { fov = 60; fog_color = (0.1, 0.2, 0.3); fog_distance = 2.5; }
+         Points { (0, 0, 0.3); (0, 0.3, 0); }
+         BRDFs { diffuse = (1, 1, 1); }
+         Lights { %2, (1, 1, 1), (0, 0, 0), irradiance_at = 1; }
+         Objects { Sphere %1, 0.05, #1; }",
+    )
+    .unwrap();
+    let v = emit(&path);
+    assert_eq!(v["settings"]["fov"], 60.0);
+    assert_eq!(v["settings"]["fog"]["distance"], 2.5);
+    assert_eq!(v["settings"]["fog"]["color"][2], 0.3);
+    let i = v["lights"][0]["diffuse"][0].as_f64().unwrap();
+    let expect = 4.0 * std::f64::consts::PI * 1f64.sinh().powi(2);
+    assert!((i - expect).abs() < 1e-12, "{i}");
+    let plain = emit(std::path::Path::new("scenes/thesis-appendix-a.hsc"));
+    assert!(plain["settings"]["fov"].is_null() && plain["settings"]["fog"].is_null());
+}

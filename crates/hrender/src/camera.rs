@@ -1,7 +1,6 @@
 //! The canonical frame (SPEC 3.1): the isometry that puts the eye at the
 //! origin, the view direction along +z and up along +y.
 
-use hgeom::glam::{DMat3, DVec3};
 use hgeom::{Isometry, Point};
 use hscene_lang::ir::Camera;
 
@@ -28,24 +27,11 @@ impl CanonicalCamera {
     /// to the right, y upwards, z away from the eye (the convention of the
     /// thesis and of POV-Ray).
     pub fn new(camera: &Camera) -> Result<CanonicalCamera, RenderError> {
-        let to_origin = Isometry::transvection_from_origin(camera.eye).inverse();
-        let target = to_origin.apply(&camera.target);
-        let view = target.coords().normalize();
-        let up_hint = match &camera.up {
-            Some(u) => to_origin.apply(u).coords(),
-            None => to_origin.apply_direction(&camera.eye, DVec3::Y),
-        };
-        let up = (up_hint - view * up_hint.dot(view)).normalize();
-        let right = up.cross(view);
-        if !(view.is_finite() && up.is_finite() && right.is_finite()) {
-            return Err(RenderError::DegenerateCamera);
-        }
-        // Rows right, up, view: maps those vectors to x, y, z.
-        let rotation = DMat3::from_cols(right, up, view).transpose();
-        let to_canonical = Isometry::orthogonal_unchecked(rotation).compose(&to_origin);
+        let (to_canonical, view_distance) =
+            hscene_lang::view::canonical_frame(camera).ok_or(RenderError::DegenerateCamera)?;
         Ok(CanonicalCamera {
             to_canonical,
-            view_distance: target.coords().length(),
+            view_distance,
         })
     }
 
@@ -58,6 +44,7 @@ impl CanonicalCamera {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use hgeom::glam::DVec3;
 
     fn p(x: f64, y: f64, z: f64) -> Point {
         Point::from_coords(DVec3::new(x, y, z)).unwrap()

@@ -23,7 +23,7 @@ pub enum RenderError {
     #[error("invalid render option: {0}")]
     InvalidOption(String),
     /// The output extension is not one we write.
-    #[error("unsupported output format `{0}`: use .png, .tif or .tiff")]
+    #[error("unsupported output format `{0}`: use .png, .tif, .tiff or .exr")]
     UnsupportedFormat(String),
     /// The requested sample depth does not exist for the output format.
     #[error("{format} output does not support {depth}")]

@@ -47,28 +47,23 @@ impl Image {
         self.pixels[y as usize * self.width as usize + x as usize]
     }
 
-    /// Samples clamped to `[0, 1]` and quantised to 8 bits.
-    pub fn to_rgb8(&self) -> Vec<u8> {
-        self.pixels
-            .iter()
-            .flat_map(|p| p.map(|c| quantize(c, 255.0) as u8))
-            .collect()
-    }
-
-    /// Samples clamped to `[0, 1]` and quantised to 16 bits.
-    pub fn to_rgb16(&self) -> Vec<u16> {
-        self.pixels
-            .iter()
-            .flat_map(|p| p.map(|c| quantize(c, 65535.0) as u16))
-            .collect()
+    /// Every sample multiplied by `2^ev`, for an exposure chosen after the
+    /// render ([`crate::auto_exposure`] keeps the result finite). A sample
+    /// the product would take past f32 becomes the largest finite f32.
+    pub fn expose(&mut self, ev: f64) {
+        let k = ev.exp2();
+        for c in self.pixels.iter_mut().flatten() {
+            let v = (f64::from(*c) * k) as f32;
+            *c = if v.is_finite() {
+                v
+            } else {
+                f32::MAX.copysign(v)
+            };
+        }
     }
 
     /// The unclamped samples, interleaved.
     pub fn to_rgb32f(&self) -> Vec<f32> {
         self.pixels.iter().flatten().copied().collect()
     }
-}
-
-fn quantize(c: f32, max: f32) -> f32 {
-    (c.clamp(0.0, 1.0) * max).round()
 }

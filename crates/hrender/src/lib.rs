@@ -21,7 +21,11 @@
 mod bvh;
 mod camera;
 mod color;
+mod display;
 mod error;
+mod exposure;
+mod fog;
+mod icc;
 mod image;
 mod nets;
 mod output;
@@ -33,14 +37,17 @@ use std::collections::HashMap;
 
 use hgeom::Ray;
 use hscene_lang::ir::{Net, Resolution, Scene, Window};
+use hscene_lang::view::FovError;
 use rayon::prelude::*;
 
 pub use camera::CanonicalCamera;
 pub use color::Color;
+pub use display::{DisplayTransform, Encoding, ToneMap, srgb_decode, srgb_encode};
 pub use error::RenderError;
+pub use exposure::{AUTO_KEY, DARK_LEVEL, auto_exposure, is_almost_black, luminance};
 pub use image::Image;
 pub use nets::{PixelNet, Sample};
-pub use output::{ImageFormat, SampleDepth, write_image};
+pub use output::{ImageFormat, SampleDepth, check_depth, write_image, write_image_with};
 pub use sampling::{SampleStream, Sampler};
 pub use scene::{Nearest, PreparedScene};
 pub use tracer::{TraceStats, Tracer};
@@ -326,6 +333,28 @@ impl Frame<'_> {
     }
 }
 
+/// The scene's window, or the one its `fov` gives for this net, resolution
+/// and view-plane distance.
+fn view_window(
+    scene: &Scene,
+    net: Net,
+    resolution: Resolution,
+    view_distance: f64,
+) -> Result<Window, RenderError> {
+    let Some(fov) = scene.settings.fov else {
+        return Ok(scene.settings.window);
+    };
+    hscene_lang::view::fov_window(fov, net, resolution, view_distance).map_err(|e| {
+        RenderError::InvalidOption(match e {
+            FovError::OutOfRange => format!("fov must be between 0 and 180 degrees, not {fov}"),
+            FovError::BeyondViewPlane(max) => format!(
+                "net {} cannot show fov = {fov}: the view h-plane spans less than {max:.1} degrees from the eye",
+                net.index()
+            ),
+        })
+    })
+}
+
 /// Net-3 nodes already traced for the current row, by lattice index.
 #[derive(Default)]
 struct NodeCache(HashMap<(i64, i64), (Color, bool)>);
@@ -360,10 +389,16 @@ fn render_in_pool(
             region.width, region.height, region.x, region.y
         )));
     }
+    let window = view_window(
+        scene,
+        net,
+        Resolution { width, height },
+        camera.view_distance,
+    )?;
     let frame = Frame {
         net,
-        pixel_net: PixelNet::new(net, scene.settings.window, camera.view_distance),
-        window: scene.settings.window,
+        pixel_net: PixelNet::new(net, window, camera.view_distance),
+        window,
         width,
         height,
         sampler: Sampler::new(

@@ -1,4 +1,8 @@
-//! Writing images: PNG and TIFF, always atomically.
+//! Writing images: PNG, TIFF and OpenEXR, always atomically.
+//!
+//! Integer samples pass through the [`DisplayTransform`] (tone curve, sRGB
+//! or linear encoding) and carry the matching colour tag; float samples
+//! (float TIFF, OpenEXR) keep the linear, unclamped radiance.
 //!
 //! The encoder writes to a temporary file in the destination's directory,
 //! which is flushed and then renamed over the destination. A failure at any
@@ -10,7 +14,9 @@ use std::path::Path;
 
 use tiff::encoder::{TiffEncoder, colortype};
 
+use crate::display::{DisplayTransform, Encoding};
 use crate::error::RenderError;
+use crate::icc;
 use crate::image::Image;
 
 /// Sample format of the written file.
@@ -21,7 +27,7 @@ pub enum SampleDepth {
     Eight,
     /// 16-bit integer, clamped (PNG or TIFF).
     Sixteen,
-    /// 32-bit float, unclamped high dynamic range (TIFF only).
+    /// 32-bit float, unclamped high dynamic range (TIFF or OpenEXR).
     Float32,
 }
 
@@ -42,6 +48,8 @@ pub enum ImageFormat {
     Png,
     /// `.tif` or `.tiff`
     Tiff,
+    /// `.exr` (OpenEXR, always 32-bit float)
+    Exr,
 }
 
 impl ImageFormat {
@@ -55,20 +63,58 @@ impl ImageFormat {
         match ext.as_str() {
             "png" => Ok(ImageFormat::Png),
             "tif" | "tiff" => Ok(ImageFormat::Tiff),
+            "exr" => Ok(ImageFormat::Exr),
             _ => Err(RenderError::UnsupportedFormat(path.display().to_string())),
+        }
+    }
+
+    /// The sample depth a format gets when none is asked for: 8-bit for
+    /// PNG and TIFF, float for OpenEXR (its only depth here).
+    pub fn default_depth(self) -> SampleDepth {
+        match self {
+            ImageFormat::Png | ImageFormat::Tiff => SampleDepth::Eight,
+            ImageFormat::Exr => SampleDepth::Float32,
         }
     }
 }
 
-/// Write the image to `path` in the format its extension names.
+/// Write the image to `path` in the format its extension names, integer
+/// samples sRGB-encoded and clipped (the default [`DisplayTransform`]).
 pub fn write_image(image: &Image, path: &Path, depth: SampleDepth) -> Result<(), RenderError> {
-    let format = ImageFormat::from_path(path)?;
-    if format == ImageFormat::Png && depth == SampleDepth::Float32 {
+    write_image_with(image, path, depth, DisplayTransform::default())
+}
+
+/// Refuse a depth the format cannot store.
+pub fn check_depth(format: ImageFormat, depth: SampleDepth) -> Result<(), RenderError> {
+    let refused = match format {
+        ImageFormat::Png => depth == SampleDepth::Float32,
+        ImageFormat::Tiff => false,
+        ImageFormat::Exr => depth != SampleDepth::Float32,
+    };
+    if refused {
+        let name = match format {
+            ImageFormat::Png => "PNG",
+            ImageFormat::Tiff => "TIFF",
+            ImageFormat::Exr => "OpenEXR",
+        };
         return Err(RenderError::UnsupportedDepth {
-            format: "PNG",
+            format: name,
             depth: depth.describe(),
         });
     }
+    Ok(())
+}
+
+/// Write the image to `path` in the format its extension names; integer
+/// samples go through `display`.
+pub fn write_image_with(
+    image: &Image,
+    path: &Path,
+    depth: SampleDepth,
+    display: DisplayTransform,
+) -> Result<(), RenderError> {
+    let format = ImageFormat::from_path(path)?;
+    check_depth(format, depth)?;
     let io = |source| RenderError::Io {
         path: path.to_path_buf(),
         source,
@@ -85,8 +131,9 @@ pub fn write_image(image: &Image, path: &Path, depth: SampleDepth) -> Result<(),
     {
         let mut out = BufWriter::new(tmp.as_file());
         match format {
-            ImageFormat::Png => encode_png(image, depth, &mut out, path)?,
-            ImageFormat::Tiff => encode_tiff(image, depth, &mut out, path)?,
+            ImageFormat::Png => encode_png(image, depth, display, &mut out, path)?,
+            ImageFormat::Tiff => encode_tiff(image, depth, display, &mut out, path)?,
+            ImageFormat::Exr => encode_exr(image, &mut out, path)?,
         }
         out.flush().map_err(io)?;
     }
@@ -116,41 +163,68 @@ fn default_permissions() -> Option<std::fs::Permissions> {
     None
 }
 
+/// PNG through the png crate, which writes the `sRGB` chunk for
+/// sRGB-encoded samples; linear samples go untagged, as the thesis wrote
+/// them.
 fn encode_png(
     image: &Image,
     depth: SampleDepth,
+    display: DisplayTransform,
     out: &mut BufWriter<&File>,
     path: &Path,
 ) -> Result<(), RenderError> {
-    use image::ImageEncoder;
-    use image::codecs::png::PngEncoder;
-    let enc = PngEncoder::new(out);
-    let (w, h) = (image.width(), image.height());
-    let result = match depth {
-        SampleDepth::Eight => {
-            enc.write_image(&image.to_rgb8(), w, h, image::ExtendedColorType::Rgb8)
-        }
-        _ => {
-            // The image crate takes 16-bit samples in native byte order and
-            // writes them big-endian itself, as PNG requires; converting to
-            // big-endian here would swap them twice on little-endian hosts.
-            let bytes: Vec<u8> = image
-                .to_rgb16()
-                .iter()
-                .flat_map(|v| v.to_ne_bytes())
-                .collect();
-            enc.write_image(&bytes, w, h, image::ExtendedColorType::Rgb16)
-        }
-    };
-    result.map_err(|e| RenderError::Encode {
+    let err = |e: png::EncodingError| RenderError::Encode {
         path: path.to_path_buf(),
         message: e.to_string(),
-    })
+    };
+    let mut enc = png::Encoder::new(out, image.width(), image.height());
+    enc.set_color(png::ColorType::Rgb);
+    if display.encoding == Encoding::Srgb {
+        enc.set_source_srgb(png::SrgbRenderingIntent::Perceptual);
+    }
+    let bytes = match depth {
+        SampleDepth::Eight => {
+            enc.set_depth(png::BitDepth::Eight);
+            display.to_rgb8(image.pixels())
+        }
+        _ => {
+            enc.set_depth(png::BitDepth::Sixteen);
+            // PNG stores 16-bit samples big-endian.
+            display
+                .to_rgb16(image.pixels())
+                .iter()
+                .flat_map(|v| v.to_be_bytes())
+                .collect()
+        }
+    };
+    let mut writer = enc.write_header().map_err(err)?;
+    writer.write_image_data(&bytes).map_err(err)?;
+    writer.finish().map_err(err)
 }
 
+/// An ICC profile as a TIFF value of type UNDEFINED, as tag 34675 wants.
+struct IccBytes<'a>(&'a [u8]);
+
+impl tiff::encoder::TiffValue for IccBytes<'_> {
+    const BYTE_LEN: u8 = 1;
+    const FIELD_TYPE: tiff::tags::Type = tiff::tags::Type::UNDEFINED;
+
+    fn count(&self) -> usize {
+        self.0.len()
+    }
+
+    fn data(&self) -> std::borrow::Cow<'_, [u8]> {
+        std::borrow::Cow::Borrowed(self.0)
+    }
+}
+
+/// TIFF, `PhotometricInterpretation = RGB`: sRGB-encoded integer samples
+/// embed the sRGB ICC profile, float samples a linear one with the same
+/// primaries; linear integer samples go untagged.
 fn encode_tiff(
     image: &Image,
     depth: SampleDepth,
+    display: DisplayTransform,
     out: &mut BufWriter<&File>,
     path: &Path,
 ) -> Result<(), RenderError> {
@@ -160,12 +234,51 @@ fn encode_tiff(
     };
     let mut enc = TiffEncoder::new(out).map_err(err)?;
     let (w, h) = (image.width(), image.height());
-    match depth {
-        SampleDepth::Eight => enc.write_image::<colortype::RGB8>(w, h, &image.to_rgb8()),
-        SampleDepth::Sixteen => enc.write_image::<colortype::RGB16>(w, h, &image.to_rgb16()),
-        SampleDepth::Float32 => enc.write_image::<colortype::RGB32Float>(w, h, &image.to_rgb32f()),
+    let profile = match (depth, display.encoding) {
+        (SampleDepth::Float32, _) => Some(icc::rgb_profile(icc::Curve::Linear)),
+        (_, Encoding::Srgb) => Some(icc::rgb_profile(icc::Curve::Srgb)),
+        (_, Encoding::Linear) => None,
+    };
+    macro_rules! write {
+        ($colour:ty, $data:expr) => {{
+            let mut img = enc.new_image::<$colour>(w, h).map_err(err)?;
+            if let Some(p) = &profile {
+                img.encoder()
+                    .write_tag(tiff::tags::Tag::IccProfile, IccBytes(p))
+                    .map_err(err)?;
+            }
+            img.write_data(&$data).map_err(err)
+        }};
     }
-    .map_err(err)
+    match depth {
+        SampleDepth::Eight => write!(colortype::RGB8, display.to_rgb8(image.pixels())),
+        SampleDepth::Sixteen => write!(colortype::RGB16, display.to_rgb16(image.pixels())),
+        SampleDepth::Float32 => write!(colortype::RGB32Float, image.to_rgb32f()),
+    }
+}
+
+/// OpenEXR: 32-bit float RGB, linear and unclamped, ZIP-compressed (lossless);
+/// without a `chromaticities` attribute, which by the OpenEXR convention
+/// means Rec. 709 primaries and D65 white, those of sRGB.
+fn encode_exr(image: &Image, out: &mut BufWriter<&File>, path: &Path) -> Result<(), RenderError> {
+    use exr::prelude::{SpecificChannels, Vec2, WritableImage};
+    let (w, h) = (image.width() as usize, image.height() as usize);
+    let channels = SpecificChannels::rgb(|p: Vec2<usize>| {
+        let [r, g, b] = image.get(p.x() as u32, p.y() as u32);
+        (r, g, b)
+    });
+    let exr_image = exr::image::Image::from_encoded_channels(
+        (w, h),
+        exr::image::Encoding::SMALL_LOSSLESS,
+        channels,
+    );
+    exr_image
+        .write()
+        .to_buffered(out)
+        .map_err(|e| RenderError::Encode {
+            path: path.to_path_buf(),
+            message: e.to_string(),
+        })
 }
 
 #[cfg(test)]
@@ -185,13 +298,106 @@ mod tests {
             ("c.tif", SampleDepth::Eight),
             ("d.tiff", SampleDepth::Sixteen),
             ("e.tif", SampleDepth::Float32),
+            ("f.exr", SampleDepth::Float32),
         ] {
             let path = dir.path().join(name);
             write_image(&tiny(), &path, depth).unwrap();
             assert!(std::fs::metadata(&path).unwrap().len() > 0, "{name}");
         }
         // Only the outputs remain: no temporary files left behind.
-        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 5);
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 6);
+    }
+
+    /// The chunk types of a PNG file, in order.
+    fn png_chunks(bytes: &[u8]) -> Vec<String> {
+        let mut at = 8;
+        let mut names = Vec::new();
+        while at + 8 <= bytes.len() {
+            let len = u32::from_be_bytes(bytes[at..at + 4].try_into().unwrap()) as usize;
+            names.push(String::from_utf8_lossy(&bytes[at + 4..at + 8]).into_owned());
+            at += 12 + len;
+        }
+        names
+    }
+
+    /// sRGB-encoded PNGs carry the `sRGB` chunk (before the image data);
+    /// linear ones carry no colour chunk at all.
+    #[test]
+    fn png_is_tagged_srgb_unless_linear() {
+        let dir = tempfile::tempdir().unwrap();
+        for depth in [SampleDepth::Eight, SampleDepth::Sixteen] {
+            let path = dir.path().join("srgb.png");
+            write_image(&tiny(), &path, depth).unwrap();
+            let chunks = png_chunks(&std::fs::read(&path).unwrap());
+            let srgb = chunks
+                .iter()
+                .position(|c| c == "sRGB")
+                .expect("an sRGB chunk");
+            assert!(srgb < chunks.iter().position(|c| c == "IDAT").unwrap());
+            let linear = DisplayTransform {
+                encoding: Encoding::Linear,
+                ..DisplayTransform::default()
+            };
+            write_image_with(&tiny(), &path, depth, linear).unwrap();
+            let chunks = png_chunks(&std::fs::read(&path).unwrap());
+            for tag in ["sRGB", "gAMA", "cHRM", "iCCP"] {
+                assert!(!chunks.iter().any(|c| c == tag), "{tag} in {chunks:?}");
+            }
+        }
+    }
+
+    /// The TIFF carries `PhotometricInterpretation = RGB` and the sRGB ICC
+    /// profile (tag 34675), the float TIFF the linear one.
+    #[test]
+    fn tiff_embeds_the_icc_profile() {
+        use tiff::tags::Tag;
+        let dir = tempfile::tempdir().unwrap();
+        for (depth, curve) in [
+            (SampleDepth::Eight, icc::Curve::Srgb),
+            (SampleDepth::Sixteen, icc::Curve::Srgb),
+            (SampleDepth::Float32, icc::Curve::Linear),
+        ] {
+            let path = dir.path().join("t.tif");
+            write_image(&tiny(), &path, depth).unwrap();
+            let mut dec = tiff::decoder::Decoder::new(File::open(&path).unwrap()).unwrap();
+            assert_eq!(
+                dec.get_tag_u32(Tag::PhotometricInterpretation).unwrap(),
+                2,
+                "RGB"
+            );
+            let profile = dec.get_tag_u8_vec(Tag::IccProfile).unwrap();
+            assert_eq!(profile, icc::rgb_profile(curve));
+        }
+    }
+
+    /// The OpenEXR file reads back, with the exr crate, as the same
+    /// unclamped float samples.
+    #[test]
+    fn exr_reads_back_exactly() {
+        use exr::prelude::{ReadChannels, ReadLayers};
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("hdr.exr");
+        write_image(&tiny(), &path, SampleDepth::Float32).unwrap();
+        let read = exr::prelude::read()
+            .no_deep_data()
+            .largest_resolution_level()
+            .rgb_channels(
+                |size, _| vec![[0.0f32; 3]; size.width() * size.height()],
+                |pixels: &mut Vec<[f32; 3]>, p, (r, g, b): (f32, f32, f32)| {
+                    pixels[p.y() * 2 + p.x()] = [r, g, b];
+                },
+            )
+            .first_valid_layer()
+            .all_attributes()
+            .from_file(&path)
+            .unwrap();
+        assert_eq!(read.layer_data.size.width(), 2);
+        assert_eq!(read.layer_data.channel_data.pixels, tiny().pixels());
+        // An 8-bit EXR does not exist.
+        assert!(matches!(
+            write_image(&tiny(), &path, SampleDepth::Eight),
+            Err(RenderError::UnsupportedDepth { .. })
+        ));
     }
 
     #[cfg(unix)]

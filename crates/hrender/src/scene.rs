@@ -9,7 +9,7 @@ use hgeom::{
     ConvexPolygon, HCylinder, HPlane, HSphere, Hit, Horosphere, Isometry, Point, Ray, Rod,
     TriangleMesh, Vertex,
 };
-use hscene_lang::ir::{self, Material, Rgb, Scene};
+use hscene_lang::ir::{self, Fog, Material, Rgb, Scene};
 
 use crate::bvh::{Bound, Bvh, Step};
 use crate::error::RenderError;
@@ -424,6 +424,8 @@ pub struct PreparedScene {
     pub materials: Vec<Material>,
     /// Background colour.
     pub background: Rgb,
+    /// Fog along every ray segment (`docs/rendering.md#fog`).
+    pub fog: Option<Fog>,
     /// Ambient light.
     pub ambient: Rgb,
     /// Maximum bounce depth.
@@ -515,6 +517,7 @@ impl PreparedScene {
             lights,
             materials: scene.materials.clone(),
             background: scene.settings.background,
+            fog: scene.settings.fog,
             ambient: scene.settings.ambient,
             max_depth: scene.settings.recursion_depth,
             accel: Accel::new(&bounds),

@@ -11,6 +11,7 @@ use hgeom::{Hit, Point, Ray, fermi_coordinates};
 use hscene_lang::ir::{Material, Pattern, Rgb, Texture};
 
 use crate::color::Color;
+use crate::fog::through_fog;
 use crate::sampling::SampleStream;
 use crate::scene::{Nearest, PreparedLight, PreparedObject, PreparedScene};
 
@@ -98,7 +99,7 @@ impl<'s> Tracer<'s> {
     ) -> Color {
         stats.rays += 1;
         let (hit, index) = match self.scene.nearest(ray, T_MIN) {
-            Nearest::Miss => return self.scene.background.into(),
+            Nearest::Miss => return self.leaving(),
             Nearest::Failure => {
                 stats.failures += 1;
                 return self.scene.background.into();
@@ -179,7 +180,19 @@ impl<'s> Tracer<'s> {
                     * m.transmission;
             }
         }
-        color
+        match &self.scene.fog {
+            Some(fog) => through_fog(fog, color, hit.t),
+            None => color,
+        }
+    }
+
+    /// What a ray that leaves the scene brings: the fog colour in fog,
+    /// else the background.
+    fn leaving(&self) -> Color {
+        match &self.scene.fog {
+            Some(fog) => fog.color.into(),
+            None => self.scene.background.into(),
+        }
     }
 
     /// What `light`, emitting from `from` as a point source, gives the

@@ -8,7 +8,10 @@ use hgeom::glam::DVec3;
 use hgeom::{
     ConvexPolygon, HPlane, Horosphere, Isometry, Platonic, Point, Polyhedron, Rod, Vertex,
 };
-use hrender::{Image, RenderOptions, Rendered, SampleDepth, render, write_image};
+use hrender::{
+    DisplayTransform, Encoding, Image, RenderOptions, Rendered, SampleDepth, ToneMap, render,
+    write_image, write_image_with,
+};
 use hscene_lang::ir::{Net, Rgb, Scene, Shape};
 
 fn run(scene: &Scene, options: &RenderOptions) -> Rendered {
@@ -464,19 +467,30 @@ fn failed_writes_leave_existing_files_alone() {
     assert_eq!(names.len(), 2, "no temporary files: {names:?}");
 }
 
-/// 8- and 16-bit PNG/TIFF quantise to the nearest level; float TIFF keeps
-/// the HDR values, read back exactly.
+/// 8- and 16-bit PNG/TIFF quantise to the nearest level, of the sRGB
+/// curve by default, of linear values with `Encoding::Linear`; float TIFF
+/// keeps the HDR values, read back exactly.
 #[test]
 fn output_depths_round_trip() {
     let dir = tempfile::tempdir().unwrap();
     let img = Image::from_pixels(2, 1, vec![[0.25, 0.5, 3.0], [-1.0, 1.0, 0.125]]);
+    let srgb = dir.path().join("srgb.png");
+    write_image(&img, &srgb, SampleDepth::Eight).unwrap();
+    let decoded = image::open(&srgb).unwrap().into_rgb8();
+    // sRGB: 0.25 -> 0.5371 -> 137, 0.5 -> 0.7354 -> 188, 0.125 -> 0.3896 -> 99.
+    assert_eq!(decoded.get_pixel(0, 0).0, [137, 188, 255]);
+    assert_eq!(decoded.get_pixel(1, 0).0, [0, 255, 99]);
+    let linear = DisplayTransform {
+        tone: ToneMap::Clip,
+        encoding: Encoding::Linear,
+    };
     let png16 = dir.path().join("a.png");
-    write_image(&img, &png16, SampleDepth::Sixteen).unwrap();
+    write_image_with(&img, &png16, SampleDepth::Sixteen, linear).unwrap();
     let decoded = image::open(&png16).unwrap().into_rgb16();
     assert_eq!(decoded.get_pixel(0, 0).0, [16384, 32768, 65535]);
     assert_eq!(decoded.get_pixel(1, 0).0, [0, 65535, 8192]);
     let png8 = dir.path().join("b.png");
-    write_image(&img, &png8, SampleDepth::Eight).unwrap();
+    write_image_with(&img, &png8, SampleDepth::Eight, linear).unwrap();
     let decoded = image::open(&png8).unwrap().into_rgb8();
     assert_eq!(decoded.get_pixel(0, 0).0, [64, 128, 255]);
     let tif = dir.path().join("c.tif");

@@ -112,6 +112,25 @@ pub struct Settings {
     /// Number of animation frames (`frames = N`); 1 for a still scene.
     /// Invariant: at least 1.
     pub frames: u32,
+    /// Horizontal field of view in degrees (`fov = DEGREES`); when set it
+    /// replaces `window`, which the renderer then derives for the net and
+    /// resolution it uses ([`crate::view::fov_window`]). Invariant: in
+    /// `(0, 180)`.
+    pub fov: Option<f64>,
+    /// Fog (`fog_distance = D`, `fog_color`), if any.
+    pub fog: Option<Fog>,
+}
+
+/// Fog: the radiance carried along a ray segment of hyperbolic length `s`
+/// is mixed towards `color` with weight `1 - exp(-s / distance)`; a ray that
+/// leaves the scene takes `color`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Fog {
+    /// The colour far things fade to.
+    pub color: Rgb,
+    /// The hyperbolic length over which radiance keeps `1/e` of itself.
+    /// Invariant: positive and finite.
+    pub distance: f64,
 }
 
 /// The observer.

@@ -25,6 +25,7 @@ pub mod symbols;
 pub mod syntax;
 pub mod tokens;
 pub mod vocabulary;
+pub mod view;
 
 pub use diagnostic::{Code, Diagnostic, LineIndex, Severity, Span};
 pub use format::{FormatError, format};

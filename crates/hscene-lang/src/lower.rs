@@ -8,8 +8,11 @@
 //! past errors so one run reports as much as it can.
 
 mod figures;
+mod light_strength;
 mod moves;
 pub(crate) mod objects;
+mod view_globals;
+mod view_lint;
 
 use std::collections::HashMap;
 use std::path::Path;
@@ -91,6 +94,8 @@ fn default_settings() -> Settings {
         ambient: Rgb::new(0.1, 0.1, 0.1),
         samples: 1,
         frames: 1,
+        fov: None,
+        fog: None,
     }
 }
 
@@ -132,6 +137,7 @@ struct Lowerer<'d> {
     moves: Vec<moves::PendingMove>,
     settings: Settings,
     camera_parts: CameraParts,
+    view: view_globals::ViewParts,
     /// A point reference failed (undefined, or something else where a point
     /// was needed, or text was skipped): the point meant may look unused.
     point_ref_failed: bool,
@@ -202,6 +208,7 @@ pub(crate) fn lower(
         moves: Vec::new(),
         settings: default_settings(),
         camera_parts: CameraParts::default(),
+        view: view_globals::ViewParts::default(),
         point_ref_failed: file.incomplete,
         material_ref_failed: file.incomplete,
     };
@@ -232,8 +239,10 @@ pub(crate) fn lower(
     }
     let mut camera = lw.camera();
     lw.apply_moves(&mut camera);
+    lw.settle_view(camera.as_ref());
     if let Some(camera) = &camera {
         lw.lint_scene(camera);
+        lw.lint_outside_view(camera);
     }
     lw.mark_failed_references(file);
     lw.lint_unused();
@@ -724,7 +733,11 @@ impl Lowerer<'_> {
             match clause {
                 Clause::Value(v) if options.is_empty() => values.push(v),
                 Clause::Assign { key, .. }
-                    if values.len() < 3 && !matches!(key.text.as_str(), "radius" | "samples") =>
+                    if values.len() < 3
+                        && !matches!(
+                            key.text.as_str(),
+                            "radius" | "samples" | light_strength::KEY
+                        ) =>
                 {
                     self.report(
                         Diagnostic::new(
@@ -764,8 +777,9 @@ impl Lowerer<'_> {
         let position = self.point_arg(values[0], "a light");
         let diffuse = self.rgb(values[1]);
         let specular = self.rgb(values[2]);
+        let (options, strength) = self.take_irradiance_at(options);
         let (radius, samples) = self.light_options(&options)?;
-        let (position, diffuse, specular) = (position?, diffuse?, specular?);
+        let (position, (diffuse, specular)) = (position?, strength.apply(diffuse?, specular?)?);
         self.lights.push((
             Light {
                 position,
@@ -832,8 +846,8 @@ impl Lowerer<'_> {
                         )
                         .with_help(did_you_mean(
                             other,
-                            &["radius", "samples"],
-                            "the options of a light are `radius` (hyperbolic, 0 for a point light) and `samples` (shadow rays per shading point)",
+                            &["radius", "samples", light_strength::KEY],
+                            "the options of a light are `radius` (hyperbolic, 0 for a point light), `samples` (shadow rays per shading point) and `irradiance_at` (the colours are the irradiance at this distance)",
                         )),
                     );
                 }
@@ -922,6 +936,7 @@ impl Lowerer<'_> {
                 }
             }
             "window_size" => {
+                self.view.window_span = Some(value.span());
                 if let Some(v) = self.tuple_of_numbers(value, 2, "window_size = (width, height)") {
                     if v.iter().all(|x| *x > 0.0) {
                         self.settings.window = Window {
@@ -962,6 +977,7 @@ impl Lowerer<'_> {
                 self.settings.background = self.rgb(value).unwrap_or(self.settings.background)
             }
             "ambient" => self.settings.ambient = self.rgb(value).unwrap_or(self.settings.ambient),
+            k if view_globals::VIEW_KEYS.contains(&k) => self.view_global(key, value),
             "from" | "eye" | "to" | "up" => {
                 let role = match key.text.as_str() {
                     "to" => "the view target",
@@ -1934,6 +1950,9 @@ pub(crate) const GLOBAL_KEYS: &[&str] = &[
     "up",
     "background",
     "ambient",
+    "fov",
+    "fog_color",
+    "fog_distance",
 ];
 
 pub(crate) const MATERIAL_FIELDS: &[&str] = &[
@@ -1974,7 +1993,7 @@ fn section_meant(name: &str) -> Option<&'static str> {
         .copied()
 }
 
-const GLOBAL_KEYS_HELP: &str = "globals are recursion_depth, resolution, window_size, net_type, samples, frames, from, to, up, background, ambient";
+const GLOBAL_KEYS_HELP: &str = "globals are recursion_depth, resolution, window_size, fov, net_type, samples, frames, from, to, up, background, ambient, fog_color, fog_distance";
 
 /// A reference as written, shortened like [`quote`] (without the backticks).
 fn reference_text(r: &Reference) -> String {

@@ -290,6 +290,8 @@ fn appendix_a_compiles_with_one_warning() {
             ambient: Rgb::new(0.1, 0.1, 0.1),
             samples: 1,
             frames: 1,
+            fov: None,
+            fog: None,
         }
     );
     assert_eq!(scene.camera.eye, Point::ORIGIN);
@@ -562,6 +564,8 @@ fn empty_file_gets_the_documented_defaults() {
                 ambient: Rgb::new(0.1, 0.1, 0.1),
                 samples: 1,
                 frames: 1,
+                fov: None,
+                fog: None,
             }
         );
         assert_eq!(

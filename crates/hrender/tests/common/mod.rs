@@ -101,6 +101,8 @@ pub fn settings(net: Net, size: u32, window: f64) -> Settings {
         ambient: Rgb::new(0.2, 0.2, 0.2),
         samples: 1,
         frames: 1,
+        fov: None,
+        fog: None,
     }
 }
 

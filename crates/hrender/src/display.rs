@@ -1,0 +1,175 @@
+//! The display transform of integer outputs: linear radiance (already
+//! exposed) -> tone curve -> transfer function -> 8- or 16-bit levels.
+//!
+//! Radiance stays linear everywhere inside the renderer and in the float
+//! outputs; only 8- and 16-bit files pass through this module.
+//! `docs/rendering.md#colour` documents the curves and the choices.
+
+/// How radiance above 1 is brought into the displayable range.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum ToneMap {
+    /// Clamp each channel to `[0, 1]` (the thesis's behaviour).
+    #[default]
+    Clip,
+    /// Reinhard's `x / (1 + x)` per channel: never saturates, compresses
+    /// highlights, darkens mid-tones (0.214 becomes 0.176).
+    Reinhard,
+    /// Narkowicz's fit of the ACES filmic curve (RRT + ODT) per channel:
+    /// with `y = 0.6 x` (his scale, which puts the fit on the reference
+    /// curve), `y (2.51 y + 0.03) / (y (2.43 y + 0.59) + 0.14)` clamped to
+    /// `[0, 1]`: a toe, more contrast in the mid-tones, a soft shoulder that
+    /// reaches white near `x = 12.1`.
+    Aces,
+}
+
+impl ToneMap {
+    /// The tone curve at `x >= 0`, in `[0, 1]`. Negative radiance (which
+    /// only an exposure of a signed test image can produce) maps to 0.
+    #[inline]
+    pub fn apply(self, x: f64) -> f64 {
+        let x = x.max(0.0);
+        match self {
+            ToneMap::Clip => x.min(1.0),
+            ToneMap::Reinhard => x / (1.0 + x),
+            ToneMap::Aces => {
+                let y = 0.6 * x;
+                (y * (2.51 * y + 0.03) / (y * (2.43 * y + 0.59) + 0.14)).min(1.0)
+            }
+        }
+    }
+}
+
+/// The transfer function between (tone-mapped) linear values and the
+/// stored levels.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Encoding {
+    /// The sRGB transfer function (IEC 61966-2-1), and the file is tagged
+    /// sRGB: what every viewer expects of an untagged or sRGB image.
+    #[default]
+    Srgb,
+    /// Linear values stored as they are, untagged: the thesis's convention
+    /// (the image looks darker than the scene's radiance suggests).
+    Linear,
+}
+
+/// The sRGB opto-electronic transfer function, exact: `12.92 x` below
+/// `0.0031308`, `1.055 x^(1/2.4) - 0.055` above; `x` in `[0, 1]`.
+#[inline]
+pub fn srgb_encode(x: f64) -> f64 {
+    if x <= 0.003_130_8 {
+        12.92 * x
+    } else {
+        1.055 * x.powf(1.0 / 2.4) - 0.055
+    }
+}
+
+/// The inverse of [`srgb_encode`]: stored value -> linear.
+#[inline]
+pub fn srgb_decode(v: f64) -> f64 {
+    if v <= 0.040_45 {
+        v / 12.92
+    } else {
+        ((v + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+/// Tone curve and transfer function together.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct DisplayTransform {
+    /// The tone curve.
+    pub tone: ToneMap,
+    /// The transfer function (and the colour tag written with it).
+    pub encoding: Encoding,
+}
+
+impl DisplayTransform {
+    /// A linear channel value -> the stored value in `[0, 1]`.
+    #[inline]
+    pub fn apply(self, c: f32) -> f64 {
+        let t = self.tone.apply(f64::from(c));
+        match self.encoding {
+            Encoding::Srgb => srgb_encode(t),
+            Encoding::Linear => t,
+        }
+    }
+
+    /// Every sample through the transform, quantised to 8 bits (nearest
+    /// level), interleaved RGB.
+    pub fn to_rgb8(self, pixels: &[[f32; 3]]) -> Vec<u8> {
+        pixels
+            .iter()
+            .flat_map(|p| p.map(|c| (self.apply(c) * 255.0).round() as u8))
+            .collect()
+    }
+
+    /// Every sample through the transform, quantised to 16 bits.
+    pub fn to_rgb16(self, pixels: &[[f32; 3]]) -> Vec<u16> {
+        pixels
+            .iter()
+            .flat_map(|p| p.map(|c| (self.apply(c) * 65535.0).round() as u16))
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Mid-grey: sRGB stores 50 % at linear `((0.5 + 0.055) / 1.055)^2.4
+    /// = 0.214041`, which is stored as 128 of 255 (127.5 rounded half up);
+    /// the linear value of level 128 itself, 0.215861, too. The commonly
+    /// quoted "0.214" is that point to three digits and sits 0.5e-4 below
+    /// it: 127.489 of 255, stored as 127. The ends stay where they are.
+    #[test]
+    fn srgb_puts_mid_grey_at_128() {
+        let d = DisplayTransform::default();
+        let half = srgb_decode(0.5);
+        assert!((half - 0.214_041).abs() < 1e-6);
+        assert!((srgb_encode(half) * 255.0 - 127.5).abs() < 1e-9);
+        assert_eq!(d.to_rgb8(&[[0.214_05, 0.0, 1.0]]), vec![128, 0, 255]);
+        assert_eq!(
+            d.to_rgb8(&[[0.215_861, 0.2141, 0.214]]),
+            vec![128, 128, 127]
+        );
+        assert_eq!(d.to_rgb8(&[[0.5, 0.18, 2.0]]), vec![188, 118, 255]);
+        let k = 0.003_130_8;
+        assert!((12.92 * k - (1.055 * f64::powf(k, 1.0 / 2.4) - 0.055)).abs() < 1e-7);
+        for i in 0..=100 {
+            let x = f64::from(i) / 100.0;
+            assert!((srgb_decode(srgb_encode(x)) - x).abs() < 1e-12, "{x}");
+        }
+    }
+
+    #[test]
+    fn linear_encoding_stores_values_as_they_are() {
+        let d = DisplayTransform {
+            tone: ToneMap::Clip,
+            encoding: Encoding::Linear,
+        };
+        assert_eq!(d.to_rgb8(&[[0.25, 0.5, 3.0]]), vec![64, 128, 255]);
+        assert_eq!(d.to_rgb16(&[[0.25, -1.0, 0.125]]), vec![16384, 0, 8192]);
+    }
+
+    /// The tone curves: monotone, 0 at 0, in [0, 1]; Reinhard reaches 1/2
+    /// at 1 and never saturates; ACES saturates near 11 and keeps black.
+    #[test]
+    fn tone_curves() {
+        for t in [ToneMap::Clip, ToneMap::Reinhard, ToneMap::Aces] {
+            assert_eq!(t.apply(0.0), 0.0);
+            assert_eq!(t.apply(-3.0), 0.0);
+            let mut last = 0.0;
+            for i in 1..2000 {
+                let y = t.apply(f64::from(i) * 0.01);
+                assert!(y >= last && y <= 1.0, "{t:?} at {i}");
+                last = y;
+            }
+        }
+        assert_eq!(ToneMap::Reinhard.apply(1.0), 0.5);
+        assert!(ToneMap::Reinhard.apply(1e6) < 1.0);
+        assert_eq!(ToneMap::Aces.apply(12.5), 1.0);
+        assert!(ToneMap::Aces.apply(11.5) < 1.0);
+        // Mid-grey 0.18 comes out near 0.14: the filmic curve is darker
+        // than clip in the mid-tones and keeps the highlights.
+        assert!((ToneMap::Aces.apply(0.18) - 0.1402).abs() < 1e-3);
+    }
+}

@@ -1,0 +1,129 @@
+//! Automatic exposure from the image's log-average luminance (Reinhard et
+//! al. 2002, "Photographic tone reproduction"): the exposure that maps the
+//! geometric mean of the luminance onto the key value, a photographer's
+//! 18 % mid-grey.
+
+use crate::image::Image;
+
+/// The luminance the log-average is mapped to.
+pub const AUTO_KEY: f64 = 0.18;
+
+/// Added to each luminance before its logarithm, so that a nearly black
+/// pixel cannot drag the mean to minus infinity.
+const LOG_FLOOR: f64 = 1e-4;
+
+/// Rec. 709 / sRGB luminance weights of linear R, G, B.
+const LUMA: [f64; 3] = [0.2126, 0.7152, 0.0722];
+
+/// The luminance of a linear pixel; negative channels count as 0.
+#[inline]
+pub fn luminance(p: [f32; 3]) -> f64 {
+    (0..3).map(|k| LUMA[k] * f64::from(p[k]).max(0.0)).sum()
+}
+
+/// The exposure in stops that maps the log-average luminance of the
+/// pixels that see anything (luminance above 0: the black of an empty
+/// background would otherwise decide the exposure of a small object) to
+/// [`AUTO_KEY`]: `log2(0.18 / exp(mean(ln(1e-4 + Y))))`. An image with no
+/// such pixel gets 0. The result never scales a finite sample past the
+/// largest f32 and stays within +-[`crate::MAX_EXPOSURE`].
+pub fn auto_exposure(image: &Image) -> f64 {
+    let (mut sum, mut n, mut peak) = (0.0, 0u64, 0.0f64);
+    for p in image.pixels() {
+        let y = luminance(*p);
+        if y > 0.0 {
+            sum += (LOG_FLOOR + y).ln();
+            n += 1;
+        }
+        peak = p.iter().fold(peak, |m, c| m.max(f64::from(c.abs())));
+    }
+    if n == 0 {
+        return 0.0;
+    }
+    let average = (sum / n as f64).exp();
+    let ev = (AUTO_KEY / average).log2();
+    // Keep a stop of headroom below f32::MAX for the brightest sample.
+    let ceiling = (f64::from(f32::MAX) / peak).log2() - 1.0;
+    ev.min(ceiling)
+        .clamp(-crate::MAX_EXPOSURE, crate::MAX_EXPOSURE)
+}
+
+/// A pixel is dark when every channel, as stored by `display`, is below
+/// this (level 16 of 255: black to most eyes on most screens).
+pub const DARK_LEVEL: f64 = 16.0 / 255.0;
+
+/// True when the image would look almost black: fewer than 1 % of its
+/// pixels have a channel at or above [`DARK_LEVEL`] once tone-mapped and
+/// encoded by `display`. A cheap, documented criterion for the render
+/// warning; an empty image is not "almost black".
+pub fn is_almost_black(image: &Image, display: crate::DisplayTransform) -> bool {
+    let lit = image
+        .pixels()
+        .iter()
+        .filter(|p| p.iter().any(|&c| display.apply(c) >= DARK_LEVEL))
+        .count();
+    !image.pixels().is_empty() && lit * 100 < image.pixels().len()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A uniform image of luminance Y gets `log2(0.18 / (1e-4 + Y))`; black
+    /// pixels do not count; an all-black image keeps its exposure.
+    #[test]
+    fn maps_the_log_average_to_the_key() {
+        let grey = |v: f32| [v, v, v];
+        let img = Image::from_pixels(3, 1, vec![grey(0.02), grey(0.0), grey(0.02)]);
+        let expect = (0.18f64 / (1e-4 + luminance(grey(0.02)))).log2();
+        assert!((auto_exposure(&img) - expect).abs() < 1e-12);
+        // Geometric, not arithmetic, mean: 0.01 and 1.0 average to 0.1.
+        let img = Image::from_pixels(2, 1, vec![grey(0.01 - 1e-4), grey(1.0 - 1e-4)]);
+        let y = luminance(grey(1.0));
+        assert!((y - 1.0).abs() < 1e-6);
+        assert!((auto_exposure(&img) - (0.18f64 / 0.1).log2()).abs() < 1e-5);
+        assert_eq!(
+            auto_exposure(&Image::from_pixels(1, 1, vec![grey(0.0)])),
+            0.0
+        );
+    }
+
+    /// sRGB level 16 is linear 0.0052; under 1 % of pixels above it is
+    /// "almost black", and so is the same image stored linearly (level 16
+    /// there is 0.063).
+    #[test]
+    fn almost_black_needs_one_percent_of_visible_pixels() {
+        let srgb = crate::DisplayTransform::default();
+        let mut px = vec![[0.004f32; 3]; 200];
+        assert!(is_almost_black(
+            &Image::from_pixels(200, 1, px.clone()),
+            srgb
+        ));
+        px[0] = [0.006, 0.0, 0.0];
+        assert!(is_almost_black(
+            &Image::from_pixels(200, 1, px.clone()),
+            srgb
+        ));
+        px[1] = [0.0, 0.0, 0.5];
+        assert!(!is_almost_black(
+            &Image::from_pixels(200, 1, px.clone()),
+            srgb
+        ));
+        let linear = crate::DisplayTransform {
+            encoding: crate::Encoding::Linear,
+            ..srgb
+        };
+        assert!(is_almost_black(
+            &Image::from_pixels(200, 1, vec![[0.05; 3]; 200]),
+            linear
+        ));
+        assert!(!is_almost_black(&Image::from_pixels(0, 0, vec![]), srgb));
+    }
+
+    #[test]
+    fn never_overflows_f32() {
+        let img = Image::from_pixels(2, 1, vec![[1e-30, 0.0, 0.0], [3e37, 0.0, 0.0]]);
+        let ev = auto_exposure(&img);
+        assert!((3e37 * ev.exp2()) < f64::from(f32::MAX));
+    }
+}

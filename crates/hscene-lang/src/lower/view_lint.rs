@@ -1,0 +1,113 @@
+//! The lint for objects outside every view ray of net 0 (`HSC1005`, which
+//! also covers objects behind the eye).
+//!
+//! In the camera's canonical frame (eye at the origin, view +z, up +y) net
+//! 0 looks along the diameters through the window `[-w/2, w/2] x [-h/2,
+//! h/2]` at height `f` (the ball coordinate of the target); the rays fill
+//! the cone bounded by four h-planes through the eye, which in the ball
+//! are flat planes through the origin, with inward Euclidean normals
+//! `(-f, 0, w/2)`, `(f, 0, w/2)`, `(0, -f, h/2)` and `(0, f, h/2)`. An
+//! object entirely on the outer side of one of them meets no view ray. The
+//! other nets look through the view h-plane, whose visible part is not
+//! bounded by four planes through the eye; they keep the behind-the-eye
+//! lint only. Lights are not linted: lights are meant to shine from
+//! outside the picture.
+
+use hgeom::HPlane;
+use hgeom::glam::{DVec3, DVec4};
+
+use super::{Lowerer, entirely_behind};
+use crate::diagnostic::{Code, Diagnostic};
+use crate::ir::{Camera, Net};
+use crate::view::{canonical_frame, fov_window};
+
+impl Lowerer<'_> {
+    /// Report each object statement whose objects all lie outside the view
+    /// of net 0 (and not behind the eye, which the scene lint reports).
+    pub(super) fn lint_outside_view(&mut self, camera: &Camera) {
+        if self.settings.net != Net::Euclidean {
+            return;
+        }
+        let Some((to_canonical, f)) = canonical_frame(camera) else {
+            return;
+        };
+        let to_world = to_canonical.inverse();
+        let window = match self.settings.fov {
+            Some(fov) => match fov_window(fov, Net::Euclidean, self.settings.resolution, f) {
+                Ok(w) => w,
+                Err(_) => return,
+            },
+            None => self.settings.window,
+        };
+        let (hw, hh) = (window.width / 2.0, window.height / 2.0);
+        let sides: Vec<HPlane> = [
+            DVec3::new(-f, 0.0, hw),
+            DVec3::new(f, 0.0, hw),
+            DVec3::new(0.0, -f, hh),
+            DVec3::new(0.0, f, hh),
+        ]
+        .into_iter()
+        .filter_map(|m| HPlane::from_normal(DVec4::new(m.x, m.y, m.z, 0.0)).ok())
+        .map(|p| p.transformed(&to_world))
+        .collect();
+        let behind = HPlane::orthogonal_at(&camera.eye, &camera.target).ok();
+        let mut found = Vec::new();
+        let mut i = 0;
+        while i < self.objects.len() {
+            let span = self.objects[i].1;
+            let end = i + self.objects[i..]
+                .iter()
+                .take_while(|(_, s)| *s == span)
+                .count();
+            let group = &self.objects[i..end];
+            i = end;
+            let all_behind =
+                |plane: &HPlane| group.iter().all(|(o, _)| entirely_behind(&o.shape, plane));
+            if behind.as_ref().is_some_and(all_behind) {
+                continue;
+            }
+            if sides.iter().any(all_behind) {
+                found.push(
+                    Diagnostic::new(
+                        Code::ObjectBehindEye,
+                        span,
+                        "this object is outside the window: no view ray reaches it",
+                    )
+                    .with_help("widen `fov` or `window_size`, aim `to` at it, or remove it"),
+                );
+            }
+        }
+        self.diags.extend(found);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::diagnostic::Code;
+
+    /// Lints of a scene with one sphere of radius 0.05 at ball point
+    /// `(x, 0, 0.3)`, seen through `fov = 30` (half-angle 15 degrees).
+    fn outside(x: f64, net: u32) -> bool {
+        let src = format!(
+            "Globals {{ net_type = {net}; fov = 30; }} BRDFs {{ diffuse = (1, 1, 1); }}
+             Objects {{ Sphere ({x}, 0, 0.3), 0.05, #1; }}"
+        );
+        crate::compile(&src)
+            .diagnostics
+            .iter()
+            .any(|d| d.code == Code::ObjectBehindEye)
+    }
+
+    /// The sphere's centre direction makes `atan(x / 0.3)` with the axis;
+    /// its angular radius there is about 8 degrees. Inside the window, or
+    /// straddling its edge, it is not linted; wholly beyond, it is. Nets
+    /// 1-4 are not linted for the window.
+    #[test]
+    fn only_objects_wholly_outside_the_window_are_linted() {
+        assert!(!outside(0.0, 0));
+        assert!(!outside(0.1, 0)); // 18 degrees: straddles the edge
+        assert!(outside(0.3, 0)); // 45 degrees
+        assert!(outside(-0.3, 0));
+        assert!(!outside(0.3, 2));
+    }
+}

@@ -1,0 +1,195 @@
+//! The field of view (`fov = DEGREES`): the window on the view plane that
+//! each pixel net needs for a given horizontal opening angle at the eye.
+//!
+//! In the camera's canonical frame the eye is the origin and the view
+//! plane passes through the target at Euclidean (ball) distance `f =
+//! tanh(d/2)` on the +z axis, `d` the hyperbolic distance from eye to
+//! target. `fov` fixes the angle at the eye between the primary rays
+//! through the left and right ends of the middle row; the window's height
+//! follows from the resolution's aspect ratio (`h = w H / W`), so pixels are
+//! square at the centre. `docs/rendering.md#field-of-view` derives the
+//! formulas below.
+
+use hgeom::Isometry;
+use hgeom::glam::{DMat3, DVec3};
+
+use crate::ir::{Camera, Net, Resolution, Window};
+
+/// The camera's canonical frame: the isometry that takes the eye to the
+/// origin, the view direction to +z and up to +y, and the view-plane
+/// distance `f` there (`tanh(d/2)`, `d` the eye-target distance). First the
+/// transvection taking the eye to the origin; there the view direction is
+/// the diameter towards the moved target, and up is the direction towards
+/// the moved up point, made orthogonal to it (default: the image of the
+/// ball's `+y` at the eye). Then the rotation taking (right, up, view) to
+/// (x, y, z), with right = up x view: screen x grows to the right, y
+/// upwards, z away from the eye. `None` when view and up are degenerate.
+pub fn canonical_frame(camera: &Camera) -> Option<(Isometry, f64)> {
+    let to_origin = Isometry::transvection_from_origin(camera.eye).inverse();
+    let target = to_origin.apply(&camera.target);
+    let view = target.coords().normalize();
+    let up_hint = match &camera.up {
+        Some(u) => to_origin.apply(u).coords(),
+        None => to_origin.apply_direction(&camera.eye, DVec3::Y),
+    };
+    let up = (up_hint - view * up_hint.dot(view)).normalize();
+    let right = up.cross(view);
+    if !(view.is_finite() && up.is_finite() && right.is_finite()) {
+        return None;
+    }
+    // Rows right, up, view: maps those vectors to x, y, z.
+    let rotation = DMat3::from_cols(right, up, view).transpose();
+    let to_canonical = Isometry::orthogonal_unchecked(rotation).compose(&to_origin);
+    Some((to_canonical, target.coords().length()))
+}
+
+/// Why a field of view gives no window.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum FovError {
+    /// Not strictly between 0 and 180 degrees.
+    OutOfRange,
+    /// Nets 1-4 sample the view h-plane, which the eye sees under less
+    /// than 180 degrees: twice the angle of parallelism of the distance to
+    /// the target, `2 atan(1 / sinh d)`. Holds that limit in degrees.
+    BeyondViewPlane(f64),
+}
+
+/// The widest field of view, in degrees (exclusive), that `net` can show
+/// with the view plane at Euclidean distance `f` from the eye: 180 for net
+/// 0, `2 atan((1 - f^2) / (2 f)) = 2 atan(1 / sinh d)` for the others.
+pub fn max_fov_degrees(net: Net, view_distance: f64) -> f64 {
+    match net {
+        Net::Euclidean => 180.0,
+        _ => {
+            let f = view_distance;
+            2.0 * ((1.0 - f) * (1.0 + f)).atan2(2.0 * f).to_degrees()
+        }
+    }
+}
+
+/// The window of `net` whose middle row spans `fov_degrees` at the eye.
+///
+/// - Net 0 (points `(w sx, h sy, f)`): `w = 2 f tan(fov/2)`.
+/// - Nets 2 and 4 (disk points `u` moved by `T_f`): the ray through the
+///   moved point `(u, 0, 0)` makes `tan(theta) = (1 - f^2) u / (f (1 + u^2))`
+///   with the axis, so `u` is the smaller root of `f t u^2 - (1 - f^2) u + f t
+///   = 0` with `t = tan(fov/2)`, written `u = 2 f t / ((1 - f^2) + sqrt((1 -
+///   f^2)^2 - 4 f^2 t^2))` to avoid cancellation; `w = 2 u`.
+/// - Nets 1 and 3 (hyperbolic distances `a` along the disk): the middle
+///   row's end lies at disk point `u = tanh(a/2)`, so `w = 2 a = 4 atanh u`.
+pub fn fov_window(
+    fov_degrees: f64,
+    net: Net,
+    resolution: Resolution,
+    view_distance: f64,
+) -> Result<Window, FovError> {
+    if !(fov_degrees > 0.0 && fov_degrees < 180.0) {
+        return Err(FovError::OutOfRange);
+    }
+    let t = (fov_degrees.to_radians() / 2.0).tan();
+    let f = view_distance;
+    let width = match net {
+        Net::Euclidean => 2.0 * f * t,
+        _ => {
+            let max = max_fov_degrees(net, f);
+            let one_minus = (1.0 - f) * (1.0 + f);
+            let disc = one_minus * one_minus - 4.0 * f * f * t * t;
+            if !(fov_degrees < max && disc > 0.0) {
+                return Err(FovError::BeyondViewPlane(max));
+            }
+            let u = 2.0 * f * t / (one_minus + disc.sqrt());
+            match net {
+                Net::GreatDisk | Net::EquidistantInterpolated => 2.0 * u,
+                _ => 4.0 * u.atanh(),
+            }
+        }
+    };
+    let aspect = f64::from(resolution.height) / f64::from(resolution.width);
+    Ok(Window {
+        width,
+        height: width * aspect,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const SQUARE: Resolution = Resolution {
+        width: 100,
+        height: 100,
+    };
+
+    /// `fov = 60` at `f = 0.1` is the window 0.11547 of net 0; a wide
+    /// resolution keeps the pixels square.
+    #[test]
+    fn net0_window_is_2f_tan() {
+        let w = fov_window(60.0, Net::Euclidean, SQUARE, 0.1).unwrap();
+        assert!((w.width - 0.115_470_053_837_925_15).abs() < 1e-15);
+        assert_eq!(w.width, w.height);
+        let wide = Resolution {
+            width: 200,
+            height: 100,
+        };
+        let w = fov_window(90.0, Net::Euclidean, wide, 0.25).unwrap();
+        assert!((w.width - 0.5).abs() < 1e-15 && (w.height - 0.25).abs() < 1e-15);
+        assert_eq!(
+            fov_window(180.0, Net::Euclidean, SQUARE, 0.1),
+            Err(FovError::OutOfRange)
+        );
+        assert_eq!(
+            fov_window(0.0, Net::Euclidean, SQUARE, 0.1),
+            Err(FovError::OutOfRange)
+        );
+    }
+
+    /// The edge ray of the middle row, as the net maps it, makes exactly
+    /// fov/2 with the axis: checked against the Möbius translation written
+    /// out for nets 2 and 4, and through `u = tanh(a/2)` for nets 1 and 3.
+    #[test]
+    fn disk_nets_open_the_asked_angle() {
+        for f in [0.05, 0.1, 0.3, 0.6] {
+            for fov in [10.0, 45.0, 60.0, 90.0] {
+                for net in [
+                    Net::GreatDisk,
+                    Net::EquidistantInterpolated,
+                    Net::HyperparallelLines,
+                    Net::Equidistant,
+                ] {
+                    let Ok(w) = fov_window(fov, net, SQUARE, f) else {
+                        assert!(fov >= max_fov_degrees(net, f), "{net:?} {f} {fov}");
+                        continue;
+                    };
+                    let u = match net {
+                        Net::GreatDisk | Net::EquidistantInterpolated => w.width / 2.0,
+                        _ => (w.width / 4.0).tanh(),
+                    };
+                    // T_f(u, 0, 0) = ((1 - f^2) u, 0, (1 + u^2) f) / (1 + f^2 u^2).
+                    let angle = ((1.0 - f * f) * u).atan2((1.0 + u * u) * f);
+                    assert!(
+                        (angle.to_degrees() - fov / 2.0).abs() < 1e-10,
+                        "{net:?} {f} {fov}"
+                    );
+                }
+            }
+        }
+    }
+
+    /// The limit is twice the angle of parallelism of the target distance:
+    /// `d = 2 atanh f`, `Pi(d) = atan(1 / sinh d)`.
+    #[test]
+    fn disk_nets_stop_at_the_angle_of_parallelism() {
+        let f: f64 = 0.3;
+        let d = 2.0 * f.atanh();
+        let limit = 2.0 * (1.0 / d.sinh()).atan().to_degrees();
+        assert!((max_fov_degrees(Net::GreatDisk, f) - limit).abs() < 1e-10);
+        assert_eq!(
+            fov_window(limit + 1.0, Net::GreatDisk, SQUARE, f),
+            Err(FovError::BeyondViewPlane(max_fov_degrees(
+                Net::GreatDisk,
+                f
+            )))
+        );
+        assert!(fov_window(limit - 1.0, Net::Equidistant, SQUARE, f).is_ok());
+    }
+}
