@@ -8,6 +8,7 @@
 
 use glam::{DMat3, DQuat, DVec3};
 
+use crate::accurate::one_minus_norm_sq;
 use crate::point::{IdealPoint, Point};
 
 /// `u (+) v` on raw coordinates with their gaps; returns the sum and its gap.
@@ -32,10 +33,33 @@ use crate::point::{IdealPoint, Point};
 /// and of the result, which is all that rounded coordinates can resolve.
 #[inline]
 pub fn add_raw(u: DVec3, gap_u: f64, v: DVec3, gap_v: f64) -> (DVec3, f64) {
-    let s = (u + v).length_squared();
+    let sum = u + v;
+    let s = sum.length_squared();
     let d = s + gap_u * gap_v;
-    let coords = ((s + gap_u) * u + gap_u * v) / d;
-    (coords, gap_u * gap_v / d)
+    // `(s + gap_u) u + gap_u v` written as `s u + gap_u (u + v)`: when `u`
+    // and `v` nearly annihilate far out, `u + v` is formed exactly
+    // (Sterbenz) and small, where `gap_u u + gap_u v` rounds both products
+    // first and then cancels.
+    let coords = (s * u + gap_u * sum) / d;
+    let gap = gap_u * gap_v / d;
+    // A sum near the origin (`gap >= 1/2`) and nearer to it than an input
+    // (cancellation) has coordinates that carry the inputs' coordinate
+    // rounding, larger there than an ulp of the result, while the identity's
+    // gap carries their gaps: the two disagree, and the hyperboloid image
+    // `(2x, 2 - g)/g` would leave the sheet by `4 (g - g')/g^2`. Near the
+    // origin the gap of the coordinates themselves is accurate to a few ulps
+    // and keeps the point consistent. Farther out the identity's gap is the
+    // point's extra precision and stays: recomputing it there doubled the
+    // drift of long compositions (docs/geometry.md, section 4.1). The factor
+    // 2 keeps a sum with an input at the origin (`D` rounding just below 1)
+    // on the identity.
+    if gap_v > 0.0 && gap >= 0.5 && gap > 2.0 * gap_u.min(gap_v) {
+        let own = one_minus_norm_sq(coords);
+        if own > 0.0 {
+            return (coords, own);
+        }
+    }
+    (coords, gap)
 }
 
 /// Möbius addition of two h-points. The result's gap is exact up to rounding,

@@ -10,8 +10,15 @@ use crate::error::RenderError;
 /// The camera in canonical form.
 #[derive(Clone, Copy, Debug)]
 pub struct CanonicalCamera {
-    /// Maps the scene into the canonical frame.
+    /// Maps the scene into the canonical frame: `stages[1] ∘ stages[0]`.
     pub to_canonical: Isometry,
+    /// The same map in two stages, to be applied in turn: the transvection
+    /// taking the eye to the origin, then the rotation. A far point moved by
+    /// the composite `R(-eye) (+) R P` is rotated first, and the rotation's
+    /// rounding of the two far vectors survives their cancellation; in
+    /// stages, `(-eye) (+) P` cancels the exactly stored coordinates and
+    /// only the near result is rotated (`docs/geometry.md`, section 16.5).
+    pub stages: [Isometry; 2],
     /// Euclidean distance from the origin to the view plane in the canonical
     /// frame, `tanh(d/2)` for the hyperbolic eye-target distance `d`.
     pub view_distance: f64,
@@ -41,17 +48,24 @@ impl CanonicalCamera {
             return Err(RenderError::DegenerateCamera);
         }
         // Rows right, up, view: maps those vectors to x, y, z.
-        let rotation = DMat3::from_cols(right, up, view).transpose();
-        let to_canonical = Isometry::orthogonal(rotation).compose(&to_origin);
+        let rotation = Isometry::orthogonal(DMat3::from_cols(right, up, view).transpose());
+        let to_canonical = rotation.compose(&to_origin);
         Ok(CanonicalCamera {
             to_canonical,
+            stages: [to_origin, rotation],
             view_distance: target.coords().length(),
         })
     }
 
     /// The view target's image, on the +z axis.
     pub fn target_in_frame(&self, camera: &Camera) -> Point {
-        self.to_canonical.apply(&camera.target)
+        self.apply(&camera.target)
+    }
+
+    /// A point's image in the canonical frame, stage by stage (see
+    /// [`CanonicalCamera::stages`]).
+    pub fn apply(&self, p: &Point) -> Point {
+        self.stages.iter().fold(*p, |p, iso| iso.apply(&p))
     }
 }
 

@@ -303,7 +303,7 @@ fn render_in_pool(
     progress: &(dyn Fn(u32) + Sync),
 ) -> Result<Rendered, RenderError> {
     let camera = CanonicalCamera::new(&scene.camera)?;
-    let prepared = PreparedScene::new(scene, &camera.to_canonical)?;
+    let prepared = PreparedScene::for_camera(scene, &camera)?;
     let net = options.net.unwrap_or(scene.settings.net);
     let Resolution { width, height } = options.resolution.unwrap_or(scene.settings.resolution);
     if width == 0 || height == 0 {

@@ -12,6 +12,7 @@ use hgeom::{
 use hscene_lang::ir::{self, Material, Rgb, Scene};
 
 use crate::bvh::{Bound, Bvh, Step};
+use crate::camera::CanonicalCamera;
 use crate::error::RenderError;
 
 /// Padding of bounds around polygons. A polygon accepts hits slightly
@@ -275,7 +276,34 @@ fn rod_pieces(r: &Rod) -> Vec<Bound> {
 }
 
 impl Primitive {
-    fn from_shape(shape: &ir::Shape, iso: &Isometry) -> Primitive {
+    /// The shape moved by each of `stages` in turn.
+    fn from_shape(shape: &ir::Shape, stages: &[Isometry]) -> Primitive {
+        let mut prim = Primitive::moved(shape, &stages[0]);
+        for iso in &stages[1..] {
+            prim = prim.transformed(iso);
+        }
+        prim
+    }
+
+    fn transformed(&self, iso: &Isometry) -> Primitive {
+        match self {
+            Primitive::Sphere(s) => Primitive::Sphere(s.transformed(iso)),
+            Primitive::Polygon(p) => Primitive::Polygon(p.transformed(iso)),
+            Primitive::Polyhedron(p) => Primitive::Polyhedron(Composite::new(
+                p.parts.iter().map(|f| f.transformed(iso)).collect(),
+            )),
+            Primitive::Plane(p) => Primitive::Plane(p.transformed(iso)),
+            Primitive::Rod(r) => Primitive::Rod(Box::new(r.transformed(iso))),
+            Primitive::Cylinder(c) => Primitive::Cylinder(Box::new(c.transformed(iso))),
+            Primitive::Horosphere(h) => Primitive::Horosphere(h.transformed(iso)),
+            Primitive::Wireframe(w) => Primitive::Wireframe(Composite::new(
+                w.parts.iter().map(|r| r.transformed(iso)).collect(),
+            )),
+            Primitive::Mesh(m) => Primitive::Mesh(Box::new(m.transformed(iso))),
+        }
+    }
+
+    fn moved(shape: &ir::Shape, iso: &Isometry) -> Primitive {
         match shape {
             ir::Shape::Sphere(s) => Primitive::Sphere(s.transformed(iso)),
             ir::Shape::Polygon(p) => Primitive::Polygon(p.transformed(iso)),
@@ -440,6 +468,21 @@ impl PreparedScene {
     /// that f64 cannot represent it in the eye's frame: that is reported,
     /// not silently dropped.
     pub fn new(scene: &Scene, to_canonical: &Isometry) -> Result<PreparedScene, RenderError> {
+        PreparedScene::staged(scene, std::slice::from_ref(to_canonical))
+    }
+
+    /// [`PreparedScene::new`] for a camera: everything is moved by the
+    /// camera's [`stages`](CanonicalCamera::stages) in turn, which keeps far
+    /// scenes exact to the rounding of their input.
+    pub fn for_camera(
+        scene: &Scene,
+        camera: &CanonicalCamera,
+    ) -> Result<PreparedScene, RenderError> {
+        PreparedScene::staged(scene, &camera.stages)
+    }
+
+    /// Move everything by each of `stages` in turn (at least one).
+    fn staged(scene: &Scene, stages: &[Isometry]) -> Result<PreparedScene, RenderError> {
         let mut objects = Vec::with_capacity(scene.objects.len());
         for (index, o) in scene.objects.iter().enumerate() {
             if o.material.0 >= scene.materials.len() {
@@ -450,7 +493,7 @@ impl PreparedScene {
                     scene.materials.len()
                 )));
             }
-            let primitive = Primitive::from_shape(&o.shape, to_canonical);
+            let primitive = Primitive::from_shape(&o.shape, stages);
             if !primitive.is_representable() {
                 return Err(RenderError::OutOfRange {
                     what: format!("object {}", index + 1),
@@ -459,7 +502,10 @@ impl PreparedScene {
             objects.push(PreparedObject {
                 primitive,
                 material: o.material.0,
-                to_local: to_canonical.compose(&o.frame).inverse(),
+                to_local: stages
+                    .iter()
+                    .fold(o.frame, |f, iso| iso.compose(&f))
+                    .inverse(),
             });
         }
         for (index, m) in scene.materials.iter().enumerate() {
@@ -488,8 +534,9 @@ impl PreparedScene {
             let out_of_range = || RenderError::OutOfRange {
                 what: format!("light {}", index + 1),
             };
-            let p = to_canonical
-                .try_apply(&l.position)
+            let p = stages
+                .iter()
+                .try_fold(l.position, |p, iso| iso.try_apply(&p))
                 .map_err(|_| out_of_range())?;
             // Every point of an area light must be placeable too.
             if l.radius > 0.0 {
