@@ -88,7 +88,7 @@ impl ConvexPolygon {
         let l = to_anchor.to_lorentz();
         Ok(ConvexPolygon {
             vertices,
-            plane: HPlane::from_normal(l * local.plane.normal())?,
+            plane: local.plane.transformed(&to_anchor),
             edges: local.edges.iter().map(|e| l * *e).collect(),
         })
     }

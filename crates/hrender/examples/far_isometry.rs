@@ -58,6 +58,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let mut row = format!("| {d} |");
         let mut warnings_ok = true;
         let mut failures = 0;
+        let mut errors = std::collections::BTreeSet::new();
         for (net, (base, _)) in bases.iter().enumerate() {
             let mut worst = (f64::INFINITY, DVec3::Z);
             for &dir in &directions {
@@ -65,7 +66,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 warnings_ok &= case.same_warnings;
                 failures += case.failures;
                 if let Some(e) = &case.error {
-                    eprintln!("d {d}, net {net}: {e}");
+                    errors.insert(e.clone());
                 }
                 if case.share < worst.0 {
                     worst = (case.share, dir);
@@ -94,6 +95,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
         row.push_str(&format!(" {} | {failures} |", if warnings_ok { "yes" } else { "no" }));
         println!("{row}");
+        for e in errors {
+            eprintln!("  d {d}: {e}");
+        }
     }
     Ok(())
 }

@@ -107,7 +107,13 @@ pub fn warnings(source: &str) -> Vec<(usize, String)> {
 pub fn render_source(source: &str) -> Result<(Image, u64), String> {
     let compiled = hscene_lang::compile(source);
     let Some(scene) = compiled.scene else {
-        return Err(format!("{:?}", compiled.diagnostics));
+        let errors: Vec<&str> = compiled
+            .diagnostics
+            .iter()
+            .filter(|d| d.is_error())
+            .map(|d| d.message.as_str())
+            .collect();
+        return Err(errors.join("; "));
     };
     let out = render(&scene, &RenderOptions::default(), &|_| {}).map_err(|e| e.to_string())?;
     Ok((out.image, out.stats.numeric_failures))
