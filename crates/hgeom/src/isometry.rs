@@ -10,7 +10,8 @@
 use glam::{DMat3, DMat4, DVec3};
 
 use crate::error::GeomError;
-use crate::mobius::{self, add_raw};
+use crate::accurate::one_minus_norm_sq;
+use crate::mobius::{self, add_raw, add_raw_consistent};
 use crate::plane::HPlane;
 use crate::point::{IdealPoint, Point, Vertex};
 use crate::segment::Segment;
@@ -270,7 +271,7 @@ impl Isometry {
             // the rounding of `D = |Qx|^2 + gap` (an ulp of a far point).
             return Point::new_unchecked(self.q * p.coords(), p.gap());
         }
-        let (c, g) = add_raw(self.a.coords(), self.a.gap(), self.q * p.coords(), p.gap());
+        let (c, g) = add_raw_consistent(self.a.coords(), self.a.gap(), self.q * p.coords(), p.gap());
         Point::new_unchecked(c, g)
     }
 
@@ -351,7 +352,18 @@ impl Isometry {
     /// composed Lorentz matrices drifting 100 to 10^6 times faster than the
     /// gyrovector form, which is why they are derived, never stored.
     pub fn to_lorentz(&self) -> DMat4 {
-        let a = self.a.to_hyperboloid();
+        // The boost is a Lorentz matrix exactly when `A` is on the sheet:
+        // derive `A` from the coordinates and their own gap. A composed
+        // translation part that cancelled near the origin keeps the gap of
+        // the identity (its extra precision, see `mobius::add_raw_consistent`),
+        // which disagrees with its coordinates there; far out the matrix is
+        // only good to `eps |M|^2` either way.
+        let own = one_minus_norm_sq(self.a.coords());
+        let a = if own > 0.0 {
+            Point::new_unchecked(self.a.coords(), own).to_hyperboloid()
+        } else {
+            self.a.to_hyperboloid()
+        };
         let s = a.truncate();
         let k = 1.0 / (1.0 + a.w);
         let boost = DMat4::from_cols(
