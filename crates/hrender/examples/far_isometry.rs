@@ -51,7 +51,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .collect::<Result<_, _>>()?;
     if let Some(dir) = &out {
         for (net, (img, _)) in bases.iter().enumerate() {
-            write_image(img, &dir.join(format!("far-net{net}-base.png")), SampleDepth::Eight)?;
+            write_image(
+                img,
+                &dir.join(format!("far-net{net}-base.png")),
+                SampleDepth::Eight,
+            )?;
         }
     }
     for &d in &distances {
@@ -65,6 +69,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 let case = far_case(net, size, d, dir, base);
                 warnings_ok &= case.same_warnings;
                 failures += case.failures;
+                for (line, w) in &case.moved_warnings {
+                    errors.insert(format!("net {net}: line {line}: {w}"));
+                }
                 if let Some(e) = &case.error {
                     errors.insert(e.clone());
                 }
@@ -77,7 +84,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 let src = far_scene_source(net, size, d, worst.1);
                 std::fs::write(dir.join(format!("far-net{net}-d{d}.hsc")), &src)?;
                 if let Ok((img, _)) = render_source(&src) {
-                    write_image(&img, &dir.join(format!("far-net{net}-d{d}.png")), SampleDepth::Eight)?;
+                    write_image(
+                        &img,
+                        &dir.join(format!("far-net{net}-d{d}.png")),
+                        SampleDepth::Eight,
+                    )?;
                     // Where they differ, white: to see which object moved.
                     let diff: Vec<[f32; 3]> = img
                         .pixels()
@@ -89,14 +100,25 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                         })
                         .collect();
                     let diff = hrender::Image::from_pixels(img.width(), img.height(), diff);
-                    write_image(&diff, &dir.join(format!("far-net{net}-d{d}-diff.png")), SampleDepth::Eight)?;
+                    write_image(
+                        &diff,
+                        &dir.join(format!("far-net{net}-d{d}-diff.png")),
+                        SampleDepth::Eight,
+                    )?;
                 }
             }
         }
-        row.push_str(&format!(" {} | {failures} |", if warnings_ok { "yes" } else { "no" }));
+        row.push_str(&format!(
+            " {} | {failures} |",
+            if warnings_ok { "yes" } else { "no" }
+        ));
         println!("{row}");
         for e in errors {
             eprintln!("  d {d}: {e}");
+        }
+        if !warnings_ok {
+            let base = common::far::warnings(&far_scene_source(0, size, 0.0, DVec3::Z));
+            eprintln!("  unmoved warnings: {base:?}");
         }
     }
     Ok(())

@@ -131,6 +131,8 @@ pub struct FarCase {
     pub share: f64,
     /// The warnings of `check` are the same, line for line.
     pub same_warnings: bool,
+    /// The moved scene's warnings where they differ (empty otherwise).
+    pub moved_warnings: Vec<(usize, String)>,
     /// Numeric failures counted by the moved render.
     pub failures: u64,
     /// Why the moved scene gave no image, if it did not.
@@ -142,17 +144,21 @@ pub struct FarCase {
 pub fn far_case(net: usize, size: u32, d: f64, dir: DVec3, base: &Image) -> FarCase {
     let base_src = far_scene_source(net, size, 0.0, dir);
     let src = far_scene_source(net, size, d, dir);
-    let same_warnings = warnings(&base_src) == warnings(&src);
+    let moved = warnings(&src);
+    let same_warnings = warnings(&base_src) == moved;
+    let moved_warnings = if same_warnings { Vec::new() } else { moved };
     match render_source(&src) {
         Ok((img, failures)) => FarCase {
             share: super::agreement(base, &img, 1.0 / 255.0),
             same_warnings,
+            moved_warnings,
             failures,
             error: None,
         },
         Err(e) => FarCase {
             share: 0.0,
             same_warnings,
+            moved_warnings,
             failures: 0,
             error: Some(e),
         },
