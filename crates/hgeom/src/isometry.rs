@@ -9,8 +9,8 @@
 
 use glam::{DMat3, DMat4, DVec3};
 
-use crate::error::GeomError;
 use crate::accurate::one_minus_norm_sq;
+use crate::error::GeomError;
 use crate::mobius::{self, add_raw, add_raw_consistent};
 use crate::plane::HPlane;
 use crate::point::{IdealPoint, Point, Vertex};
@@ -271,7 +271,8 @@ impl Isometry {
             // the rounding of `D = |Qx|^2 + gap` (an ulp of a far point).
             return Point::new_unchecked(self.q * p.coords(), p.gap());
         }
-        let (c, g) = add_raw_consistent(self.a.coords(), self.a.gap(), self.q * p.coords(), p.gap());
+        let (c, g) =
+            add_raw_consistent(self.a.coords(), self.a.gap(), self.q * p.coords(), p.gap());
         Point::new_unchecked(c, g)
     }
 

@@ -187,8 +187,7 @@ impl ConvexPolygon {
             // Every corner may turn the right way while the boundary still
             // winds twice (a pentagram): some vertex is then outside an edge.
             for (j, x) in xs.iter().enumerate() {
-                if j != i && j != (i + 1) % n && lorentz::dot(e, *x) < -tolerance * x.length()
-                {
+                if j != i && j != (i + 1) % n && lorentz::dot(e, *x) < -tolerance * x.length() {
                     return Err(GeomError::NonConvex { index: j });
                 }
             }
