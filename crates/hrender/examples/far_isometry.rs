@@ -4,7 +4,7 @@
 //! picture (`tests/common/far.rs`).
 //!
 //! `cargo run --release -p hrender --example far_isometry -- [--size N]
-//! [--dirs K] [--distances 10,15,20,25,30] [--out DIR]`
+//! [--dirs K] [--seed S] [--distances 10,15,20,25,30] [--out DIR]`
 //!
 //! Prints, per distance and net, the worst fraction of pixels within 1/255
 //! of the unmoved image over the `K` directions, whether `check` drew the
@@ -25,6 +25,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut dirs = 3usize;
     let mut distances = vec![10.0, 15.0, 20.0, 25.0, 30.0];
     let mut out: Option<PathBuf> = None;
+    let mut seed = 12u64;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         let mut value = || args.next().ok_or(format!("{a} needs a value"));
@@ -38,10 +39,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     .collect::<Result<_, _>>()?
             }
             "--out" => out = Some(PathBuf::from(value()?)),
+            "--seed" => seed = value()?.parse()?,
             other => return Err(format!("unknown argument {other}").into()),
         }
     }
-    let mut rng = common::Rng(12);
+    let mut rng = common::Rng(seed);
     let directions: Vec<DVec3> = (0..dirs).map(|_| rng.direction()).collect();
     println!("worst fraction of pixels within 1/255 over {dirs} directions, {size}x{size}");
     println!("| d | net 0 | net 1 | net 2 | net 3 | net 4 | same warnings | failures |");

@@ -66,23 +66,28 @@ Objects {{
 "
     );
     if d > 0.0 {
-        let away = dir.normalize() * (0.5 * d).tanh();
+        // A point typed within 1e-12 of the unit sphere is read as ideal
+        // (docs/language.md), which a point beyond distance ~28.3 is: longer
+        // translations are written as several equal steps along one line.
+        let steps = (d / 25.0).ceil();
+        let away = dir.normalize() * (0.5 * d / steps).tanh();
         s.push_str(&format!(
             "Points {{ o = (0, 0, 0); away = ({:?}, {:?}, {:?}); }}
 Transformations {{
     move: hline (%o, %away);
-    @camera->Translate(%move);
 ",
             away.x, away.y, away.z
         ));
-        for name in ["key", "fill", "shut"] {
-            s.push_str(&format!("    @{name}->Translate(%move);\n"));
+        for _ in 0..steps as usize {
+            s.push_str("    @camera->Translate(%move);\n");
         }
         for name in [
-            "ball", "drop", "quad", "tri", "stick", "spoke", "tube", "box", "floor", "back",
-            "hidden", "shade",
+            "key", "fill", "shut", "ball", "drop", "quad", "tri", "stick", "spoke", "tube", "box",
+            "floor", "back", "hidden", "shade",
         ] {
-            s.push_str(&format!("    @{name}->Translate(%move);\n"));
+            for _ in 0..steps as usize {
+                s.push_str(&format!("    @{name}->Translate(%move);\n"));
+            }
         }
         s.push_str("}\n");
     }
