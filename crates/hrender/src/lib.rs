@@ -42,7 +42,7 @@ pub use image::Image;
 pub use nets::{PixelNet, Sample};
 pub use output::{ImageFormat, SampleDepth, write_image};
 pub use sampling::{SampleStream, Sampler};
-pub use scene::{Nearest, PreparedScene};
+pub use scene::{Nearest, PreparedScene, Primitive};
 pub use tracer::{TraceStats, Tracer};
 
 /// Most samples per pixel a render accepts.
