@@ -137,17 +137,19 @@ impl Horosphere {
     /// to 1e-9 (`horosphere_hits_lie_on_the_surface` in `tests/surfaces.rs`).
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         let (plus, minus) = if ray.origin == DVec4::W {
-            // A ray from the origin with ball direction `u` (`V = (u, 0)`):
-            // `a = 1`, `b = -u.xi`, so
-            // `a -+ b = ((1 - |u|^2) + (1 - |xi|^2) + |u -+ xi|^2) / 2`, sums
-            // of terms that do not cancel (the unit defects are a few ulps,
-            // compensated); `1 - u.xi` itself cancels for a ray aimed at the
-            // centre (all of a far horosphere's hits).
+            // A ray from the origin along the unit direction `û = u/|u|`:
+            // `a = 1`, `b = -û.xi`, so `a -+ b = |û -+ xi|^2 / 2`, sums of
+            // squares; `1 - u.xi` itself cancels for a ray aimed near the
+            // centre (all of a far horosphere's hits: one 20 ahead is met
+            // only within 2e-9 rad). The unit defects `δ` of `u` and `xi`
+            // enter as `|û -+ xî|^2 = |u -+ xi|^2 + δ (1 -+ u.xi)`, with
+            // `1 -+ u.xi = (δ + |u -+ xi|^2) / 2` (as for spheres).
             let (u, xi) = (ray.dir.truncate(), self.center.coords());
-            let defects = one_minus_norm_sq(u) + one_minus_norm_sq(xi);
+            let delta = one_minus_norm_sq(u) + one_minus_norm_sq(xi);
+            let unit = |sq: f64| 0.5 * (sq + delta * 0.5 * (delta + sq));
             (
-                0.5 * (defects + (u - xi).length_squared()),
-                0.5 * (defects + (u + xi).length_squared()),
+                unit((u - xi).length_squared()),
+                unit((u + xi).length_squared()),
             )
         } else {
             let a = -lorentz::dot(ray.origin, self.null);

@@ -23,7 +23,11 @@ fn check_distance(d: f64, seed: u64, min_share: f64) {
         assert_eq!(failures, 0);
         let case = far_case(net, SIZE, d, dir, &base);
         assert_eq!(case.error, None, "translation {d}, net {net}");
-        assert!(case.same_warnings, "translation {d}, net {net}: {:?}", case.moved_warnings);
+        assert!(
+            case.same_warnings,
+            "translation {d}, net {net}: {:?}",
+            case.moved_warnings
+        );
         assert_eq!(case.failures, 0, "translation {d}, net {net}");
         assert!(
             case.share >= min_share,
