@@ -15,7 +15,7 @@ const TIMEOUT: Duration = Duration::from_secs(20);
 /// UTF-16 units), so columns after them differ in the two counts.
 const SCENE: &str = "\
 Points { eye = (0,0,0.5); (0,0,0); q: (0.5,0,0); (0.1, 0.1, 0); } // é𝕏 %q
-Globals { from = %eye; to = (0,0,0); }
+Globals { from = %eye; to = (0,0,0); fov = 160; }
 BRDFs { glass: diffuse = (1,0,0), shininess = 20; }
 Objects { ball: Sphere %2, 0.05, #glass; Sphere %4, 0.01, #1; }
 Transformations { axis: hline (%2, %q); %2->Translate(%axis); }

@@ -2,6 +2,7 @@
 
 use glam::{DVec3, DVec4};
 
+use crate::accurate::one_minus_norm_sq;
 use crate::error::GeomError;
 use crate::isometry::Isometry;
 use crate::lorentz;
@@ -82,23 +83,31 @@ impl Horosphere {
 
     /// The image under an isometry.
     ///
+    /// With `M` the Lorentz matrix, `M L` is a multiple `lambda L'` of the
+    /// image centre's null vector `L' = (xi', 1)`, and the image is
+    /// `-<Y,L'> = k / lambda`. `lambda = -<M L, E> = -<L, M^-1 E>` is the
+    /// level of the point `c = f^-1(0)` (the translation part of the
+    /// inverse): `|c - xi|^2 / gap_c`, a sum of squares over an exact gap.
+    /// Carrying `L` by `M` instead rounds at `eps |M|`, which far out (a
+    /// horosphere moved 25 away and back) is all of `k`.
+    ///
     /// # Accuracy
     ///
-    /// The centre as [`Isometry::apply_ideal`]; the level `k` is rescaled by
-    /// the time component of the carried null vector, within a few ulps of
-    /// `eps |M|` relative: image points stay on the image to 1e-14 relative
-    /// near the origin (`transformed_horosphere_contains_the_image_point`).
+    /// The centre as [`Isometry::apply_ideal`] (a few ulps plus
+    /// `eps / gap_a` radians); `k` within a few ulps plus the rounding of
+    /// `c`'s coordinates relative to `|c - xi|` (4e-11 relative for a
+    /// horosphere through a point 25 away, moved back to the origin:
+    /// `horosphere_moved_far_and_back` in `tests/far.rs`). Image points
+    /// stay on the image to 1e-14 relative near the origin
+    /// (`transformed_horosphere_contains_the_image_point`).
     pub fn transformed(&self, iso: &Isometry) -> Horosphere {
-        // Isometries map horospheres to horospheres; the level k changes
-        // because L is only defined up to scale: carry the null vector along
-        // and rescale it to time component 1.
-        let l = iso.to_lorentz() * self.null;
         let center = iso.apply_ideal(&self.center);
-        let scale = center.to_hyperboloid().w / l.w;
+        let c = iso.inverse().translation_part();
+        let lambda = (c.coords() - self.center.coords()).length_squared() / c.gap();
         Horosphere {
             center,
             null: center.to_hyperboloid(),
-            k: self.k * scale,
+            k: self.k / lambda,
         }
     }
 
@@ -138,9 +147,27 @@ impl Horosphere {
     /// horosphere so that the horosphere through the hit point agrees with it
     /// to 1e-9 (`horosphere_hits_lie_on_the_surface` in `tests/surfaces.rs`).
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        let a = -lorentz::dot(ray.origin, self.null);
-        let b = -lorentz::dot(ray.dir, self.null);
-        let roots = exp_roots(a + b, self.k, a - b)?;
+        let (plus, minus) = if ray.origin == DVec4::W {
+            // A ray from the origin along the unit direction `û = u/|u|`:
+            // `a = 1`, `b = -û.xi`, so `a -+ b = |û -+ xi|^2 / 2`, sums of
+            // squares; `1 - u.xi` itself cancels for a ray aimed near the
+            // centre (all of a far horosphere's hits: one 20 ahead is met
+            // only within 2e-9 rad). The unit defects `δ` of `u` and `xi`
+            // enter as `|û -+ xî|^2 = |u -+ xi|^2 + δ (1 -+ u.xi)`, with
+            // `1 -+ u.xi = (δ + |u -+ xi|^2) / 2` (as for spheres).
+            let (u, xi) = (ray.dir.truncate(), self.center.coords());
+            let delta = one_minus_norm_sq(u) + one_minus_norm_sq(xi);
+            let unit = |sq: f64| 0.5 * (sq + delta * 0.5 * (delta + sq));
+            (
+                unit((u - xi).length_squared()),
+                unit((u + xi).length_squared()),
+            )
+        } else {
+            let a = -lorentz::dot(ray.origin, self.null);
+            let b = -lorentz::dot(ray.dir, self.null);
+            (a + b, a - b)
+        };
+        let roots = exp_roots(plus, self.k, minus)?;
         hit_at_first_root(ray, roots, t_min, t_max, |x| self.normal_at(x))
     }
 

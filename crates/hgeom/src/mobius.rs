@@ -8,6 +8,7 @@
 
 use glam::{DMat3, DQuat, DVec3};
 
+use crate::accurate::one_minus_norm_sq;
 use crate::point::{IdealPoint, Point};
 
 /// `u (+) v` on raw coordinates with their gaps; returns the sum and its gap.
@@ -32,10 +33,51 @@ use crate::point::{IdealPoint, Point};
 /// and of the result, which is all that rounded coordinates can resolve.
 #[inline]
 pub fn add_raw(u: DVec3, gap_u: f64, v: DVec3, gap_v: f64) -> (DVec3, f64) {
-    let s = (u + v).length_squared();
+    let sum = u + v;
+    let s = sum.length_squared();
     let d = s + gap_u * gap_v;
-    let coords = ((s + gap_u) * u + gap_u * v) / d;
-    (coords, gap_u * gap_v / d)
+    // `(s + gap_u) u + gap_u v` written as `s u + gap_u (u + v)`: when `u`
+    // and `v` nearly annihilate far out, `u + v` is formed exactly
+    // (Sterbenz) and small, where `gap_u u + gap_u v` rounds both products
+    // first and then cancels.
+    let coords = (s * u + gap_u * sum) / d;
+    let gap = gap_u * gap_v / d;
+    (coords, gap)
+}
+
+/// [`add_raw`] for a point that will be used on the hyperboloid: where the
+/// sum cancelled (it is nearer the origin than an input, `gap > 2 min(gap_u,
+/// gap_v)`), the gap of the result's own coordinates instead of the
+/// identity's.
+///
+/// There the coordinates carry the inputs' coordinate rounding, larger than
+/// an ulp of the result, while the identity's gap carries their gaps; the
+/// two disagree, and the hyperboloid image `(2x, 2 - g)/g` would leave the
+/// sheet by `4 (g - g')/g^2` (sphere centres moved 25 away and back came out
+/// 1e-6 .. 4e-5 off it). The coordinates' own gap keeps the point on the
+/// sheet. Compositions keep the identity's gap ([`add_raw`]): it is the
+/// point's extra precision there, and dropping it doubled the drift of long
+/// chains of compositions (docs/geometry.md, section 4.1). The factor 2
+/// keeps a sum with an input at the origin (`D` rounding just below 1) on
+/// the identity.
+///
+/// # Accuracy
+///
+/// Position as [`add_raw`]; the gap within a few ulps where the identity's
+/// is kept, else the coordinates' own (compensated), as accurate as the
+/// position (`mobius_addition_matches_the_reference` in
+/// `tests/derivations.rs`; `sum_far_and_back_is_on_the_sheet` in this
+/// module).
+#[inline]
+pub fn add_raw_consistent(u: DVec3, gap_u: f64, v: DVec3, gap_v: f64) -> (DVec3, f64) {
+    let (coords, gap) = add_raw(u, gap_u, v, gap_v);
+    if gap_v > 0.0 && gap > 2.0 * gap_u.min(gap_v) {
+        let own = one_minus_norm_sq(coords);
+        if own > 0.0 {
+            return (coords, own);
+        }
+    }
+    (coords, gap)
 }
 
 /// Möbius addition of two h-points. The result's gap is exact up to rounding,
@@ -50,7 +92,7 @@ pub fn add_raw(u: DVec3, gap_u: f64, v: DVec3, gap_v: f64) -> (DVec3, f64) {
 /// [`Point::is_representable`].
 #[inline]
 pub fn add(u: &Point, v: &Point) -> Point {
-    let (c, g) = add_raw(u.coords(), u.gap(), v.coords(), v.gap());
+    let (c, g) = add_raw_consistent(u.coords(), u.gap(), v.coords(), v.gap());
     Point::new_unchecked(c, g)
 }
 

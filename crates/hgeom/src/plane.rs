@@ -17,11 +17,20 @@ use crate::ray::{Hit, Ray};
 ///
 /// Representable range: `N`'s components are about `cosh` of the plane's
 /// distance from the origin, and `<N,N> = 1` is resolved in f64 only while
-/// that distance is below ~18 (the same limit as the hyperboloid's, SPEC
-/// 2.3). Scenes are prepared relative to the camera, where planes are near.
+/// that distance is below ~18 (the same limit as the hyperboloid's). So the
+/// plane also keeps where it came from: an isometry `place` (gyrovector
+/// form, exact to the rounding of its translation part wherever it lies)
+/// and the unit normal `local` in `place`'s frame, where the plane is near
+/// the origin, with `N = place.to_lorentz() local`. Moving the plane
+/// composes isometries and derives `N` afresh, so a plane carried far out
+/// and back (a scene moved by a translation of 25, then into the eye's
+/// frame) returns exact to the rounding of its input, where carrying `N`
+/// itself would lose `eps e^{2d}` (`docs/geometry.md`, section 6.5).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HPlane {
     normal: DVec4,
+    place: Isometry,
+    local: DVec4,
 }
 
 /// How an h-plane looks in the ball.
@@ -61,7 +70,12 @@ impl HPlane {
         if !(len.is_finite() && len > 0.0) {
             return Err(GeomError::BadDirection);
         }
-        Ok(HPlane { normal: n / len })
+        let normal = n / len;
+        Ok(HPlane {
+            normal,
+            place: Isometry::IDENTITY,
+            local: normal,
+        })
     }
 
     /// A plane from a normal already unit to rounding, stored bit for bit
@@ -113,7 +127,10 @@ impl HPlane {
             &back.apply_vertex(b),
             &back.apply_vertex(c),
         )?;
-        HPlane::from_normal(to_anchor.to_lorentz() * local.normal)
+        // Carried, not renormalised: far out `<N,N>` of the carried normal
+        // rounds at `eps |N|^2` and can come out 0 or negative, which would
+        // read as collinear points; `L` preserves the unit length exactly.
+        Ok(local.transformed(&to_anchor))
     }
 
     fn through_near_origin(a: &Vertex, b: &Vertex, c: &Vertex) -> Result<HPlane, GeomError> {
@@ -142,10 +159,15 @@ impl HPlane {
     /// far out it inherits the rounding of the hyperboloid vectors, about
     /// `eps |X|^2 / sinh(len)`.
     pub fn orthogonal_at(start: &Point, towards: &Point) -> Result<HPlane, GeomError> {
-        let v = lorentz::unit_tangent_towards(start.to_hyperboloid(), towards.to_hyperboloid())
-            .ok_or(GeomError::Coincident)?;
-        // v is a unit tangent at start, hence a unit spacelike vector with <start,v> = 0.
-        HPlane::from_normal(v)
+        // In the frame where `start` is the origin the plane is the flat one
+        // orthogonal to the diameter towards the image of `towards`.
+        let to_start = Isometry::transvection_from_origin(*start);
+        let w = to_start.inverse().apply(towards).coords();
+        let len = w.length();
+        if !(len > 0.0 && len.is_finite()) {
+            return Err(GeomError::Coincident);
+        }
+        Ok(HPlane::from_normal((w / len).extend(0.0))?.transformed(&to_start))
     }
 
     /// The perpendicular bisector plane of the segment `a b`: the points
@@ -187,6 +209,8 @@ impl HPlane {
     pub fn flipped(&self) -> HPlane {
         HPlane {
             normal: -self.normal,
+            place: self.place,
+            local: -self.local,
         }
     }
 
@@ -225,11 +249,16 @@ impl HPlane {
     /// `tests/derivations.rs`).
     pub fn transformed(&self, iso: &Isometry) -> HPlane {
         // Lorentz maps preserve <N,N> = 1, so the image is already a unit
-        // normal up to rounding. Renormalising by a computed Lorentz norm
-        // would cancel catastrophically far out (beyond ~18, <n,n> rounds to
-        // 0 or below) and is not needed: every use of N is linear in it.
+        // normal up to rounding, and every use of N is linear in it: no
+        // renormalisation (it would cancel far out). The matrix is that of
+        // the composed placement, whose entries are of the size of the
+        // plane's own distance from the origin, so a plane carried far out
+        // and back is exact again.
+        let place = iso.compose(&self.place);
         HPlane {
-            normal: iso.to_lorentz() * self.normal,
+            normal: place.to_lorentz() * self.local,
+            place,
+            local: self.local,
         }
     }
 

@@ -50,6 +50,22 @@ impl ConvexPolygon {
     /// family of `tests/reference.rs`). The checks use a relative tolerance
     /// of 1e-9, so vertices given to ~14 digits are accepted.
     pub fn new(vertices: Vec<Vertex>) -> Result<ConvexPolygon, GeomError> {
+        ConvexPolygon::new_with_fuzz(vertices, 0.0)
+    }
+
+    /// [`ConvexPolygon::new`] for vertices that carry, besides their own
+    /// rounding, an error of `extra` (hyperbolic distance, summed over the
+    /// vertices): images under an isometry.
+    ///
+    /// The planarity and convexity checks accept what rounding can explain:
+    /// a vertex at gap `g` is only placed to about `eps / g` (rounding its
+    /// coordinates moves it that far, 2.8e-17 e^d at distance `d`), so the
+    /// tolerance is `max(1e-9, 16 (eps sum 1/g_i + extra))`, with ideal
+    /// vertices counted at the gap of the anchor the polygon is built
+    /// around (their direction's rounding, seen from there). A fixed 1e-9
+    /// rejected a square 18.7 from the origin, whose vertices rounding alone
+    /// puts 4.4e-9 off its plane.
+    fn new_with_fuzz(vertices: Vec<Vertex>, extra: f64) -> Result<ConvexPolygon, GeomError> {
         let n = vertices.len();
         if n < 3 {
             return Err(GeomError::TooFewVertices(n));
@@ -80,21 +96,33 @@ impl ConvexPolygon {
                     .ok()
             })
             .filter(|p| p.coords() != DVec3::ZERO);
+        let anchor_gap = anchor.map_or(1.0, |a| a.gap());
+        let fuzz: f64 = vertices
+            .iter()
+            .map(|v| match v {
+                Vertex::Interior(p) => f64::EPSILON / p.gap(),
+                Vertex::Ideal(_) => f64::EPSILON / anchor_gap,
+            })
+            .sum();
+        let tolerance = SHAPE_TOLERANCE.max(16.0 * (fuzz + extra));
         let Some(anchor) = anchor else {
-            return ConvexPolygon::build(vertices);
+            return ConvexPolygon::build(vertices, tolerance);
         };
         let to_anchor = Isometry::transvection_from_origin(anchor);
         let back = to_anchor.inverse();
-        let local = ConvexPolygon::build(vertices.iter().map(|v| back.apply_vertex(v)).collect())?;
+        let local = ConvexPolygon::build(
+            vertices.iter().map(|v| back.apply_vertex(v)).collect(),
+            tolerance,
+        )?;
         let l = to_anchor.to_lorentz();
         Ok(ConvexPolygon {
             vertices,
-            plane: HPlane::from_normal(l * local.plane.normal())?,
+            plane: local.plane.transformed(&to_anchor),
             edges: local.edges.iter().map(|e| l * *e).collect(),
         })
     }
 
-    fn build(vertices: Vec<Vertex>) -> Result<ConvexPolygon, GeomError> {
+    fn build(vertices: Vec<Vertex>, tolerance: f64) -> Result<ConvexPolygon, GeomError> {
         let n = vertices.len();
         let xs: Vec<DVec4> = vertices
             .iter()
@@ -132,7 +160,7 @@ impl ConvexPolygon {
         let nrm = plane.normal();
         for (index, x) in xs.iter().enumerate() {
             let offset = lorentz::dot(*x, nrm);
-            if offset.abs() > SHAPE_TOLERANCE * x.length().max(scale) {
+            if offset.abs() > tolerance * x.length().max(scale) {
                 return Err(GeomError::NonPlanar { index, offset });
             }
         }
@@ -141,7 +169,7 @@ impl ConvexPolygon {
         for i in 0..n {
             let (prev, here, next) = (xs[(i + n - 1) % n], xs[i], xs[(i + 1) % n]);
             let corner = lorentz::orthogonal_complement(prev, here - prev, next - prev);
-            if lorentz::dot(corner, nrm) < -SHAPE_TOLERANCE * scale * scale {
+            if lorentz::dot(corner, nrm) < -tolerance * scale * scale {
                 return Err(GeomError::NonConvex { index: i });
             }
         }
@@ -160,8 +188,7 @@ impl ConvexPolygon {
             // Every corner may turn the right way while the boundary still
             // winds twice (a pentagram): some vertex is then outside an edge.
             for (j, x) in xs.iter().enumerate() {
-                if j != i && j != (i + 1) % n && lorentz::dot(e, *x) < -SHAPE_TOLERANCE * x.length()
-                {
+                if j != i && j != (i + 1) % n && lorentz::dot(e, *x) < -tolerance * x.length() {
                     return Err(GeomError::NonConvex { index: j });
                 }
             }
@@ -216,7 +243,19 @@ impl ConvexPolygon {
         // isometry's Lorentz matrix, which is exact up to rounding (edge
         // planes are only used as a set, so the vertex reversal above does
         // not disturb them).
-        ConvexPolygon::new(vs.clone()).unwrap_or_else(|_| {
+        // The images carry the rounding of the sources and of the
+        // translation part besides their own.
+        let moved_by = 1.0 / iso.translation_part().gap();
+        let extra = f64::EPSILON
+            * self
+                .vertices
+                .iter()
+                .map(|v| match v {
+                    Vertex::Interior(p) => 1.0 / p.gap() + moved_by,
+                    Vertex::Ideal(_) => moved_by,
+                })
+                .sum::<f64>();
+        ConvexPolygon::new_with_fuzz(vs.clone(), extra).unwrap_or_else(|_| {
             let l = iso.to_lorentz();
             ConvexPolygon {
                 vertices: vs,

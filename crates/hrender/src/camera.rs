@@ -1,4 +1,4 @@
-//! The canonical frame (SPEC 3.1): the isometry that puts the eye at the
+//! The canonical frame: the isometry that puts the eye at the
 //! origin, the view direction along +z and up along +y.
 
 use hgeom::{Isometry, Point};
@@ -9,8 +9,15 @@ use crate::error::RenderError;
 /// The camera in canonical form.
 #[derive(Clone, Copy, Debug)]
 pub struct CanonicalCamera {
-    /// Maps the scene into the canonical frame.
+    /// Maps the scene into the canonical frame: `stages[1] ∘ stages[0]`.
     pub to_canonical: Isometry,
+    /// The same map in two stages, to be applied in turn: the transvection
+    /// taking the eye to the origin, then the rotation. A far point moved by
+    /// the composite `R(-eye) (+) R P` is rotated first, and the rotation's
+    /// rounding of the two far vectors survives their cancellation; in
+    /// stages, `(-eye) (+) P` cancels the exactly stored coordinates and
+    /// only the near result is rotated (`docs/geometry.md`, section 16.5).
+    pub stages: [Isometry; 2],
     /// Euclidean distance from the origin to the view plane in the canonical
     /// frame, `tanh(d/2)` for the hyperbolic eye-target distance `d`.
     pub view_distance: f64,
@@ -27,17 +34,24 @@ impl CanonicalCamera {
     /// to the right, y upwards, z away from the eye (the convention of the
     /// thesis and of POV-Ray).
     pub fn new(camera: &Camera) -> Result<CanonicalCamera, RenderError> {
-        let (to_canonical, view_distance) =
+        let frame =
             hscene_lang::view::canonical_frame(camera).ok_or(RenderError::DegenerateCamera)?;
         Ok(CanonicalCamera {
-            to_canonical,
-            view_distance,
+            to_canonical: frame.to_canonical,
+            stages: frame.stages,
+            view_distance: frame.view_distance,
         })
     }
 
     /// The view target's image, on the +z axis.
     pub fn target_in_frame(&self, camera: &Camera) -> Point {
-        self.to_canonical.apply(&camera.target)
+        self.apply(&camera.target)
+    }
+
+    /// A point's image in the canonical frame, stage by stage (see
+    /// [`CanonicalCamera::stages`]).
+    pub fn apply(&self, p: &Point) -> Point {
+        self.stages.iter().fold(*p, |p, iso| iso.apply(&p))
     }
 }
 

@@ -49,7 +49,7 @@ pub use image::Image;
 pub use nets::{PixelNet, Sample};
 pub use output::{ImageFormat, SampleDepth, check_depth, write_image, write_image_with};
 pub use sampling::{SampleStream, Sampler};
-pub use scene::{Nearest, PreparedScene};
+pub use scene::{Nearest, PreparedScene, Primitive};
 pub use tracer::{TraceStats, Tracer};
 
 /// Most samples per pixel a render accepts.
@@ -366,7 +366,7 @@ fn render_in_pool(
     progress: &(dyn Fn(u32) + Sync),
 ) -> Result<Rendered, RenderError> {
     let camera = CanonicalCamera::new(&scene.camera)?;
-    let prepared = PreparedScene::new(scene, &camera.to_canonical)?;
+    let prepared = PreparedScene::for_camera(scene, &camera)?;
     let net = options.net.unwrap_or(scene.settings.net);
     let Resolution { width, height } = options.resolution.unwrap_or(scene.settings.resolution);
     if width == 0 || height == 0 {

@@ -12,6 +12,7 @@ use hgeom::{
 use hscene_lang::ir::{self, Fog, Material, Rgb, Scene};
 
 use crate::bvh::{Bound, Bvh, Step};
+use crate::camera::CanonicalCamera;
 use crate::error::RenderError;
 
 /// Padding of bounds around polygons. A polygon accepts hits slightly
@@ -275,7 +276,34 @@ fn rod_pieces(r: &Rod) -> Vec<Bound> {
 }
 
 impl Primitive {
-    fn from_shape(shape: &ir::Shape, iso: &Isometry) -> Primitive {
+    /// The shape moved by each of `stages` in turn.
+    fn from_shape(shape: &ir::Shape, stages: &[Isometry]) -> Primitive {
+        let mut prim = Primitive::moved(shape, &stages[0]);
+        for iso in &stages[1..] {
+            prim = prim.transformed(iso);
+        }
+        prim
+    }
+
+    fn transformed(&self, iso: &Isometry) -> Primitive {
+        match self {
+            Primitive::Sphere(s) => Primitive::Sphere(s.transformed(iso)),
+            Primitive::Polygon(p) => Primitive::Polygon(p.transformed(iso)),
+            Primitive::Polyhedron(p) => Primitive::Polyhedron(Composite::new(
+                p.parts.iter().map(|f| f.transformed(iso)).collect(),
+            )),
+            Primitive::Plane(p) => Primitive::Plane(p.transformed(iso)),
+            Primitive::Rod(r) => Primitive::Rod(Box::new(r.transformed(iso))),
+            Primitive::Cylinder(c) => Primitive::Cylinder(Box::new(c.transformed(iso))),
+            Primitive::Horosphere(h) => Primitive::Horosphere(h.transformed(iso)),
+            Primitive::Wireframe(w) => Primitive::Wireframe(Composite::new(
+                w.parts.iter().map(|r| r.transformed(iso)).collect(),
+            )),
+            Primitive::Mesh(m) => Primitive::Mesh(Box::new(m.transformed(iso))),
+        }
+    }
+
+    fn moved(shape: &ir::Shape, iso: &Isometry) -> Primitive {
         match shape {
             ir::Shape::Sphere(s) => Primitive::Sphere(s.transformed(iso)),
             ir::Shape::Polygon(p) => Primitive::Polygon(p.transformed(iso)),
@@ -302,13 +330,18 @@ impl Primitive {
         let rod_ok = |r: &Rod| {
             vertex_ok(&r.start()) && vertex_ok(&r.end()) && r.tube().line().frame().is_finite()
         };
+        // A plane whose normal is no longer unit in this frame (it came from
+        // a bare normal far out, carried by a Lorentz matrix that lost
+        // `eps e^{2d}`) would meet rays at the wrong place or not at all: a
+        // silent loss. Planes placed by an isometry are unit here to rounding.
+        let plane_ok = |n: DVec4| n.is_finite() && (lorentz::dot(n, n) - 1.0).abs() <= 1e-6;
+        let polygon_ok =
+            |p: &ConvexPolygon| p.vertices().iter().all(vertex_ok) && plane_ok(p.plane().normal());
         match self {
             Primitive::Sphere(s) => s.center().is_representable(),
-            Primitive::Polygon(p) => p.vertices().iter().all(vertex_ok),
-            Primitive::Polyhedron(p) => {
-                p.parts().iter().all(|f| f.vertices().iter().all(vertex_ok))
-            }
-            Primitive::Plane(p) => p.normal().is_finite(),
+            Primitive::Polygon(p) => polygon_ok(p),
+            Primitive::Polyhedron(p) => p.parts().iter().all(polygon_ok),
+            Primitive::Plane(p) => plane_ok(p.normal()),
             Primitive::Rod(r) => rod_ok(r),
             Primitive::Cylinder(c) => {
                 c.line().base().is_representable() && c.line().frame().is_finite()
@@ -442,6 +475,21 @@ impl PreparedScene {
     /// that f64 cannot represent it in the eye's frame: that is reported,
     /// not silently dropped.
     pub fn new(scene: &Scene, to_canonical: &Isometry) -> Result<PreparedScene, RenderError> {
+        PreparedScene::staged(scene, std::slice::from_ref(to_canonical))
+    }
+
+    /// [`PreparedScene::new`] for a camera: everything is moved by the
+    /// camera's [`stages`](CanonicalCamera::stages) in turn, which keeps far
+    /// scenes exact to the rounding of their input.
+    pub fn for_camera(
+        scene: &Scene,
+        camera: &CanonicalCamera,
+    ) -> Result<PreparedScene, RenderError> {
+        PreparedScene::staged(scene, &camera.stages)
+    }
+
+    /// Move everything by each of `stages` in turn (at least one).
+    fn staged(scene: &Scene, stages: &[Isometry]) -> Result<PreparedScene, RenderError> {
         let mut objects = Vec::with_capacity(scene.objects.len());
         for (index, o) in scene.objects.iter().enumerate() {
             if o.material.0 >= scene.materials.len() {
@@ -452,7 +500,7 @@ impl PreparedScene {
                     scene.materials.len()
                 )));
             }
-            let primitive = Primitive::from_shape(&o.shape, to_canonical);
+            let primitive = Primitive::from_shape(&o.shape, stages);
             if !primitive.is_representable() {
                 return Err(RenderError::OutOfRange {
                     what: format!("object {}", index + 1),
@@ -461,7 +509,10 @@ impl PreparedScene {
             objects.push(PreparedObject {
                 primitive,
                 material: o.material.0,
-                to_local: to_canonical.compose(&o.frame).inverse(),
+                to_local: stages
+                    .iter()
+                    .fold(o.frame, |f, iso| iso.compose(&f))
+                    .inverse(),
             });
         }
         for (index, m) in scene.materials.iter().enumerate() {
@@ -490,8 +541,9 @@ impl PreparedScene {
             let out_of_range = || RenderError::OutOfRange {
                 what: format!("light {}", index + 1),
             };
-            let p = to_canonical
-                .checked_apply(&l.position)
+            let p = stages
+                .iter()
+                .try_fold(l.position, |p, iso| iso.checked_apply(&p))
                 .map_err(|_| out_of_range())?;
             // Every point of an area light must be placeable too.
             if l.radius > 0.0 {
@@ -569,6 +621,25 @@ mod tests {
 
     fn p(x: f64, y: f64, z: f64) -> Point {
         Point::from_coords(DVec3::new(x, y, z)).unwrap()
+    }
+
+    /// A plane given by a bare normal 17 from the eye cannot be resolved in
+    /// f64 (its `<N,N>` rounds at `eps e^34 / 4 ~ 3e-2`; at 25 the bare
+    /// normal is not even spacelike): the scene is refused, not drawn
+    /// without it. The same plane placed by an isometry is exact.
+    #[test]
+    fn unresolvable_plane_is_reported() {
+        let far = Isometry::transvection_from_origin(
+            Point::at_distance_from_origin(DVec3::new(0.2, 0.1, 1.0), 17.0).unwrap(),
+        );
+        let placed = HPlane::orthogonal_at(&p(0.0, 0.0, 0.3), &p(0.0, 0.0, 0.4))
+            .unwrap()
+            .transformed(&far);
+        let bare = HPlane::from_normal(placed.normal()).unwrap();
+        let back = far.inverse();
+        let prim = |plane: &HPlane| Primitive::Plane(*plane).transformed(&back);
+        assert!(prim(&placed).is_representable());
+        assert!(!prim(&bare).is_representable());
     }
 
     /// A long rod's pieces cover it: every hit lies in one of them.

@@ -24,8 +24,8 @@ mod parser;
 pub mod symbols;
 pub mod syntax;
 pub mod tokens;
-pub mod vocabulary;
 pub mod view;
+pub mod vocabulary;
 
 pub use diagnostic::{Code, Diagnostic, LineIndex, Severity, Span};
 pub use format::{FormatError, format};

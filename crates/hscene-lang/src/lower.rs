@@ -11,6 +11,7 @@ mod figures;
 mod light_strength;
 mod moves;
 pub(crate) mod objects;
+mod seen_from;
 mod view_globals;
 mod view_lint;
 
@@ -18,16 +19,17 @@ use std::collections::HashMap;
 use std::path::Path;
 
 use hgeom::glam::DVec3;
-use hgeom::{HPlane, IdealPoint, Isometry, Point, Rod, Segment, Vertex, lorentz};
+use hgeom::{HPlane, IdealPoint, Isometry, Point, Segment, Vertex};
 
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::{
     Camera, Light, Material, MaterialId, Net, Object, Pattern, PointPosition, PointRecord,
-    Resolution, Rgb, Scene, Settings, Shape, Texture, Window,
+    Resolution, Rgb, Scene, Settings, Texture, Window,
 };
 use crate::syntax::{
     BrokenStatement, Clause, Ident, RefSigil, RefTarget, Reference, Section, SourceFile, Value,
 };
+use seen_from::SeenFrom;
 
 /// What an `@name` transformation target names.
 #[derive(Clone, Debug)]
@@ -1691,10 +1693,11 @@ impl Lowerer<'_> {
     }
 
     fn lint_scene(&mut self, camera: &Camera) {
-        let eye = camera.eye.to_hyperboloid();
-        // The plane through the eye orthogonal to the view direction; objects
-        // entirely on its far side can't be seen.
-        let behind = HPlane::orthogonal_at(&camera.eye, &camera.target).ok();
+        // Decided in the eye's own frame (see `seen_from`): the plane through
+        // the eye orthogonal to the view direction; objects entirely on its
+        // far side can't be seen.
+        let eye = SeenFrom::new(camera.eye);
+        let view = eye.direction_to(&camera.target);
         let mut found = Vec::new();
         // One statement can give many objects (edges, tessellation cells),
         // all with the statement's span: lint each statement once.
@@ -1707,7 +1710,7 @@ impl Lowerer<'_> {
                 .count();
             let group = &self.objects[i..end];
             i = end;
-            if group.iter().any(|(o, _)| contains(&o.shape, eye)) {
+            if group.iter().any(|(o, _)| eye.is_inside(&o.shape)) {
                 found.push(
                     Diagnostic::new(
                         Code::EyeInsideObject,
@@ -1716,10 +1719,7 @@ impl Lowerer<'_> {
                     )
                     .with_help("move the eye (`from`) or the object if this is not intended"),
                 );
-            } else if behind
-                .as_ref()
-                .is_some_and(|plane| group.iter().all(|(o, _)| entirely_behind(&o.shape, plane)))
-            {
+            } else if view.is_some_and(|v| group.iter().all(|(o, _)| eye.is_behind(&o.shape, v))) {
                 found.push(Diagnostic::new(
                     Code::ObjectBehindEye,
                     span,
@@ -1728,13 +1728,13 @@ impl Lowerer<'_> {
             }
         }
         for (light, span) in &self.lights {
-            let x = light.position.to_hyperboloid();
+            let from = SeenFrom::new(light.position);
             for (object, _) in &self.objects {
                 let opaque = self
                     .materials
                     .get(object.material.0)
                     .is_some_and(|m| m.material.transmission == 0.0);
-                if opaque && contains(&object.shape, x) {
+                if opaque && from.is_inside(&object.shape) {
                     found.push(Diagnostic::new(
                         Code::LightInsideOpaqueObject,
                         *span,
@@ -1869,62 +1869,6 @@ impl Lowerer<'_> {
         }
         self.diags.extend(found);
     }
-}
-
-/// True if the hyperboloid point is strictly inside a closed object.
-fn contains(shape: &Shape, x: hgeom::glam::DVec4) -> bool {
-    match shape {
-        Shape::Sphere(s) => s.contains_hyperboloid(x),
-        Shape::Polygon(_) => false,
-        Shape::Polyhedron(p) => {
-            // Behind every face plane means inside only for a closed surface
-            // (the golden rectangles are not one): there every edge belongs
-            // to exactly two faces. For star polyhedra this finds the core.
-            let sides: usize = p.faces().iter().map(|f| f.vertices().len()).sum();
-            let closed = !p.faces().is_empty() && sides == 2 * p.edges().len();
-            closed
-                && p.faces()
-                    .iter()
-                    .all(|f| lorentz::dot(x, f.plane().normal()) < 0.0)
-        }
-        // A plane bounds a half-space, not an object one can be inside of.
-        Shape::Plane(_) => false,
-        Shape::Rod(r) => r.contains_hyperboloid(x),
-        Shape::Cylinder(c) => c.contains_hyperboloid(x),
-        Shape::Horosphere(h) => h.contains_hyperboloid(x),
-        Shape::Wireframe(rods) => rods.iter().any(|r| r.contains_hyperboloid(x)),
-        // Whether a mesh is closed, and so has an inside, is not checked.
-        Shape::Mesh(_) => false,
-    }
-}
-
-fn entirely_behind(shape: &Shape, plane: &HPlane) -> bool {
-    let vertex_behind = |v: &Vertex| lorentz::dot(v.to_hyperboloid(), plane.normal()) < 0.0;
-    match shape {
-        Shape::Sphere(s) => plane.signed_distance(&s.center()) < -s.radius(),
-        Shape::Polygon(p) => p.vertices().iter().all(vertex_behind),
-        Shape::Polyhedron(p) => p
-            .faces()
-            .iter()
-            .all(|f| f.vertices().iter().all(vertex_behind)),
-        // Unbounded surfaces always reach in front of the eye's plane.
-        Shape::Plane(_) | Shape::Cylinder(_) | Shape::Horosphere(_) => false,
-        Shape::Rod(r) => rod_behind(r, plane),
-        Shape::Wireframe(rods) => rods.iter().all(|r| rod_behind(r, plane)),
-        Shape::Mesh(m) => m.vertices().iter().all(|p| plane.signed_distance(p) < 0.0),
-    }
-}
-
-/// A rod is behind the plane when both ends are, by more than its radius
-/// (the rod lies within its radius of the segment, which is behind if its
-/// ends are: half-spaces are convex).
-fn rod_behind(rod: &Rod, plane: &HPlane) -> bool {
-    let end_behind = |v: Vertex| match v {
-        Vertex::Interior(p) => plane.signed_distance(&p) < -rod.radius(),
-        // An ideal end: the rod's tube reaches the absolute there.
-        Vertex::Ideal(_) => false,
-    };
-    end_behind(rod.start()) && end_behind(rod.end())
 }
 
 #[derive(Clone, Copy, PartialEq, Eq)]

@@ -17,14 +17,31 @@ use crate::ir::{Camera, Net, Resolution, Window};
 
 /// The camera's canonical frame: the isometry that takes the eye to the
 /// origin, the view direction to +z and up to +y, and the view-plane
-/// distance `f` there (`tanh(d/2)`, `d` the eye-target distance). First the
-/// transvection taking the eye to the origin; there the view direction is
-/// the diameter towards the moved target, and up is the direction towards
-/// the moved up point, made orthogonal to it (default: the image of the
-/// ball's `+y` at the eye). Then the rotation taking (right, up, view) to
-/// (x, y, z), with right = up x view: screen x grows to the right, y
-/// upwards, z away from the eye. `None` when view and up are degenerate.
-pub fn canonical_frame(camera: &Camera) -> Option<(Isometry, f64)> {
+/// distance there.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CanonicalFrame {
+    /// Maps the scene into the canonical frame: `stages[1] ∘ stages[0]`.
+    pub to_canonical: Isometry,
+    /// The same map in two stages, to be applied in turn: the transvection
+    /// taking the eye to the origin, then the rotation. A far point moved by
+    /// the composite `R(-eye) (+) R P` is rotated first, and the rotation's
+    /// rounding of the two far vectors survives their cancellation; in
+    /// stages, `(-eye) (+) P` cancels the exactly stored coordinates and
+    /// only the near result is rotated (`docs/geometry.md`, section 16.5).
+    pub stages: [Isometry; 2],
+    /// Euclidean distance `f = tanh(d/2)` from the origin to the view plane
+    /// in the canonical frame, `d` the hyperbolic eye-target distance.
+    pub view_distance: f64,
+}
+
+/// The camera's [`CanonicalFrame`]. First the transvection taking the eye
+/// to the origin; there the view direction is the diameter towards the
+/// moved target, and up is the direction towards the moved up point, made
+/// orthogonal to it (default: the image of the ball's `+y` at the eye).
+/// Then the rotation taking (right, up, view) to (x, y, z), with right = up
+/// x view: screen x grows to the right, y upwards, z away from the eye.
+/// `None` when view and up are degenerate.
+pub fn canonical_frame(camera: &Camera) -> Option<CanonicalFrame> {
     let to_origin = Isometry::transvection_from_origin(camera.eye).inverse();
     let target = to_origin.apply(&camera.target);
     let view = target.coords().normalize();
@@ -38,9 +55,12 @@ pub fn canonical_frame(camera: &Camera) -> Option<(Isometry, f64)> {
         return None;
     }
     // Rows right, up, view: maps those vectors to x, y, z.
-    let rotation = DMat3::from_cols(right, up, view).transpose();
-    let to_canonical = Isometry::orthogonal_unchecked(rotation).compose(&to_origin);
-    Some((to_canonical, target.coords().length()))
+    let rotation = Isometry::orthogonal_unchecked(DMat3::from_cols(right, up, view).transpose());
+    Some(CanonicalFrame {
+        to_canonical: rotation.compose(&to_origin),
+        stages: [to_origin, rotation],
+        view_distance: target.coords().length(),
+    })
 }
 
 /// Why a field of view gives no window.

@@ -5,6 +5,8 @@
 
 #![allow(dead_code)]
 
+pub mod far;
+
 use hgeom::glam::{DMat3, DVec3};
 use hgeom::{
     ConvexPolygon, HCylinder, HLine, HPlane, HSphere, Horosphere, IdealPoint, Isometry, Platonic,

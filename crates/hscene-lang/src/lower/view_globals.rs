@@ -3,7 +3,6 @@
 //! Their meaning is in `docs/language.md#globals` and
 //! `docs/rendering.md#fog`.
 
-
 use super::Lowerer;
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::{Camera, Fog, Rgb};

@@ -13,10 +13,10 @@
 //! lint only. Lights are not linted: lights are meant to shine from
 //! outside the picture.
 
-use hgeom::HPlane;
-use hgeom::glam::{DVec3, DVec4};
+use hgeom::glam::DVec3;
 
-use super::{Lowerer, entirely_behind};
+use super::Lowerer;
+use super::seen_from::SeenFrom;
 use crate::diagnostic::{Code, Diagnostic};
 use crate::ir::{Camera, Net};
 use crate::view::{canonical_frame, fov_window};
@@ -28,10 +28,19 @@ impl Lowerer<'_> {
         if self.settings.net != Net::Euclidean {
             return;
         }
-        let Some((to_canonical, f)) = canonical_frame(camera) else {
+        let Some(crate::view::CanonicalFrame {
+            stages: [_, rotation],
+            view_distance: f,
+            ..
+        }) = canonical_frame(camera)
+        else {
             return;
         };
-        let to_world = to_canonical.inverse();
+        // Decided in the eye's own frame (see `seen_from`): the canonical
+        // frame is that frame turned by `rotation`, so a direction `m` there
+        // is `R^T m` here.
+        let eye = SeenFrom::new(camera.eye);
+        let unturn = rotation.linear_part().transpose();
         let window = match self.settings.fov {
             Some(fov) => match fov_window(fov, Net::Euclidean, self.settings.resolution, f) {
                 Ok(w) => w,
@@ -40,17 +49,19 @@ impl Lowerer<'_> {
             None => self.settings.window,
         };
         let (hw, hh) = (window.width / 2.0, window.height / 2.0);
-        let sides: Vec<HPlane> = [
+        // The inward normals of the four h-planes through the eye and the
+        // window's edges: an object entirely behind one of them is unseen.
+        let sides: Vec<DVec3> = [
             DVec3::new(-f, 0.0, hw),
             DVec3::new(f, 0.0, hw),
             DVec3::new(0.0, -f, hh),
             DVec3::new(0.0, f, hh),
         ]
         .into_iter()
-        .filter_map(|m| HPlane::from_normal(DVec4::new(m.x, m.y, m.z, 0.0)).ok())
-        .map(|p| p.transformed(&to_world))
+        .map(|m| (unturn * m).normalize())
+        .filter(|m| m.is_finite())
         .collect();
-        let behind = HPlane::orthogonal_at(&camera.eye, &camera.target).ok();
+        let behind = eye.direction_to(&camera.target);
         let mut found = Vec::new();
         let mut i = 0;
         while i < self.objects.len() {
@@ -61,8 +72,7 @@ impl Lowerer<'_> {
                 .count();
             let group = &self.objects[i..end];
             i = end;
-            let all_behind =
-                |plane: &HPlane| group.iter().all(|(o, _)| entirely_behind(&o.shape, plane));
+            let all_behind = |v: &DVec3| group.iter().all(|(o, _)| eye.is_behind(&o.shape, *v));
             if behind.as_ref().is_some_and(all_behind) {
                 continue;
             }
