@@ -277,12 +277,14 @@ pub struct LineIndex {
 impl LineIndex {
     /// Indexes `source` (the text is copied).
     pub fn new(source: &str) -> Self {
+        // LF, CRLF and a lone CR each end a line (see `crate::source`).
+        let bytes = source.as_bytes();
         let mut line_starts = vec![0];
         line_starts.extend(
-            source
-                .bytes()
+            bytes
+                .iter()
                 .enumerate()
-                .filter(|&(_, b)| b == b'\n')
+                .filter(|&(i, &b)| b == b'\n' || (b == b'\r' && bytes.get(i + 1) != Some(&b'\n')))
                 .map(|(i, _)| i + 1),
         );
         LineIndex {
@@ -430,6 +432,15 @@ mod tests {
         // Inside a multi-byte char: the char's own column.
         assert_eq!(idx.line_col(4), (1, 2));
         assert_eq!(idx.line_col(src.len()), (2, 9));
+    }
+
+    #[test]
+    fn every_line_end_convention_counts_once() {
+        let idx = LineIndex::new("a\rb\r\nc\nd");
+        assert_eq!(idx.line_count(), 4);
+        assert_eq!(idx.line_col(2), (2, 1));
+        assert_eq!(idx.line_col(5), (3, 1));
+        assert_eq!(idx.line_col(7), (4, 1));
     }
 
     #[test]

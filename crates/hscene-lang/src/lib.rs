@@ -20,6 +20,7 @@ pub mod ir;
 mod lower;
 pub mod mesh_file;
 mod parser;
+pub mod source;
 pub mod syntax;
 
 pub use diagnostic::{Code, Diagnostic, LineIndex, Severity, Span};

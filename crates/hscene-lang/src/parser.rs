@@ -144,12 +144,37 @@ fn snippet(text: &str) -> String {
         }
         if c.is_control() {
             out.extend(c.escape_default());
+        } else if is_invisible(c) {
+            out.push_str(&format!("<U+{:04X}>", u32::from(c)));
         } else {
             out.push(c);
         }
     }
     out.push('`');
     out
+}
+
+/// Characters that print as nothing or as a plain blank, and so must be
+/// named by code point in a message: Unicode spaces other than U+0020, and
+/// the zero-width and direction formatting characters.
+fn is_invisible(c: char) -> bool {
+    (c.is_whitespace() && c != ' ')
+        || matches!(
+            c,
+            '\u{00AD}'
+                | '\u{034F}'
+                | '\u{061C}'
+                | '\u{115F}'
+                | '\u{1160}'
+                | '\u{180E}'
+                | '\u{200B}'..='\u{200F}'
+                | '\u{202A}'..='\u{202E}'
+                | '\u{2060}'..='\u{206F}'
+                | '\u{3164}'
+                | '\u{FE00}'..='\u{FE0F}'
+                | '\u{FEFF}'
+                | '\u{FFA0}'
+        )
 }
 
 /// Joins alternatives: "a", "a or b", "a, b or c".
@@ -260,9 +285,16 @@ impl Scanner<'_> {
         while pos < bytes.len() {
             match bytes[pos] {
                 b' ' | b'\t' | b'\r' | b'\n' => pos += 1,
+                // A line comment ends at any line end, CR included, so a
+                // file with old Mac line ends is not one long comment.
                 b'/' if bytes.get(pos + 1) == Some(&b'/') => {
-                    pos = src[pos..].find('\n').map_or(src.len(), |i| pos + i);
+                    pos = bytes[pos..]
+                        .iter()
+                        .position(|&b| crate::source::is_line_end(b))
+                        .map_or(src.len(), |i| pos + i);
                 }
+                // A byte-order mark at the very start is not text.
+                0xEF if pos == 0 && src.starts_with('\u{feff}') => pos += 3,
                 b'/' if bytes.get(pos + 1) == Some(&b'*') => match src[pos + 2..].find("*/") {
                     Some(i) => pos = pos + 2 + i + 2,
                     None => return (src.len(), Some(pos)),
