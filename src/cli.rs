@@ -37,9 +37,12 @@ pub struct RenderArgs {
     /// Sample depth of the output: 8, 16, or 32f (float TIFF, unclamped HDR).
     #[arg(long, default_value = "8")]
     pub depth: Depth,
-    /// Worker threads (default: all cores).
+    /// Worker threads, 1 to 1024 (default: all cores).
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=hrender::MAX_THREADS as i64))]
+    pub threads: Option<u16>,
+    /// Replace an existing output even when it is read-only.
     #[arg(long)]
-    pub threads: Option<usize>,
+    pub force: bool,
     /// Samples per pixel for anti-aliasing, overriding the scene's
     /// `samples` (default 1 = the pixel centre; a square number is
     /// stratified, any other jittered; box-filtered).

@@ -3,6 +3,7 @@
 
 mod cli;
 mod emit;
+mod input;
 mod report;
 
 use std::io::{IsTerminal, Write};
@@ -37,11 +38,8 @@ fn compile_options(scene: &Path, frame: u32) -> hscene_lang::Options {
     }
 }
 
-fn read_scene(path: &Path) -> Result<String, ExitCode> {
-    std::fs::read_to_string(path).map_err(|e| {
-        eprintln!("error: cannot read {}: {e}", path.display());
-        ExitCode::from(EXIT_USAGE_OR_IO)
-    })
+fn read_scene(path: &Path, format: Format) -> Result<String, String> {
+    input::read_scene(path).map_err(|e| input::describe_failure(path, &e, format))
 }
 
 fn check(args: &CheckArgs) -> ExitCode {
@@ -61,23 +59,48 @@ fn check(args: &CheckArgs) -> ExitCode {
     let mut io_failure = false;
     let mut out = std::io::stdout().lock();
     for path in &args.scenes {
-        let source = match read_scene(path) {
+        let source = match read_scene(path, format) {
             Ok(s) => s,
-            Err(_) => {
+            Err(message) => {
+                // Machine-readable output stays on the stream it is read from.
+                if format == Format::Json && !emit_ir {
+                    let _ = out.write_all(message.as_bytes());
+                } else {
+                    eprint!("{message}");
+                }
                 io_failure = true;
                 continue;
             }
         };
         let compiled = hscene_lang::compile_with(&source, &compile_options(path, args.frame));
         any_errors |= compiled.has_errors();
+        // The same rule as `render --frame`: no frame past the last.
+        if let Some(scene) = &compiled.scene
+            && args.frame >= scene.settings.frames
+        {
+            let message = frame_past_end(args.frame, scene.settings.frames);
+            let message = match format {
+                Format::Json => format!(
+                    "{}\n",
+                    serde_json::json!({"file": path.display().to_string(), "severity": "error", "message": message})
+                ),
+                Format::Human | Format::Short => format!("error: {message}\n"),
+            };
+            if format == Format::Json && !emit_ir {
+                let _ = out.write_all(message.as_bytes());
+            } else {
+                eprint!("{message}");
+            }
+            io_failure = true;
+            continue;
+        }
         let text =
             report::format_diagnostics(path, &source, &compiled.diagnostics, format, diag_tty);
         if emit_ir {
             eprint!("{text}");
             // A scene with errors has no IR (`compiled.scene` is `None`).
             if let Some(scene) = &compiled.scene {
-                let line = format!("{}\n", emit::scene_to_json(path, scene));
-                if out.write_all(line.as_bytes()).is_err() {
+                if emit::write_scene_json(&mut out, path, scene).is_err() {
                     return ExitCode::from(EXIT_USAGE_OR_IO);
                 }
             }
@@ -94,15 +117,54 @@ fn check(args: &CheckArgs) -> ExitCode {
     }
 }
 
-fn render(args: &RenderArgs) -> ExitCode {
-    let source = match read_scene(&args.scene) {
-        Ok(s) => s,
-        Err(code) => return code,
+/// The message for a frame number past the animation's end.
+fn frame_past_end(k: u32, frames: u32) -> String {
+    format!(
+        "--frame {k} is past the scene's last frame ({} of `frames = {frames}`, counted from 0)",
+        frames.saturating_sub(1)
+    )
+}
+
+/// Everything about the outputs is checked before the first ray.
+fn check_outputs(args: &RenderArgs, outputs: &[std::path::PathBuf]) -> Result<(), ExitCode> {
+    let overwrite = if args.force {
+        hrender::Overwrite::Force
+    } else {
+        hrender::Overwrite::Writable
     };
-    // Refuse a bad output name before spending time on the render.
-    if let Err(e) = hrender::ImageFormat::from_path(&args.output) {
-        eprintln!("error: {e}");
-        return ExitCode::from(EXIT_USAGE_OR_IO);
+    for output in outputs {
+        if let Err(e) = hrender::check_output(output, depth(args), &[&args.scene], overwrite) {
+            eprintln!("error: {e}");
+            return Err(ExitCode::from(EXIT_USAGE_OR_IO));
+        }
+    }
+    Ok(())
+}
+
+fn depth(args: &RenderArgs) -> SampleDepth {
+    match args.depth {
+        Depth::Eight => SampleDepth::Eight,
+        Depth::Sixteen => SampleDepth::Sixteen,
+        Depth::Float32 => SampleDepth::Float32,
+    }
+}
+
+fn render(args: &RenderArgs) -> ExitCode {
+    // An interrupted render leaves no temporary file behind.
+    let _ = ctrlc::set_handler(|| {
+        hrender::remove_unfinished_outputs();
+        std::process::exit(130);
+    });
+    let source = match read_scene(&args.scene, Format::Short) {
+        Ok(s) => s,
+        Err(message) => {
+            eprint!("{message}");
+            return ExitCode::from(EXIT_USAGE_OR_IO);
+        }
+    };
+    // Refuse a bad output before spending time on the scene.
+    if let Err(code) = check_outputs(args, std::slice::from_ref(&args.output)) {
+        return code;
     }
     let stderr_tty = std::io::stderr().is_terminal();
     let first = args.frame.unwrap_or(0);
@@ -128,11 +190,14 @@ fn render(args: &RenderArgs) -> ExitCode {
     if let Some(k) = args.frame
         && k >= frames
     {
-        eprintln!(
-            "error: --frame {k} is past the scene's last frame ({} of `frames = {frames}`, counted from 0)",
-            frames - 1
-        );
+        eprintln!("error: {}", frame_past_end(k, frames));
         return ExitCode::from(EXIT_USAGE_OR_IO);
+    }
+    if args.frame.is_none() && frames > 1 {
+        let outputs: Vec<_> = (0..frames).map(|k| frame_path(&args.output, k)).collect();
+        if let Err(code) = check_outputs(args, &outputs) {
+            return code;
+        }
     }
     if args.frame.is_some() || frames == 1 {
         return render_frame(args, &scene, &args.output, stderr_tty);
@@ -186,7 +251,7 @@ fn render_frame(
         resolution: args
             .resolution
             .map(|(width, height)| Resolution { width, height }),
-        threads: args.threads,
+        threads: args.threads.map(usize::from),
         samples: args.samples,
         seed: args.seed,
         exposure: args.exposure,
@@ -231,12 +296,7 @@ fn render_frame(
     if let Some(bar) = &bar {
         bar.finish_and_clear();
     }
-    let depth = match args.depth {
-        Depth::Eight => SampleDepth::Eight,
-        Depth::Sixteen => SampleDepth::Sixteen,
-        Depth::Float32 => SampleDepth::Float32,
-    };
-    if let Err(e) = hrender::write_image(&rendered.image, output, depth) {
+    if let Err(e) = hrender::write_image(&rendered.image, output, depth(args)) {
         eprintln!("error: {e}");
         return ExitCode::from(EXIT_USAGE_OR_IO);
     }
@@ -244,6 +304,13 @@ fn render_frame(
         eprintln!(
             "warning: {} pixel(s) had a numeric failure; their failing rays show the background",
             rendered.stats.numeric_failures
+        );
+    }
+    if rendered.stats.cut_trees > 0 {
+        eprintln!(
+            "warning: {} primary ray(s) reached the budget of {} reflected and transmitted rays; their ray trees were cut short",
+            rendered.stats.cut_trees,
+            hrender::MAX_SECONDARY_RAYS
         );
     }
     if stderr_tty {

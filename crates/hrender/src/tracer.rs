@@ -11,6 +11,7 @@ use hgeom::{Hit, Point, Ray, fermi_coordinates};
 use hscene_lang::ir::{Material, Pattern, Rgb, Texture};
 
 use crate::color::Color;
+use crate::ray_budget::RayBudget;
 use crate::sampling::SampleStream;
 use crate::scene::{Nearest, PreparedLight, PreparedObject, PreparedScene};
 
@@ -37,6 +38,8 @@ pub struct TraceStats {
     /// results that were not finite. Each is replaced by the background and
     /// counted, never silently.
     pub failures: u64,
+    /// Primary rays whose ray tree the [`RayBudget`] cut short.
+    pub cut_trees: u64,
 }
 
 impl TraceStats {
@@ -45,6 +48,7 @@ impl TraceStats {
         TraceStats {
             rays: self.rays + o.rays,
             failures: self.failures + o.failures,
+            cut_trees: self.cut_trees + o.cut_trees,
         }
     }
 }
@@ -77,7 +81,9 @@ impl<'s> Tracer<'s> {
         stream: &mut SampleStream,
         stats: &mut TraceStats,
     ) -> Color {
-        let c = self.trace(ray, 0, 1.0, stream, stats);
+        let mut budget = RayBudget::default();
+        let c = self.trace(ray, 0, 1.0, &mut budget, stream, stats);
+        stats.cut_trees += u64::from(budget.was_cut());
         if c.is_finite() {
             c
         } else {
@@ -93,6 +99,7 @@ impl<'s> Tracer<'s> {
         ray: &Ray,
         depth: u32,
         weight: f64,
+        budget: &mut RayBudget,
         stream: &mut SampleStream,
         stats: &mut TraceStats,
     ) -> Color {
@@ -158,11 +165,11 @@ impl<'s> Tracer<'s> {
                 origin: p,
                 dir: renormalize(p, reflect(d, n)),
             };
-            if m.reflection > 0.0 && weight * m.reflection > MIN_WEIGHT {
-                color += self.trace(&reflected, depth + 1, weight * m.reflection, stream, stats)
-                    * m.reflection;
+            if m.reflection > 0.0 && weight * m.reflection > MIN_WEIGHT && budget.take() {
+                let w = weight * m.reflection;
+                color += self.trace(&reflected, depth + 1, w, budget, stream, stats) * m.reflection;
             }
-            if m.transmission > 0.0 && weight * m.transmission > MIN_WEIGHT {
+            if m.transmission > 0.0 && weight * m.transmission > MIN_WEIGHT && budget.take() {
                 let (n1, n2) = if entering {
                     (1.0, m.refraction)
                 } else {
@@ -175,8 +182,8 @@ impl<'s> Tracer<'s> {
                     origin: p,
                     dir: renormalize(p, dir),
                 };
-                color += self.trace(&next, depth + 1, weight * m.transmission, stream, stats)
-                    * m.transmission;
+                let w = weight * m.transmission;
+                color += self.trace(&next, depth + 1, w, budget, stream, stats) * m.transmission;
             }
         }
         color

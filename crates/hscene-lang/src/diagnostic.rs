@@ -309,6 +309,24 @@ impl LineIndex {
         (line, col)
     }
 
+    /// The byte range of the line holding byte `offset` (clamped to the
+    /// source), without its line end.
+    pub fn line_bounds(&self, offset: usize) -> Span {
+        let offset = offset.min(self.source.len());
+        let line = self.line_starts.partition_point(|&s| s <= offset);
+        let start = self.line_starts[line - 1];
+        let end = self
+            .line_starts
+            .get(line)
+            .map_or(self.source.len(), |&next| next);
+        let text = &self.source.as_bytes()[start..end];
+        let trimmed = text
+            .iter()
+            .rposition(|&b| b != b'\n' && b != b'\r')
+            .map_or(0, |i| i + 1);
+        Span::new(start, start + trimmed)
+    }
+
     /// Number of lines (at least 1, even for an empty source).
     pub fn line_count(&self) -> usize {
         self.line_starts.len()
@@ -441,6 +459,14 @@ mod tests {
         assert_eq!(idx.line_col(2), (2, 1));
         assert_eq!(idx.line_col(5), (3, 1));
         assert_eq!(idx.line_col(7), (4, 1));
+    }
+
+    #[test]
+    fn line_bounds_exclude_the_line_end() {
+        let idx = LineIndex::new("ab\r\ncd\ne");
+        assert_eq!(idx.line_bounds(1), Span::new(0, 2));
+        assert_eq!(idx.line_bounds(4), Span::new(4, 6));
+        assert_eq!(idx.line_bounds(99), Span::new(7, 8));
     }
 
     #[test]
