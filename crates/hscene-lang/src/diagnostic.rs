@@ -145,6 +145,8 @@ codes! {
     // Files.
     MeshFileUnreadable = "HSC0501", Error, "mesh file cannot be read";
     MeshFileInvalid = "HSC0502", Error, "invalid mesh file";
+    // Limits.
+    TooManyPrimitives = "HSC0601", Error, "too many primitives";
     // Lints.
     UnusedPoint = "HSC1001", Warning, "unused point";
     UnusedMaterial = "HSC1002", Warning, "unused material";

@@ -7,6 +7,7 @@
 //! see the final positions. Every problem found is reported; lowering goes on
 //! past errors so one run reports as much as it can.
 
+mod budget;
 mod figures;
 mod moves;
 mod objects;
@@ -146,6 +147,9 @@ struct Lowerer<'d> {
     time: f64,
     /// The `animate` clauses seen.
     animations: Vec<Span>,
+    /// Primitives so far, and whether the cap was reported (`budget.rs`).
+    primitives: u64,
+    primitive_cap_reported: bool,
 }
 
 #[derive(Default)]
@@ -203,6 +207,8 @@ pub(crate) fn lower(
         settings: default_settings(),
         camera_parts: CameraParts::default(),
         point_ref_failed: file.incomplete,
+        primitives: 0,
+        primitive_cap_reported: false,
         material_ref_failed: file.incomplete,
     };
     lw.check_section_names(file, source);

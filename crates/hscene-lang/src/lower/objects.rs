@@ -334,10 +334,24 @@ impl Lowerer<'_> {
         let (Some(material), Some(opts), true) = (material, opts, ok) else {
             return Vec::new();
         };
+        if let Kind::Figure(f) = kind {
+            let depth = args.first().map(Arg::number);
+            if !self.fits(super::budget::figure_estimate(f, depth), st.span) {
+                return Vec::new();
+            }
+        }
         let Some(built) = self.build(kind, name, &args, &positional) else {
             return Vec::new();
         };
-        self.place(built, material, opts, st)
+        let placed = self.place(built, material, opts, st);
+        let cost = placed
+            .iter()
+            .map(|&i| super::budget::shape_cost(&self.objects[i].0.shape))
+            .sum();
+        if !self.charge(cost, st.span) {
+            return Vec::new();
+        }
+        placed
     }
 
     fn unknown_object(&mut self, name: &Ident) {
@@ -729,6 +743,9 @@ impl Lowerer<'_> {
             return None;
         };
         let total = data.triangles.len();
+        if !self.fits(total as u64, file_span) {
+            return None;
+        }
         match TriangleMesh::new(vertices, data.triangles) {
             Ok(mesh) => {
                 let dropped = mesh.dropped_triangles();
