@@ -89,6 +89,7 @@
 #![warn(missing_docs)]
 
 pub mod accurate;
+mod compact;
 mod cylinder;
 mod distance;
 mod error;
@@ -111,6 +112,7 @@ mod roots;
 mod segment;
 mod sphere;
 
+pub use compact::Compact;
 pub use cylinder::HCylinder;
 pub use distance::distance;
 pub use error::GeomError;

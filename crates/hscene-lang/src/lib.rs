@@ -19,6 +19,7 @@ pub mod diagnostic;
 pub mod ir;
 mod lower;
 pub mod mesh_file;
+mod numbers;
 mod parser;
 pub mod source;
 pub mod syntax;

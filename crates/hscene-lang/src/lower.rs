@@ -11,6 +11,7 @@ mod budget;
 mod figures;
 mod moves;
 mod objects;
+mod ranges;
 
 use std::collections::HashMap;
 use std::path::Path;
@@ -540,7 +541,10 @@ impl Lowerer<'_> {
                                 self.error(
                                     Code::InvalidValue,
                                     value.span(),
-                                    format!("shininess must be non-negative, got {x}"),
+                                    format!(
+                                        "shininess must be non-negative, got {}",
+                                        hgeom::Compact(x)
+                                    ),
                                 );
                             }
                         }
@@ -553,7 +557,10 @@ impl Lowerer<'_> {
                                 self.error(
                                     Code::InvalidValue,
                                     value.span(),
-                                    format!("the index of refraction must be positive, got {x}"),
+                                    format!(
+                                        "the index of refraction must be positive, got {}",
+                                        hgeom::Compact(x)
+                                    ),
                                 );
                             }
                         }
@@ -814,7 +821,8 @@ impl Lowerer<'_> {
                                 Code::InvalidValue,
                                 value.span(),
                                 format!(
-                                    "a light's radius must be from 0 to {MAX_LIGHT_RADIUS}, got {r}"
+                                    "a light's radius must be from 0 to {MAX_LIGHT_RADIUS}, got {}",
+                                    hgeom::Compact(r)
                                 ),
                             )
                             .with_help("the radius is a hyperbolic length; 0 makes a point light"),
@@ -1539,6 +1547,10 @@ impl Lowerer<'_> {
             // An overflowing literal was already reported by the parser.
             Value::Number { value, .. } if !value.is_finite() => None,
             Value::Number { value, .. } => Some(*value),
+            Value::Ident(name) if crate::numbers::is_non_finite_word(&name.text) => {
+                self.report(crate::numbers::non_finite(name.span, &name.text));
+                None
+            }
             other => {
                 self.report(Diagnostic::new(
                     Code::WrongType,
@@ -1559,7 +1571,7 @@ impl Lowerer<'_> {
                 Diagnostic::new(
                     Code::NonPositiveRadius,
                     value.span(),
-                    format!("{what} must be positive, got {x}"),
+                    format!("{what} must be positive, got {}", hgeom::Compact(x)),
                 )
                 .with_help("lengths are hyperbolic and must be greater than 0"),
             );
@@ -1575,7 +1587,10 @@ impl Lowerer<'_> {
             self.report(Diagnostic::new(
                 Code::InvalidValue,
                 value.span(),
-                format!("`{what}` must be between 0 and 1, got {x}"),
+                format!(
+                    "`{what}` must be between 0 and 1, got {}",
+                    hgeom::Compact(x)
+                ),
             ));
             None
         }
@@ -1593,7 +1608,10 @@ impl Lowerer<'_> {
             self.report(Diagnostic::new(
                 Code::InvalidValue,
                 span,
-                format!("{what} must be a whole number from {min} to {max}, got {x}"),
+                format!(
+                    "{what} must be a whole number from {min} to {max}, got {}",
+                    hgeom::Compact(x)
+                ),
             ));
             None
         }
@@ -1629,15 +1647,7 @@ impl Lowerer<'_> {
 
     fn rgb(&mut self, value: &Value) -> Option<Rgb> {
         let v = self.tuple_of_numbers(value, 3, "a colour `(r, g, b)`")?;
-        if v.iter().any(|c| *c < 0.0) {
-            self.report(Diagnostic::new(
-                Code::InvalidValue,
-                value.span(),
-                "colour components must be non-negative",
-            ));
-            return None;
-        }
-        Some(Rgb::new(v[0], v[1], v[2]))
+        self.colour_in_range(value, [v[0], v[1], v[2]])
     }
 
     // ----- camera and lints -----------------------------------------------------

@@ -762,6 +762,12 @@ impl Scanner<'_> {
         } else {
             format!("expected {expected}, found {found}")
         };
+        let word = &self.src[span.start..span.end];
+        if crate::numbers::is_non_finite_word(word) {
+            self.diagnostics
+                .push(crate::numbers::non_finite(span, word));
+            return;
+        }
         let mut diag = Diagnostic::new(Code::Syntax, span, message);
         if at >= end && expected.contains("`;`") {
             diag = diag
@@ -853,6 +859,14 @@ impl Scanner<'_> {
             Rule::number => {
                 let text = pair.as_str();
                 let value = text.parse::<f64>().unwrap_or(f64::NAN);
+                if crate::numbers::underflows(text, value) {
+                    self.diagnostics
+                        .push(crate::numbers::underflow(span, &snippet(text)));
+                    return Some(Value::Number {
+                        value: f64::NAN,
+                        span,
+                    });
+                }
                 if !value.is_finite() {
                     self.diagnostics.push(
                         Diagnostic::new(
@@ -1313,16 +1327,22 @@ Transformations { hline (%1,%5); %1->Rotate(%2,-0.7); %2->Translate(%1); }
     fn overflowing_number_is_invalid_number_and_keeps_the_statement() {
         let src = "S { (1e999, -1e400, 1e-400); }";
         let p = parse(src);
-        assert_eq!(codes(&p), [Code::InvalidNumber, Code::InvalidNumber]);
+        assert_eq!(codes(&p), [Code::InvalidNumber; 3]);
         assert_eq!(text(src, p.diagnostics[0].span), "1e999");
         assert_eq!(text(src, p.diagnostics[1].span), "-1e400");
+        assert!(
+            p.diagnostics[2].message.contains("too small"),
+            "{:?}",
+            p.diagnostics[2]
+        );
         let Clause::Value(v) = &p.file.sections[0].statements[0].clauses[0] else {
             panic!()
         };
         let n = numbers(v);
         assert_eq!(n[0], f64::INFINITY);
         assert_eq!(n[1], f64::NEG_INFINITY);
-        assert_eq!(n[2], 0.0); // underflow is silently zero
+        // Underflow is reported, never silently zero.
+        assert!(n[2].is_nan());
     }
 
     #[test]

@@ -19,10 +19,8 @@ use hgeom::{
     Platonic, Point, Polyhedron, Rod, TriangleMesh, Vertex,
 };
 
-/// Largest mesh size: its farthest vertex must stay representable.
-const MAX_MESH_SIZE: f64 = 36.0;
-
 use super::figures::{self, Figure};
+use super::ranges::MAX_MESH_SIZE;
 use super::{Lowerer, TargetSlot};
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::{MaterialId, Object, Shape};
@@ -380,7 +378,7 @@ impl Lowerer<'_> {
             Param::Point(role) => self.point_arg(value, role).map(Arg::Point),
             Param::Vertex(role) => self.vertex_arg_for(value, role).map(Arg::Vertex),
             Param::Ideal(role) => self.ideal_arg(value, role).map(Arg::Ideal),
-            Param::Length(what) => self.positive(value, what).map(Arg::Number),
+            Param::Length(what) => self.length(value, what).map(Arg::Number),
             Param::Count(what, min, max) => {
                 let x = self.number(value)?;
                 if x.fract() == 0.0 && x >= min as f64 && x <= max as f64 {
@@ -390,7 +388,10 @@ impl Lowerer<'_> {
                         Diagnostic::new(
                             Code::InvalidValue,
                             value.span(),
-                            format!("{what} must be a whole number from {min} to {max}, got {x}"),
+                            format!(
+                                "{what} must be a whole number from {min} to {max}, got {}",
+                                hgeom::Compact(x)
+                            ),
                         )
                         .with_help(usage.to_string()),
                     );
@@ -693,9 +694,9 @@ impl Lowerer<'_> {
                 Diagnostic::new(
                     Code::InvalidValue,
                     size_span,
-                    format!("a mesh size must be at most {MAX_MESH_SIZE}, got {size}"),
+                    format!("a mesh size must be at most {MAX_MESH_SIZE}, got {}", hgeom::Compact(size)),
                 )
-                .with_help("f64 holds ball points out to about distance 37 from the origin; the size is the distance of the mesh's farthest vertex from its centre"),
+                .with_help("the size is the distance of the mesh's farthest vertex from its centre; opposite vertices are twice that apart, and f64 holds about 37"),
             );
             return None;
         }
