@@ -10,10 +10,12 @@
 //! (reflection before transmission), and the render reports how many primary
 //! rays it cut, so no image is silently different.
 
-/// Reflected and transmitted rays one primary ray may spawn in all. A
-/// mirror path of the deepest allowed recursion (64) fits many times over,
-/// and so does a full binary tree of depth 7 (254 rays).
-pub const MAX_SECONDARY_RAYS: u32 = 1024;
+/// Reflected and transmitted rays one primary ray may spawn in all: a
+/// mirror path of the deepest allowed recursion (64) fits four times over,
+/// and a full binary tree of depth 7 (254 rays) fits; past it the cost per
+/// pixel stays that of a few hundred rays (POV-Ray's default
+/// `max_trace_level = 5` allows trees of 62).
+pub const MAX_SECONDARY_RAYS: u32 = 256;
 
 /// What is left of one primary ray's budget.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
