@@ -144,7 +144,7 @@ fn snippet(text: &str) -> String {
         }
         if c.is_control() {
             out.extend(c.escape_default());
-        } else if is_invisible(c) {
+        } else if crate::source::is_invisible(c) {
             out.push_str(&format!("<U+{:04X}>", u32::from(c)));
         } else {
             out.push(c);
@@ -152,29 +152,6 @@ fn snippet(text: &str) -> String {
     }
     out.push('`');
     out
-}
-
-/// Characters that print as nothing or as a plain blank, and so must be
-/// named by code point in a message: Unicode spaces other than U+0020, and
-/// the zero-width and direction formatting characters.
-fn is_invisible(c: char) -> bool {
-    (c.is_whitespace() && c != ' ')
-        || matches!(
-            c,
-            '\u{00AD}'
-                | '\u{034F}'
-                | '\u{061C}'
-                | '\u{115F}'
-                | '\u{1160}'
-                | '\u{180E}'
-                | '\u{200B}'..='\u{200F}'
-                | '\u{202A}'..='\u{202E}'
-                | '\u{2060}'..='\u{206F}'
-                | '\u{3164}'
-                | '\u{FE00}'..='\u{FE0F}'
-                | '\u{FEFF}'
-                | '\u{FFA0}'
-        )
 }
 
 /// Joins alternatives: "a", "a or b", "a, b or c".

@@ -57,6 +57,29 @@ pub(crate) fn is_line_end(b: u8) -> bool {
     b == b'\n' || b == b'\r'
 }
 
+/// Characters that print as nothing or as a plain blank, and so must be
+/// named by code point in a message: Unicode spaces other than U+0020, and
+/// the zero-width and direction formatting characters.
+pub(crate) fn is_invisible(c: char) -> bool {
+    (c.is_whitespace() && c != ' ')
+        || matches!(
+            c,
+            '\u{00AD}'
+                | '\u{034F}'
+                | '\u{061C}'
+                | '\u{115F}'
+                | '\u{1160}'
+                | '\u{180E}'
+                | '\u{200B}'..='\u{200F}'
+                | '\u{202A}'..='\u{202E}'
+                | '\u{2060}'..='\u{206F}'
+                | '\u{3164}'
+                | '\u{FE00}'..='\u{FE0F}'
+                | '\u{FEFF}'
+                | '\u{FFA0}'
+        )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -78,5 +101,15 @@ mod tests {
             Err(InvalidUtf8 { offset: 5 })
         );
         assert_eq!(decode(b"\xC3".to_vec()), Err(InvalidUtf8 { offset: 0 }));
+    }
+
+    #[test]
+    fn invisible_characters_are_recognised() {
+        for c in ['\u{00A0}', '\u{200B}', '\u{FEFF}', '\u{3000}', '\u{2060}'] {
+            assert!(is_invisible(c), "{c:?}");
+        }
+        for c in [' ', 'a', 'é', '€'] {
+            assert!(!is_invisible(c), "{c:?}");
+        }
     }
 }

@@ -12,7 +12,8 @@ use super::figures::Figure;
 
 /// Most primitives (faces of polygons and polyhedra, mesh triangles, rods,
 /// and one for each other shape) in one scene. A scene at the cap needs
-/// about 3 GB to lower and prepare; `docs/limits.md` has the numbers.
+/// about 300 MB to lower (measured with two `Tessellation435 7`);
+/// `docs/limits.md` has the table of limits.
 pub const MAX_PRIMITIVES: u64 = 500_000;
 
 /// Cells of `Tessellation435 d` for `d = 0..=7`.
