@@ -406,3 +406,26 @@ fn primitive_amplification_is_refused_before_allocating() {
     assert!(o.stderr.contains("[HSC0601]"), "{}", o.stderr);
     assert!(o.stdout.is_empty());
 }
+
+/// Errors whose hints search the declared names ("did you mean") and lints
+/// comparing every light with every object stay linear: the hint search is
+/// skipped for long name lists, and lights are capped.
+#[test]
+fn hints_and_lints_stay_linear_in_the_scene_size() {
+    let n = 20_000;
+    let points: String = (0..n).map(|i| format!("p{i} = (0,0,0.1);\n")).collect();
+    let objects: String = (0..n)
+        .map(|i| format!("Sphere %q{i}, 0.1, #1;\n"))
+        .collect();
+    let lights: String = (0..2_000)
+        .map(|_| "(0,0.2,0), (1,1,1), (1,1,1);\n")
+        .collect();
+    let text = format!(
+        "Points {{\n{points}}}\nLights {{\n{lights}}}\nBRDFs {{ diffuse = (1,0,0); }}\nObjects {{\n{objects}}}\n"
+    );
+    let (dir, _) = generated("names.hsc", &text);
+    let o = run_in(dir.path(), &["check", "--format", "short", "names.hsc"]);
+    assert_eq!(o.code, 1);
+    assert!(o.stdout.contains("at most 1000 lights"), "{}", o.stdout);
+    assert!(o.stdout.contains("more diagnostic(s) not shown"));
+}

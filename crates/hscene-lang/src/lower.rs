@@ -12,6 +12,7 @@ mod figures;
 mod moves;
 mod objects;
 mod ranges;
+mod suggest;
 
 use std::collections::HashMap;
 use std::path::Path;
@@ -151,6 +152,7 @@ struct Lowerer<'d> {
     /// Primitives so far, and whether the cap was reported (`budget.rs`).
     primitives: u64,
     primitive_cap_reported: bool,
+    light_cap_reported: bool,
 }
 
 #[derive(Default)]
@@ -210,6 +212,7 @@ pub(crate) fn lower(
         point_ref_failed: file.incomplete,
         primitives: 0,
         primitive_cap_reported: false,
+        light_cap_reported: false,
         material_ref_failed: file.incomplete,
     };
     lw.check_section_names(file, source);
@@ -779,6 +782,9 @@ impl Lowerer<'_> {
         let specular = self.rgb(values[2]);
         let (radius, samples) = self.light_options(&options)?;
         let (position, diffuse, specular) = (position?, diffuse?, specular?);
+        if !self.light_fits(st.span) {
+            return None;
+        }
         self.lights.push((
             Light {
                 position,
@@ -1360,10 +1366,8 @@ impl Lowerer<'_> {
                         )
                     }
                     (RefTarget::Name(n), _) => {
-                        let mut names: Vec<&str> =
-                            self.point_names.keys().map(String::as_str).collect();
-                        names.sort_unstable();
-                        match objects::closest(n, &names) {
+                        let names = self.point_names.keys().map(String::as_str);
+                        match suggest::closest_declared(n, names) {
                             Some(s) => format!("did you mean `%{s}`?"),
                             None => "declare it in `Points` as `name = (x, y, z);`".to_string(),
                         }
@@ -1461,10 +1465,9 @@ impl Lowerer<'_> {
             }
             None => {
                 self.material_ref_failed = true;
-                let mut names: Vec<&str> = self.material_names.keys().map(String::as_str).collect();
-                names.sort_unstable();
+                let names = self.material_names.keys().map(String::as_str);
                 let suggestion = match &r.target {
-                    RefTarget::Name(n) => objects::closest(n, &names),
+                    RefTarget::Name(n) => suggest::closest_declared(n, names),
                     RefTarget::Index(_) => None,
                 };
                 let help = match (suggestion, self.materials.len()) {

@@ -16,6 +16,11 @@ use super::figures::Figure;
 /// `docs/limits.md` has the table of limits.
 pub const MAX_PRIMITIVES: u64 = 500_000;
 
+/// Most lights in one scene: every shading point sends a shadow ray to
+/// each, and the lint for lights inside objects compares each light with
+/// each object, so lights multiply every other cost.
+pub const MAX_LIGHTS: usize = 1000;
+
 /// Cells of `Tessellation435 d` for `d = 0..=7`.
 const TESSELLATION_CELLS: [u64; 8] = [1, 7, 37, 163, 661, 2643, 10497, 41511];
 
@@ -66,6 +71,25 @@ impl Lowerer<'_> {
                     ),
                 )
                 .with_help("use fewer or smaller figures, a lower tessellation depth, or a coarser mesh"),
+            );
+        }
+        false
+    }
+
+    /// Whether one more light fits; reports the first that does not.
+    pub(super) fn light_fits(&mut self, span: Span) -> bool {
+        if self.lights.len() < MAX_LIGHTS {
+            return true;
+        }
+        if !self.light_cap_reported {
+            self.light_cap_reported = true;
+            self.report(
+                Diagnostic::new(
+                    Code::TooManyPrimitives,
+                    span,
+                    format!("a scene may have at most {MAX_LIGHTS} lights; this is one more"),
+                )
+                .with_help("every light costs a shadow ray at every shading point; merge nearby lights or use an area light"),
             );
         }
         false

@@ -991,6 +991,9 @@ pub(super) fn wireframe(shapes: &[Shape], radius: f64) -> Result<Vec<Rod>, GeomE
     Ok(rods)
 }
 
+/// Most candidates a "did you mean" compares.
+pub(super) const MAX_CANDIDATES: usize = 1000;
+
 /// The candidate nearest to `word` by edit distance (ignoring case), if it
 /// is close enough to be a plausible typo.
 ///
@@ -999,7 +1002,6 @@ pub(super) fn wireframe(shapes: &[Shape], radius: f64) -> Result<Vec<Rod>, GeomE
 /// get no suggestion, which keeps the cost bounded.
 pub(super) fn closest<'a>(word: &str, candidates: &[&'a str]) -> Option<&'a str> {
     const MAX_WORD: usize = 64;
-    const MAX_CANDIDATES: usize = 1000;
     if word.len() > MAX_WORD || candidates.len() > MAX_CANDIDATES {
         return None;
     }
