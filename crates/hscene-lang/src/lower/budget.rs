@@ -24,14 +24,19 @@ pub const MAX_LIGHTS: usize = 1000;
 /// Cells of `Tessellation435 d` for `d = 0..=7`.
 const TESSELLATION_CELLS: [u64; 8] = [1, 7, 37, 163, 661, 2643, 10497, 41511];
 
-/// Primitives a figure will have, where that is large enough to matter and
-/// known before building it; 0 otherwise (it is counted once built).
-pub(super) fn figure_estimate(f: Figure, depth: Option<f64>) -> u64 {
+/// Primitives a figure will have at most, where that is large enough to
+/// matter and known before building it: its faces if they are drawn and
+/// its edges as rods if they are drawn (each edge counted for every cell,
+/// an upper bound); 0 otherwise (it is counted once built).
+pub(super) fn figure_estimate(f: Figure, depth: Option<f64>, faces: bool, edges: bool) -> u64 {
     match (f, depth) {
-        // Six faces per cube; the depth was checked against 0..=7.
-        (Figure::Tessellation435, Some(d)) => TESSELLATION_CELLS
-            .get(d as usize)
-            .map_or(u64::MAX, |c| 6 * c),
+        // Six faces and twelve edges per cube; the depth was checked
+        // against 0..=7.
+        (Figure::Tessellation435, Some(d)) => {
+            TESSELLATION_CELLS.get(d as usize).map_or(u64::MAX, |c| {
+                c * (6 * u64::from(faces) + 12 * u64::from(edges))
+            })
+        }
         _ => 0,
     }
 }
@@ -66,8 +71,8 @@ impl Lowerer<'_> {
                     Code::TooManyPrimitives,
                     span,
                     format!(
-                        "this would take the scene past {MAX_PRIMITIVES} primitives (faces, triangles and rods); it has {} before it",
-                        self.primitives
+                        "this would bring the scene to {} primitives (faces, triangles and rods), past the limit of {MAX_PRIMITIVES}",
+                        self.primitives.saturating_add(more)
                     ),
                 )
                 .with_help("use fewer or smaller figures, a lower tessellation depth, or a coarser mesh"),

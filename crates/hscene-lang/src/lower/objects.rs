@@ -334,7 +334,12 @@ impl Lowerer<'_> {
         };
         if let Kind::Figure(f) = kind {
             let depth = args.first().map(Arg::number);
-            if !self.fits(super::budget::figure_estimate(f, depth), st.span) {
+            let (faces, edges) = (
+                opts.wireframe.is_none(),
+                opts.wireframe.or(opts.edges).is_some(),
+            );
+            let estimate = super::budget::figure_estimate(f, depth, faces, edges);
+            if !self.fits(estimate, st.span) {
                 return Vec::new();
             }
         }
