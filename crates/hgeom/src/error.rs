@@ -14,7 +14,7 @@ pub enum GeomError {
     #[error("coordinates must be finite")]
     NotFinite,
     /// An h-point must lie strictly inside the unit ball.
-    #[error("point lies on or outside the absolute (|x| = {norm})")]
+    #[error("point lies on the absolute or too close to it for f64 (|x| = {norm})")]
     NotInBall {
         /// Euclidean norm of the offending point.
         norm: f64,
