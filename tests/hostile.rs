@@ -429,3 +429,31 @@ fn hints_and_lints_stay_linear_in_the_scene_size() {
     assert!(o.stdout.contains("at most 1000 lights"), "{}", o.stdout);
     assert!(o.stdout.contains("more diagnostic(s) not shown"));
 }
+
+/// Every scene of the corpus, in every diagnostics format, ends by itself
+/// within the limits with status 0, 1 or 2, and every line of the short
+/// format is one diagnostic (no file content spills over lines).
+#[test]
+fn every_corpus_scene_replays_within_the_limits() {
+    let mut scenes = 0;
+    for entry in fs::read_dir(corpus()).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "hsc") {
+            continue;
+        }
+        scenes += 1;
+        let name = path.file_name().unwrap().to_str().unwrap().to_string();
+        for format in ["human", "short", "json"] {
+            let o = run(&["check", "--format", format, &name]);
+            if format == "short" {
+                let prefix = format!("{name}:");
+                assert!(
+                    o.stdout.lines().all(|l| l.starts_with(&prefix)),
+                    "{}",
+                    o.stdout
+                );
+            }
+        }
+    }
+    assert!(scenes >= 8, "{scenes} scenes in {}", corpus().display());
+}
