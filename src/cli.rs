@@ -44,7 +44,7 @@ pub enum Command {
     /// Check scenes for errors and warnings without rendering.
     Check(CheckArgs),
     /// Format scenes in the canonical layout (in place, or `-` from stdin to stdout).
-    Fmt(crate::fmt_cmd::FmtArgs),
+    Fmt(FmtArgs),
     /// Run the language server on stdin/stdout (for editors).
     Lsp,
     /// Print the documentation of a diagnostic code, e.g. `hscene explain HSC0305`.
@@ -87,9 +87,12 @@ pub struct RenderArgs {
     /// (x/(1+x)) or aces (filmic). Float outputs are never tone-mapped.
     #[arg(long, value_name = "CURVE", default_value = "clip")]
     pub tonemap: ToneMapArg,
-    /// Worker threads (default: all cores).
+    /// Worker threads, 1 to 1024 (default: all cores).
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=hrender::MAX_THREADS as i64))]
+    pub threads: Option<u16>,
+    /// Replace an existing output even when it is read-only.
     #[arg(long)]
-    pub threads: Option<usize>,
+    pub force: bool,
     /// Samples per pixel for anti-aliasing, overriding the scene's
     /// `samples` (default 1 = the pixel centre; a square number is
     /// stratified, any other jittered; box-filtered).
@@ -242,4 +245,19 @@ fn parse_resolution(s: &str) -> Result<(u32, u32), String> {
         return Err(format!("at most {MAX_PIXELS} pixels in all"));
     }
     Ok((w, h))
+}
+
+/// `hscene fmt`: the canonical layout of scenes (docs/formatting.md).
+#[derive(Debug, clap::Args)]
+pub struct FmtArgs {
+    /// Scene files to format in place; `-` formats stdin to stdout.
+    #[arg(required = true)]
+    pub scenes: Vec<PathBuf>,
+    /// Change nothing; list the files that are not formatted (for stdin,
+    /// print nothing) and exit with status 1 if there are any.
+    #[arg(long)]
+    pub check: bool,
+    /// The file name to show in messages for a scene read from stdin (`-`).
+    #[arg(long, value_name = "PATH")]
+    pub stdin_filename: Option<PathBuf>,
 }

@@ -13,8 +13,73 @@ use serde_json::{Value, json};
 /// The version of the IR schema.
 pub const SCHEMA: u32 = 1;
 
-/// The whole scene as one JSON object.
-pub fn scene_to_json(path: &Path, scene: &Scene) -> Value {
+/// Writes the whole scene as one JSON object and a newline, streamed: the
+/// lists (points, materials, lights, objects) go out one element at a
+/// time, so memory stays at one element's JSON however large the scene.
+/// The keys come in sorted order, as in [`scene_to_json`], and the bytes
+/// are the same as its serialisation.
+pub fn write_scene_json(
+    out: &mut impl std::io::Write,
+    path: &Path,
+    scene: &Scene,
+) -> std::io::Result<()> {
+    let mut out = std::io::BufWriter::new(out);
+    let head = header(path, scene);
+    let field = |out: &mut std::io::BufWriter<_>, key: &str, first: bool| -> std::io::Result<()> {
+        out.write_all(if first { b"{" } else { b"," })?;
+        serde_json::to_writer(&mut *out, key)?;
+        out.write_all(b":")
+    };
+    use std::io::Write;
+    field(&mut out, "camera", true)?;
+    serde_json::to_writer(&mut out, &head["camera"])?;
+    field(&mut out, "file", false)?;
+    serde_json::to_writer(&mut out, &head["file"])?;
+    field(&mut out, "frame", false)?;
+    serde_json::to_writer(&mut out, &head["frame"])?;
+    field(&mut out, "lights", false)?;
+    list(
+        &mut out,
+        scene.lights.iter().enumerate().map(|(i, l)| light(i, l)),
+    )?;
+    field(&mut out, "materials", false)?;
+    list(
+        &mut out,
+        scene
+            .materials
+            .iter()
+            .enumerate()
+            .map(|(i, m)| material(i, m)),
+    )?;
+    field(&mut out, "objects", false)?;
+    list(
+        &mut out,
+        scene.objects.iter().enumerate().map(|(i, o)| object(i, o)),
+    )?;
+    field(&mut out, "points", false)?;
+    list(&mut out, scene.points.iter().map(point_entry))?;
+    field(&mut out, "schema", false)?;
+    serde_json::to_writer(&mut out, &head["schema"])?;
+    field(&mut out, "settings", false)?;
+    serde_json::to_writer(&mut out, &head["settings"])?;
+    out.write_all(b"}\n")?;
+    out.flush()
+}
+
+/// A JSON array written element by element.
+fn list(out: &mut impl std::io::Write, items: impl Iterator<Item = Value>) -> std::io::Result<()> {
+    out.write_all(b"[")?;
+    for (i, item) in items.enumerate() {
+        if i > 0 {
+            out.write_all(b",")?;
+        }
+        serde_json::to_writer(&mut *out, &item)?;
+    }
+    out.write_all(b"]")
+}
+
+/// The small, fixed-size part of the scene object.
+fn header(path: &Path, scene: &Scene) -> Value {
     let s = &scene.settings;
     json!({
         "schema": SCHEMA,
@@ -36,22 +101,46 @@ pub fn scene_to_json(path: &Path, scene: &Scene) -> Value {
         },
         "frame": scene.frame,
         "camera": camera(&scene.camera),
-        "points": scene.points.iter().map(|p| {
-            let (position, ideal) = match p.position {
-                PointPosition::Interior(q) => (q.coords(), false),
-                PointPosition::Ideal(q) => (q.coords(), true),
-            };
-            json!({
-                "number": p.number,
-                "name": p.name,
-                "position": vec3(position),
-                "ideal": ideal,
-            })
-        }).collect::<Vec<_>>(),
-        "materials": scene.materials.iter().enumerate().map(|(i, m)| material(i, m)).collect::<Vec<_>>(),
-        "lights": scene.lights.iter().enumerate().map(|(i, l)| light(i, l)).collect::<Vec<_>>(),
-        "objects": scene.objects.iter().enumerate().map(|(i, o)| object(i, o)).collect::<Vec<_>>(),
     })
+}
+
+fn point_entry(p: &hscene_lang::ir::PointRecord) -> Value {
+    let (position, ideal) = match p.position {
+        PointPosition::Interior(q) => (q.coords(), false),
+        PointPosition::Ideal(q) => (q.coords(), true),
+    };
+    json!({
+        "number": p.number,
+        "name": p.name,
+        "position": vec3(position),
+        "ideal": ideal,
+    })
+}
+
+/// The whole scene as one JSON value (tests compare the stream with it).
+#[cfg(test)]
+pub fn scene_to_json(path: &Path, scene: &Scene) -> Value {
+    let mut v = header(path, scene);
+    v["points"] = scene.points.iter().map(point_entry).collect();
+    v["materials"] = scene
+        .materials
+        .iter()
+        .enumerate()
+        .map(|(i, m)| material(i, m))
+        .collect();
+    v["lights"] = scene
+        .lights
+        .iter()
+        .enumerate()
+        .map(|(i, l)| light(i, l))
+        .collect();
+    v["objects"] = scene
+        .objects
+        .iter()
+        .enumerate()
+        .map(|(i, o)| object(i, o))
+        .collect();
+    v
 }
 
 fn vec3(v: hgeom::glam::DVec3) -> Value {
@@ -235,6 +324,9 @@ Objects {
         assert!(!compiled.has_errors(), "{:#?}", compiled.diagnostics);
         let scene = compiled.scene.unwrap();
         let v = scene_to_json(Path::new("x.hsc"), &scene);
+        let mut streamed = Vec::new();
+        write_scene_json(&mut streamed, Path::new("x.hsc"), &scene).unwrap();
+        assert_eq!(String::from_utf8(streamed).unwrap(), format!("{v}\n"));
         assert_eq!(v["schema"], 1);
         assert_eq!(v["points"][3]["ideal"], true);
         assert_eq!(v["points"][0]["name"], "c");

@@ -1,26 +1,12 @@
 //! `hscene fmt`: the canonical layout (`hscene_lang::format`) applied to
 //! files in place, checked (`--check`), or from stdin to stdout (`-`).
 
-use std::io::{IsTerminal, Read, Write};
+use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use crate::cli::{ColorChoice, Format};
+use crate::cli::{ColorChoice, FmtArgs, Format};
 use crate::{EXIT_SCENE_ERRORS, EXIT_USAGE_OR_IO, report};
-
-#[derive(Debug, clap::Args)]
-pub struct FmtArgs {
-    /// Scene files to format in place; `-` formats stdin to stdout.
-    #[arg(required = true)]
-    pub scenes: Vec<PathBuf>,
-    /// Change nothing; list the files that are not formatted (for stdin,
-    /// print nothing) and exit with status 1 if there are any.
-    #[arg(long)]
-    pub check: bool,
-    /// The file name to show in messages for a scene read from stdin (`-`).
-    #[arg(long, value_name = "PATH")]
-    pub stdin_filename: Option<PathBuf>,
-}
 
 /// What became of one file.
 enum Outcome {
@@ -85,11 +71,14 @@ fn formatted(name: &Path, source: &str, color: ColorChoice) -> Option<String> {
 }
 
 fn stdin(name: &Path, check: bool, color: ColorChoice) -> Outcome {
-    let mut source = String::new();
-    if let Err(e) = std::io::stdin().read_to_string(&mut source) {
-        eprintln!("error: cannot read stdin: {e}");
-        return Outcome::Io;
-    }
+    // Bounded and decoded as `check` reads scenes (docs/limits.md).
+    let source = match crate::input::read_scene(Path::new("-")) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("error: cannot read stdin: {e}");
+            return Outcome::Io;
+        }
+    };
     let Some(text) = formatted(name, &source, color) else {
         return Outcome::SyntaxErrors;
     };
@@ -111,7 +100,7 @@ fn stdin(name: &Path, check: bool, color: ColorChoice) -> Outcome {
 }
 
 fn file(path: &Path, check: bool, color: ColorChoice) -> Outcome {
-    let source = match std::fs::read_to_string(path) {
+    let source = match crate::input::read_scene(path) {
         Ok(s) => s,
         Err(e) => {
             eprintln!("error: cannot read {}: {e}", path.display());

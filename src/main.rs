@@ -5,6 +5,7 @@ mod cli;
 mod emit;
 mod explain;
 mod fmt_cmd;
+mod input;
 mod lsp;
 mod report;
 
@@ -72,16 +73,8 @@ fn compile_options(scene: &Path, frame: u32) -> hscene_lang::Options {
     }
 }
 
-fn read_scene(path: &Path) -> Result<String, ExitCode> {
-    let read = if path == Path::new("-") {
-        std::io::read_to_string(std::io::stdin())
-    } else {
-        std::fs::read_to_string(path)
-    };
-    read.map_err(|e| {
-        eprintln!("error: cannot read {}: {e}", path.display());
-        ExitCode::from(EXIT_USAGE_OR_IO)
-    })
+fn read_scene(path: &Path, format: Format) -> Result<String, String> {
+    input::read_scene(path).map_err(|e| input::describe_failure(path, &e, format))
 }
 
 fn check(args: &CheckArgs, color: ColorChoice) -> ExitCode {
@@ -101,7 +94,7 @@ fn check(args: &CheckArgs, color: ColorChoice) -> ExitCode {
     let mut io_failure = false;
     let mut out = std::io::stdout().lock();
     for path in &args.scenes {
-        let read = read_scene(path);
+        let read = read_scene(path, format);
         // A scene from stdin takes the name (and mesh directory) given for it.
         let stdin_name = Path::new("<stdin>");
         let path = if path == Path::new("-") {
@@ -111,7 +104,13 @@ fn check(args: &CheckArgs, color: ColorChoice) -> ExitCode {
         };
         let source = match read {
             Ok(s) => s,
-            Err(_) => {
+            Err(message) => {
+                // Machine-readable output stays on the stream it is read from.
+                if format == Format::Json && !emit_ir {
+                    let _ = out.write_all(message.as_bytes());
+                } else {
+                    eprint!("{message}");
+                }
                 io_failure = true;
                 continue;
             }
@@ -119,6 +118,26 @@ fn check(args: &CheckArgs, color: ColorChoice) -> ExitCode {
         let compiled = hscene_lang::compile_with(&source, &compile_options(path, args.frame));
         any_errors |=
             compiled.has_errors() || (args.deny_warnings && !compiled.diagnostics.is_empty());
+        // The same rule as `render --frame`: no frame past the last.
+        if let Some(scene) = &compiled.scene
+            && args.frame >= scene.settings.frames
+        {
+            let message = frame_past_end(args.frame, scene.settings.frames);
+            let message = match format {
+                Format::Json => format!(
+                    "{}\n",
+                    serde_json::json!({"file": path.display().to_string(), "severity": "error", "message": message})
+                ),
+                Format::Human | Format::Short => format!("error: {message}\n"),
+            };
+            if format == Format::Json && !emit_ir {
+                let _ = out.write_all(message.as_bytes());
+            } else {
+                eprint!("{message}");
+            }
+            io_failure = true;
+            continue;
+        }
         let text = report::format_diagnostics(
             path,
             &source,
@@ -130,8 +149,7 @@ fn check(args: &CheckArgs, color: ColorChoice) -> ExitCode {
             eprint!("{text}");
             // A scene with errors has no IR (`compiled.scene` is `None`).
             if let Some(scene) = &compiled.scene {
-                let line = format!("{}\n", emit::scene_to_json(path, scene));
-                if out.write_all(line.as_bytes()).is_err() {
+                if emit::write_scene_json(&mut out, path, scene).is_err() {
                     return ExitCode::from(EXIT_USAGE_OR_IO);
                 }
             }
@@ -148,17 +166,50 @@ fn check(args: &CheckArgs, color: ColorChoice) -> ExitCode {
     }
 }
 
-fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
-    let source = match read_scene(&args.scene) {
-        Ok(s) => s,
-        Err(code) => return code,
+/// The message for a frame number past the animation's end.
+fn frame_past_end(k: u32, frames: u32) -> String {
+    format!(
+        "--frame {k} is past the scene's last frame ({} of `frames = {frames}`, counted from 0)",
+        frames.saturating_sub(1)
+    )
+}
+
+/// Everything about the outputs is checked before the first ray.
+fn check_outputs(args: &RenderArgs, outputs: &[std::path::PathBuf]) -> Result<(), ExitCode> {
+    let overwrite = if args.force {
+        hrender::Overwrite::Force
+    } else {
+        hrender::Overwrite::Writable
     };
-    // Refuse a bad output name or depth before spending time on the render.
-    if let Err(e) = hrender::ImageFormat::from_path(&args.output)
-        .and_then(|f| hrender::check_depth(f, sample_depth(args.depth, f)))
-    {
-        eprintln!("error: {e}");
-        return ExitCode::from(EXIT_USAGE_OR_IO);
+    for output in outputs {
+        let checked = hrender::ImageFormat::from_path(output).and_then(|format| {
+            let depth = sample_depth(args.depth, format);
+            hrender::check_output(output, depth, &[&args.scene], overwrite)
+        });
+        if let Err(e) = checked {
+            eprintln!("error: {e}");
+            return Err(ExitCode::from(EXIT_USAGE_OR_IO));
+        }
+    }
+    Ok(())
+}
+
+fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
+    // An interrupted render leaves no temporary file behind.
+    let _ = ctrlc::set_handler(|| {
+        hrender::remove_unfinished_outputs();
+        std::process::exit(130);
+    });
+    let source = match read_scene(&args.scene, Format::Short) {
+        Ok(s) => s,
+        Err(message) => {
+            eprint!("{message}");
+            return ExitCode::from(EXIT_USAGE_OR_IO);
+        }
+    };
+    // Refuse a bad output before spending time on the scene.
+    if let Err(code) = check_outputs(args, std::slice::from_ref(&args.output)) {
+        return code;
     }
     // `--exposure auto` is measured on the first frame rendered and kept.
     let auto_ev = std::cell::Cell::new(None);
@@ -192,11 +243,14 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
     if let Some(k) = args.frame
         && k >= frames
     {
-        eprintln!(
-            "error: --frame {k} is past the scene's last frame ({} of `frames = {frames}`, counted from 0)",
-            frames - 1
-        );
+        eprintln!("error: {}", frame_past_end(k, frames));
         return ExitCode::from(EXIT_USAGE_OR_IO);
+    }
+    if args.frame.is_none() && frames > 1 {
+        let outputs: Vec<_> = (0..frames).map(|k| frame_path(&args.output, k)).collect();
+        if let Err(code) = check_outputs(args, &outputs) {
+            return code;
+        }
     }
     if args.frame.is_some() || frames == 1 {
         return render_frame(args, &scene, &args.output, stderr_tty, &auto_ev);
@@ -285,7 +339,7 @@ fn render_frame(
         resolution: args
             .resolution
             .map(|(width, height)| Resolution { width, height }),
-        threads: args.threads,
+        threads: args.threads.map(usize::from),
         samples: args.samples,
         seed: args.seed,
         exposure: match args.exposure {
@@ -378,6 +432,13 @@ fn render_frame(
         eprintln!("note: --exposure auto chose {ev:.2} stops");
     }
     warn_if_almost_black(&rendered.image, display, auto.is_some());
+    if rendered.stats.cut_trees > 0 {
+        eprintln!(
+            "warning: {} primary ray(s) reached the budget of {} reflected and transmitted rays; their ray trees were cut short",
+            rendered.stats.cut_trees,
+            hrender::MAX_SECONDARY_RAYS
+        );
+    }
     if stderr_tty {
         let secs = started.elapsed().as_secs_f64();
         eprintln!(

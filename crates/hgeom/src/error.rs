@@ -14,7 +14,7 @@ pub enum GeomError {
     #[error("coordinates must be finite")]
     NotFinite,
     /// An h-point must lie strictly inside the unit ball.
-    #[error("point lies on or outside the absolute (|x| = {norm})")]
+    #[error("point lies on the absolute or too close to it for f64 (|x| = {norm})")]
     NotInBall {
         /// Euclidean norm of the offending point.
         norm: f64,
@@ -32,7 +32,7 @@ pub enum GeomError {
     #[error("points are collinear")]
     Collinear,
     /// A radius or thickness must be positive and finite.
-    #[error("radius must be positive and finite, got {0}")]
+    #[error("radius must be positive and finite, got {}", crate::Compact(*.0))]
     BadRadius(f64),
     /// A polygon needs at least three vertices.
     #[error("a polygon needs at least 3 vertices, got {0}")]
@@ -72,7 +72,7 @@ pub enum GeomError {
         sinh_product: f64,
     },
     /// An angle outside the range a construction admits.
-    #[error("angle {0} rad is outside the admissible range")]
+    #[error("angle {} rad is outside the admissible range", crate::Compact(*.0))]
     BadAngle(f64),
     /// A matrix that must be orthogonal is not (to the stated tolerance).
     #[error("matrix is not orthogonal (max |Q Q^T - I| = {defect:e})")]

@@ -36,6 +36,7 @@
 #![warn(missing_docs)]
 
 pub mod accurate;
+mod compact;
 mod cylinder;
 mod distance;
 mod error;
@@ -62,6 +63,7 @@ mod serde_impls;
 mod shape;
 mod sphere;
 
+pub use compact::Compact;
 pub use cylinder::HCylinder;
 pub use error::GeomError;
 pub use fermi::{fermi_coordinates, from_fermi_coordinates};

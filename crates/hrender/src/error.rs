@@ -49,6 +49,23 @@ pub enum RenderError {
         /// Encoder message.
         message: String,
     },
+    /// The output names the file being read (also through a link).
+    #[error("the output {0} is the input file; choose another output name")]
+    OutputIsInput(PathBuf),
+    /// The output exists and its permissions forbid writing it.
+    #[error("the output {0} exists and is read-only; pass --force to replace it")]
+    ReadOnlyOutput(PathBuf),
+    /// The output exists and is not a regular file (a directory, a device).
+    #[error("the output {0} exists and is not a regular file")]
+    OutputNotAFile(PathBuf),
+    /// The output's directory does not exist or cannot be written.
+    #[error("cannot write into the directory of {path}: {source}")]
+    OutputDirectory {
+        /// The output asked for.
+        path: PathBuf,
+        /// The underlying error.
+        source: std::io::Error,
+    },
     /// Building the worker pool failed.
     #[error("cannot start worker threads: {0}")]
     Threads(String),

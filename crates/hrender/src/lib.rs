@@ -29,9 +29,12 @@ mod icc;
 mod image;
 mod nets;
 mod output;
+mod output_check;
+mod ray_budget;
 mod sampling;
 mod scene;
 mod tracer;
+mod unfinished;
 
 use std::collections::HashMap;
 
@@ -48,12 +51,19 @@ pub use exposure::{AUTO_KEY, DARK_LEVEL, auto_exposure, is_almost_black, luminan
 pub use image::Image;
 pub use nets::{PixelNet, Sample};
 pub use output::{ImageFormat, SampleDepth, check_depth, write_image, write_image_with};
+pub use output_check::{Overwrite, check_output};
+pub use ray_budget::{MAX_SECONDARY_RAYS, RayBudget};
 pub use sampling::{SampleStream, Sampler};
 pub use scene::{Nearest, PreparedScene, Primitive};
 pub use tracer::{TraceStats, Tracer};
+pub use unfinished::remove_unfinished_outputs;
 
 /// Most samples per pixel a render accepts.
 pub const MAX_SAMPLES: u32 = hscene_lang::MAX_SAMPLES;
+
+/// Most worker threads a render starts: far above any core count a render
+/// can use, far below what exhausts the system's thread limit.
+pub const MAX_THREADS: usize = 1024;
 
 /// Largest exposure correction, in stops, either way: `2^64` already maps
 /// the faintest visible radiance onto the brightest.
@@ -110,6 +120,13 @@ impl RenderOptions {
                 self.exposure
             )));
         }
+        if let Some(threads) = self.threads
+            && !(1..=MAX_THREADS).contains(&threads)
+        {
+            return Err(RenderError::InvalidOption(format!(
+                "threads must be from 1 to {MAX_THREADS}, not {threads}"
+            )));
+        }
         if self
             .resolution
             .is_some_and(|r| r.width == 0 || r.height == 0)
@@ -130,6 +147,9 @@ pub struct RenderStats {
     /// Pixels with a numeric failure in at least one of their rays or
     /// shading results; the failing contribution shows the background.
     pub numeric_failures: u64,
+    /// Primary rays (pixel samples or interpolation nodes) whose ray tree
+    /// was cut at [`MAX_SECONDARY_RAYS`].
+    pub cut_trees: u64,
 }
 
 /// A finished render.
@@ -179,7 +199,7 @@ pub fn render_region(
     let pool = {
         let mut b = rayon::ThreadPoolBuilder::new();
         if let Some(n) = options.threads {
-            b = b.num_threads(n.max(1));
+            b = b.num_threads(n);
         }
         b.build().map_err(|e| RenderError::Threads(e.to_string()))?
     };
@@ -431,6 +451,7 @@ fn render_in_pool(
     for (row, failed, s) in rows {
         pixels.extend(row);
         stats.rays += s.rays;
+        stats.cut_trees += s.cut_trees;
         stats.numeric_failures += failed;
     }
     Ok(Rendered {

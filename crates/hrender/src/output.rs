@@ -105,8 +105,20 @@ pub fn check_depth(format: ImageFormat, depth: SampleDepth) -> Result<(), Render
     Ok(())
 }
 
+/// The directory an output goes into (`.` for a bare file name).
+pub(crate) fn output_dir(path: &Path) -> &Path {
+    match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    }
+}
+
 /// Write the image to `path` in the format its extension names; integer
 /// samples go through `display`.
+///
+/// Errors name `path`, never the temporary file. While the temporary file
+/// exists it is listed for [`remove_unfinished_outputs`], which a signal
+/// handler calls before the process exits.
 pub fn write_image_with(
     image: &Image,
     path: &Path,
@@ -119,15 +131,13 @@ pub fn write_image_with(
         path: path.to_path_buf(),
         source,
     };
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => Path::new("."),
-    };
     let tmp = tempfile::Builder::new()
         .prefix(".hscene-")
         .suffix(".part")
-        .tempfile_in(dir)
-        .map_err(io)?;
+        .tempfile_in(output_dir(path))
+        // tempfile names its file in the message; only the kind is kept.
+        .map_err(|e| io(e.kind().into()))?;
+    let live = crate::unfinished::LIVE.register(tmp.path());
     {
         let mut out = BufWriter::new(tmp.as_file());
         match format {
@@ -148,8 +158,7 @@ pub fn write_image_with(
     if let Some(p) = permissions {
         tmp.as_file().set_permissions(p).map_err(io)?;
     }
-    tmp.persist(path).map_err(|e| io(e.error))?;
-    Ok(())
+    live.finish(|| tmp.persist(path).map(drop).map_err(|e| io(e.error)))
 }
 
 #[cfg(unix)]

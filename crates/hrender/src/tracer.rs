@@ -12,6 +12,7 @@ use hscene_lang::ir::{Material, Pattern, Rgb, Texture};
 
 use crate::color::Color;
 use crate::fog::through_fog;
+use crate::ray_budget::RayBudget;
 use crate::sampling::SampleStream;
 use crate::scene::{Nearest, PreparedLight, PreparedObject, PreparedScene};
 
@@ -38,6 +39,8 @@ pub struct TraceStats {
     /// results that were not finite. Each is replaced by the background and
     /// counted, never silently.
     pub failures: u64,
+    /// Primary rays whose ray tree the [`RayBudget`] cut short.
+    pub cut_trees: u64,
 }
 
 impl TraceStats {
@@ -46,6 +49,7 @@ impl TraceStats {
         TraceStats {
             rays: self.rays + o.rays,
             failures: self.failures + o.failures,
+            cut_trees: self.cut_trees + o.cut_trees,
         }
     }
 }
@@ -78,7 +82,9 @@ impl<'s> Tracer<'s> {
         stream: &mut SampleStream,
         stats: &mut TraceStats,
     ) -> Color {
-        let c = self.trace(ray, 0, 1.0, stream, stats);
+        let mut budget = RayBudget::default();
+        let c = self.trace(ray, 0, 1.0, &mut budget, stream, stats);
+        stats.cut_trees += u64::from(budget.was_cut());
         if c.is_finite() {
             c
         } else {
@@ -94,6 +100,7 @@ impl<'s> Tracer<'s> {
         ray: &Ray,
         depth: u32,
         weight: f64,
+        budget: &mut RayBudget,
         stream: &mut SampleStream,
         stats: &mut TraceStats,
     ) -> Color {
@@ -159,11 +166,11 @@ impl<'s> Tracer<'s> {
                 origin: p,
                 dir: renormalize(p, reflect(d, n)),
             };
-            if m.reflection > 0.0 && weight * m.reflection > MIN_WEIGHT {
-                color += self.trace(&reflected, depth + 1, weight * m.reflection, stream, stats)
-                    * m.reflection;
+            if m.reflection > 0.0 && weight * m.reflection > MIN_WEIGHT && budget.take() {
+                let w = weight * m.reflection;
+                color += self.trace(&reflected, depth + 1, w, budget, stream, stats) * m.reflection;
             }
-            if m.transmission > 0.0 && weight * m.transmission > MIN_WEIGHT {
+            if m.transmission > 0.0 && weight * m.transmission > MIN_WEIGHT && budget.take() {
                 let (n1, n2) = if entering {
                     (1.0, m.refraction)
                 } else {
@@ -176,8 +183,8 @@ impl<'s> Tracer<'s> {
                     origin: p,
                     dir: renormalize(p, dir),
                 };
-                color += self.trace(&next, depth + 1, weight * m.transmission, stream, stats)
-                    * m.transmission;
+                let w = weight * m.transmission;
+                color += self.trace(&next, depth + 1, w, budget, stream, stats) * m.transmission;
             }
         }
         match &self.scene.fog {

@@ -145,6 +145,8 @@ codes! {
     // Files.
     MeshFileUnreadable = "HSC0501", Error, "mesh file cannot be read";
     MeshFileInvalid = "HSC0502", Error, "invalid mesh file";
+    // Limits.
+    TooManyPrimitives = "HSC0601", Error, "too many primitives";
     // Lints.
     UnusedPoint = "HSC1001", Warning, "unused point";
     UnusedMaterial = "HSC1002", Warning, "unused material";
@@ -277,12 +279,14 @@ pub struct LineIndex {
 impl LineIndex {
     /// Indexes `source` (the text is copied).
     pub fn new(source: &str) -> Self {
+        // LF, CRLF and a lone CR each end a line (see `crate::source`).
+        let bytes = source.as_bytes();
         let mut line_starts = vec![0];
         line_starts.extend(
-            source
-                .bytes()
+            bytes
+                .iter()
                 .enumerate()
-                .filter(|&(_, b)| b == b'\n')
+                .filter(|&(i, &b)| b == b'\n' || (b == b'\r' && bytes.get(i + 1) != Some(&b'\n')))
                 .map(|(i, _)| i + 1),
         );
         LineIndex {
@@ -307,6 +311,24 @@ impl LineIndex {
         (line, col)
     }
 
+    /// The byte range of the line holding byte `offset` (clamped to the
+    /// source), without its line end.
+    pub fn line_bounds(&self, offset: usize) -> Span {
+        let offset = offset.min(self.source.len());
+        let line = self.line_starts.partition_point(|&s| s <= offset);
+        let start = self.line_starts[line - 1];
+        let end = self
+            .line_starts
+            .get(line)
+            .map_or(self.source.len(), |&next| next);
+        let text = &self.source.as_bytes()[start..end];
+        let trimmed = text
+            .iter()
+            .rposition(|&b| b != b'\n' && b != b'\r')
+            .map_or(0, |i| i + 1);
+        Span::new(start, start + trimmed)
+    }
+
     /// Number of lines (at least 1, even for an empty source).
     pub fn line_count(&self) -> usize {
         self.line_starts.len()
@@ -321,7 +343,7 @@ mod tests {
     #[test]
     fn code_table_is_consistent() {
         assert_eq!(Code::ALL.len(), CODES.len());
-        assert_eq!(Code::ALL.len(), 45);
+        assert_eq!(Code::ALL.len(), 46);
         let mut strings = HashSet::new();
         for &(code, s, sev, title) in CODES {
             assert_eq!(code.as_str(), s);
@@ -430,6 +452,23 @@ mod tests {
         // Inside a multi-byte char: the char's own column.
         assert_eq!(idx.line_col(4), (1, 2));
         assert_eq!(idx.line_col(src.len()), (2, 9));
+    }
+
+    #[test]
+    fn every_line_end_convention_counts_once() {
+        let idx = LineIndex::new("a\rb\r\nc\nd");
+        assert_eq!(idx.line_count(), 4);
+        assert_eq!(idx.line_col(2), (2, 1));
+        assert_eq!(idx.line_col(5), (3, 1));
+        assert_eq!(idx.line_col(7), (4, 1));
+    }
+
+    #[test]
+    fn line_bounds_exclude_the_line_end() {
+        let idx = LineIndex::new("ab\r\ncd\ne");
+        assert_eq!(idx.line_bounds(1), Span::new(0, 2));
+        assert_eq!(idx.line_bounds(4), Span::new(4, 6));
+        assert_eq!(idx.line_bounds(99), Span::new(7, 8));
     }
 
     #[test]

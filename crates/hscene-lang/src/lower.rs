@@ -7,11 +7,14 @@
 //! see the final positions. Every problem found is reported; lowering goes on
 //! past errors so one run reports as much as it can.
 
+mod budget;
 mod figures;
 mod light_strength;
 mod moves;
 pub(crate) mod objects;
+mod ranges;
 mod seen_from;
+mod suggest;
 mod view_globals;
 mod view_lint;
 
@@ -154,6 +157,10 @@ struct Lowerer<'d> {
     time: f64,
     /// The `animate` clauses seen.
     animations: Vec<Span>,
+    /// Primitives so far, and whether the cap was reported (`budget.rs`).
+    primitives: u64,
+    primitive_cap_reported: bool,
+    light_cap_reported: bool,
 }
 
 #[derive(Default)]
@@ -212,6 +219,9 @@ pub(crate) fn lower(
         camera_parts: CameraParts::default(),
         view: view_globals::ViewParts::default(),
         point_ref_failed: file.incomplete,
+        primitives: 0,
+        primitive_cap_reported: false,
+        light_cap_reported: false,
         material_ref_failed: file.incomplete,
     };
     lw.check_section_names(file, source);
@@ -545,7 +555,10 @@ impl Lowerer<'_> {
                                 self.error(
                                     Code::InvalidValue,
                                     value.span(),
-                                    format!("shininess must be non-negative, got {x}"),
+                                    format!(
+                                        "shininess must be non-negative, got {}",
+                                        hgeom::Compact(x)
+                                    ),
                                 );
                             }
                         }
@@ -558,7 +571,10 @@ impl Lowerer<'_> {
                                 self.error(
                                     Code::InvalidValue,
                                     value.span(),
-                                    format!("the index of refraction must be positive, got {x}"),
+                                    format!(
+                                        "the index of refraction must be positive, got {}",
+                                        hgeom::Compact(x)
+                                    ),
                                 );
                             }
                         }
@@ -782,6 +798,9 @@ impl Lowerer<'_> {
         let (options, strength) = self.take_irradiance_at(options);
         let (radius, samples) = self.light_options(&options)?;
         let (position, (diffuse, specular)) = (position?, strength.apply(diffuse?, specular?)?);
+        if !self.light_fits(st.span) {
+            return None;
+        }
         self.lights.push((
             Light {
                 position,
@@ -824,7 +843,8 @@ impl Lowerer<'_> {
                                 Code::InvalidValue,
                                 value.span(),
                                 format!(
-                                    "a light's radius must be from 0 to {MAX_LIGHT_RADIUS}, got {r}"
+                                    "a light's radius must be from 0 to {MAX_LIGHT_RADIUS}, got {}",
+                                    hgeom::Compact(r)
                                 ),
                             )
                             .with_help("the radius is a hyperbolic length; 0 makes a point light"),
@@ -1367,10 +1387,8 @@ impl Lowerer<'_> {
                         )
                     }
                     (RefTarget::Name(n), _) => {
-                        let mut names: Vec<&str> =
-                            self.point_names.keys().map(String::as_str).collect();
-                        names.sort_unstable();
-                        match objects::closest(n, &names) {
+                        let names = self.point_names.keys().map(String::as_str);
+                        match suggest::closest_declared(n, names) {
                             Some(s) => format!("did you mean `%{s}`?"),
                             None => "declare it in `Points` as `name = (x, y, z);`".to_string(),
                         }
@@ -1468,10 +1486,9 @@ impl Lowerer<'_> {
             }
             None => {
                 self.material_ref_failed = true;
-                let mut names: Vec<&str> = self.material_names.keys().map(String::as_str).collect();
-                names.sort_unstable();
+                let names = self.material_names.keys().map(String::as_str);
                 let suggestion = match &r.target {
-                    RefTarget::Name(n) => objects::closest(n, &names),
+                    RefTarget::Name(n) => suggest::closest_declared(n, names),
                     RefTarget::Index(_) => None,
                 };
                 let help = match (suggestion, self.materials.len()) {
@@ -1554,6 +1571,10 @@ impl Lowerer<'_> {
             // An overflowing literal was already reported by the parser.
             Value::Number { value, .. } if !value.is_finite() => None,
             Value::Number { value, .. } => Some(*value),
+            Value::Ident(name) if crate::numbers::is_non_finite_word(&name.text) => {
+                self.report(crate::numbers::non_finite(name.span, &name.text));
+                None
+            }
             other => {
                 self.report(Diagnostic::new(
                     Code::WrongType,
@@ -1574,7 +1595,7 @@ impl Lowerer<'_> {
                 Diagnostic::new(
                     Code::NonPositiveRadius,
                     value.span(),
-                    format!("{what} must be positive, got {x}"),
+                    format!("{what} must be positive, got {}", hgeom::Compact(x)),
                 )
                 .with_help("lengths are hyperbolic and must be greater than 0"),
             );
@@ -1590,7 +1611,10 @@ impl Lowerer<'_> {
             self.report(Diagnostic::new(
                 Code::InvalidValue,
                 value.span(),
-                format!("`{what}` must be between 0 and 1, got {x}"),
+                format!(
+                    "`{what}` must be between 0 and 1, got {}",
+                    hgeom::Compact(x)
+                ),
             ));
             None
         }
@@ -1608,7 +1632,10 @@ impl Lowerer<'_> {
             self.report(Diagnostic::new(
                 Code::InvalidValue,
                 span,
-                format!("{what} must be a whole number from {min} to {max}, got {x}"),
+                format!(
+                    "{what} must be a whole number from {min} to {max}, got {}",
+                    hgeom::Compact(x)
+                ),
             ));
             None
         }
@@ -1644,15 +1671,7 @@ impl Lowerer<'_> {
 
     fn rgb(&mut self, value: &Value) -> Option<Rgb> {
         let v = self.tuple_of_numbers(value, 3, "a colour `(r, g, b)`")?;
-        if v.iter().any(|c| *c < 0.0) {
-            self.report(Diagnostic::new(
-                Code::InvalidValue,
-                value.span(),
-                "colour components must be non-negative",
-            ));
-            return None;
-        }
-        Some(Rgb::new(v[0], v[1], v[2]))
+        self.colour_in_range(value, [v[0], v[1], v[2]])
     }
 
     // ----- camera and lints -----------------------------------------------------

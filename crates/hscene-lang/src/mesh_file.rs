@@ -19,6 +19,8 @@ use std::path::Path;
 use hgeom::Point;
 use hgeom::glam::DVec3;
 
+mod obj;
+
 /// The vertices and triangles read from a mesh file, in file coordinates.
 ///
 /// Invariants: every coordinate is finite, every index is below
@@ -31,21 +33,45 @@ pub struct MeshData {
     pub triangles: Vec<[u32; 3]>,
 }
 
+/// Largest mesh file read, in bytes (64 MiB): several million triangles,
+/// far more than a scene can hold (see `docs/limits.md`).
+pub const MAX_MESH_FILE_BYTES: u64 = 64 << 20;
+
 /// Why a mesh file could not be used.
 #[derive(Debug)]
 pub enum MeshFileError {
     /// The file could not be opened or read.
     Io(std::io::Error),
+    /// The path names something other than a regular file (a directory, a
+    /// device such as `/dev/zero`, a FIFO, a socket).
+    NotAFile,
+    /// The file is larger than [`MAX_MESH_FILE_BYTES`].
+    TooLarge {
+        /// Its size in bytes.
+        size: u64,
+    },
     /// The extension is neither `.obj` nor `.ply`.
     UnknownFormat,
-    /// The file is not valid OBJ/PLY, or lacks what a mesh needs.
+    /// The file is not valid OBJ/PLY, or lacks what a mesh needs. The text
+    /// names a position and a kind of problem, never the file's content.
     Invalid(String),
+}
+
+impl MeshFileError {
+    fn invalid_at(line: usize, problem: &str) -> MeshFileError {
+        MeshFileError::Invalid(format!("line {line}: {problem}"))
+    }
 }
 
 impl fmt::Display for MeshFileError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             MeshFileError::Io(e) => write!(f, "{e}"),
+            MeshFileError::NotAFile => f.write_str("it is not a regular file"),
+            MeshFileError::TooLarge { size } => write!(
+                f,
+                "it has {size} bytes, more than the limit of {MAX_MESH_FILE_BYTES}"
+            ),
             MeshFileError::UnknownFormat => {
                 f.write_str("the file name does not end in .obj or .ply")
             }
@@ -56,24 +82,81 @@ impl fmt::Display for MeshFileError {
 
 impl std::error::Error for MeshFileError {}
 
+/// The formats a mesh is read from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MeshFormat {
+    /// Wavefront OBJ.
+    Obj,
+    /// PLY, ASCII or binary.
+    Ply,
+}
+
+impl MeshFormat {
+    /// The format a file name's extension names (case-insensitively).
+    pub fn from_path(path: &Path) -> Option<MeshFormat> {
+        match path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase)
+            .as_deref()
+        {
+            Some("obj") => Some(MeshFormat::Obj),
+            Some("ply") => Some(MeshFormat::Ply),
+            _ => None,
+        }
+    }
+}
+
 /// Reads an OBJ or PLY file (chosen by extension, case-insensitively).
 ///
+/// Only a regular file of at most [`MAX_MESH_FILE_BYTES`] is read: a device,
+/// a FIFO or a huge file is refused before any of it is read, and the read
+/// itself stops at the limit (a file growing meanwhile cannot get past it).
 /// Every object of an OBJ file is merged into one mesh; materials, normals
 /// and texture coordinates are ignored. A PLY file needs a `vertex` element
 /// with `x`, `y`, `z` and a `face` element with a `vertex_indices` (or
 /// `vertex_index`) list.
 pub fn load(path: &Path) -> Result<MeshData, MeshFileError> {
-    let extension = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    let data = match extension.as_deref() {
-        Some("obj") => load_obj(path)?,
-        Some("ply") => load_ply(path)?,
-        _ => return Err(MeshFileError::UnknownFormat),
+    let format = MeshFormat::from_path(path).ok_or(MeshFileError::UnknownFormat)?;
+    parse(format, &read_bounded(path)?)
+}
+
+/// Parses the bytes of a mesh file and checks the [`MeshData`] invariants.
+pub fn parse(format: MeshFormat, bytes: &[u8]) -> Result<MeshData, MeshFileError> {
+    let data = match format {
+        MeshFormat::Obj => obj::parse(bytes)?,
+        MeshFormat::Ply => parse_ply(bytes)?,
     };
     data.check()?;
     Ok(data)
+}
+
+fn read_bounded(path: &Path) -> Result<Vec<u8>, MeshFileError> {
+    use std::io::Read;
+    // Opening a FIFO for reading blocks until a writer comes; look first.
+    let meta = std::fs::metadata(path).map_err(MeshFileError::Io)?;
+    if !meta.is_file() {
+        return Err(MeshFileError::NotAFile);
+    }
+    if meta.len() > MAX_MESH_FILE_BYTES {
+        return Err(MeshFileError::TooLarge { size: meta.len() });
+    }
+    let file = std::fs::File::open(path).map_err(MeshFileError::Io)?;
+    // The path may have been swapped for something else since the check.
+    let meta = file.metadata().map_err(MeshFileError::Io)?;
+    if !meta.is_file() {
+        return Err(MeshFileError::NotAFile);
+    }
+    let mut bytes = Vec::new();
+    file.take(MAX_MESH_FILE_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(MeshFileError::Io)?;
+    if bytes.len() as u64 > MAX_MESH_FILE_BYTES {
+        return Err(MeshFileError::TooLarge {
+            size: bytes.len() as u64,
+        });
+    }
+    Ok(bytes)
 }
 
 impl MeshData {
@@ -149,69 +232,24 @@ fn fan(face: &[u32], out: &mut Vec<[u32; 3]>) {
     }
 }
 
-fn load_obj(path: &Path) -> Result<MeshData, MeshFileError> {
-    let options = tobj::LoadOptions {
-        single_index: false,
-        triangulate: false,
-        ignore_points: true,
-        ignore_lines: true,
-    };
-    // Materials are irrelevant here; a missing .mtl must not fail the load.
-    let (models, _) = tobj::load_obj(path, &options).map_err(|e| match e {
-        tobj::LoadError::OpenFileFailed | tobj::LoadError::ReadError => MeshFileError::Io(
-            std::fs::File::open(path)
-                .err()
-                .unwrap_or_else(|| std::io::Error::other(e.to_string())),
-        ),
-        other => MeshFileError::Invalid(format!("not a valid OBJ file: {other}")),
-    })?;
-    let mut positions = Vec::new();
-    let mut triangles = Vec::new();
-    for model in &models {
-        let mesh = &model.mesh;
-        let base = u32::try_from(positions.len())
-            .map_err(|_| MeshFileError::Invalid("too many vertices".into()))?;
-        positions.extend(
-            mesh.positions
-                .chunks_exact(3)
-                .map(|c| DVec3::new(f64::from(c[0]), f64::from(c[1]), f64::from(c[2]))),
-        );
-        let shifted = |i: u32| i.saturating_add(base);
-        if mesh.face_arities.is_empty() {
-            for t in mesh.indices.chunks_exact(3) {
-                triangles.push([shifted(t[0]), shifted(t[1]), shifted(t[2])]);
-            }
-        } else {
-            let mut at = 0usize;
-            for &arity in &mesh.face_arities {
-                let end = at + arity as usize;
-                let face: Vec<u32> = mesh
-                    .indices
-                    .get(at..end)
-                    .ok_or_else(|| MeshFileError::Invalid("a face is cut short".into()))?
-                    .iter()
-                    .map(|&i| shifted(i))
-                    .collect();
-                fan(&face, &mut triangles);
-                at = end;
-            }
-        }
-    }
-    Ok(MeshData {
-        positions,
-        triangles,
-    })
-}
-
-fn load_ply(path: &Path) -> Result<MeshData, MeshFileError> {
+fn parse_ply(bytes: &[u8]) -> Result<MeshData, MeshFileError> {
     use ply_rs_bw::parser::Parser;
     use ply_rs_bw::ply::{DefaultElement, Property};
 
-    let file = std::fs::File::open(path).map_err(MeshFileError::Io)?;
-    let mut reader = std::io::BufReader::new(file);
+    // The parser's messages quote the offending line; only its position
+    // and the kind of problem are passed on.
     let ply = Parser::<DefaultElement>::new()
-        .read_ply(&mut reader)
-        .map_err(|e| MeshFileError::Invalid(format!("not a valid PLY file: {e}")))?;
+        .read_ply(&mut std::io::Cursor::new(bytes))
+        .map_err(|e| {
+            let problem = match e.kind() {
+                std::io::ErrorKind::UnexpectedEof => "not a valid PLY file: it ends early",
+                _ => "not a valid PLY file: malformed header or data",
+            };
+            match e.line() {
+                Some(line) => MeshFileError::invalid_at(line, problem),
+                None => MeshFileError::Invalid(problem.to_string()),
+            }
+        })?;
     let scalar = |p: &Property| -> Option<f64> {
         Some(match *p {
             Property::Char(x) => f64::from(x),

@@ -144,6 +144,8 @@ fn snippet(text: &str) -> String {
         }
         if c.is_control() {
             out.extend(c.escape_default());
+        } else if crate::source::is_invisible(c) {
+            out.push_str(&format!("<U+{:04X}>", u32::from(c)));
         } else {
             out.push(c);
         }
@@ -260,9 +262,16 @@ impl Scanner<'_> {
         while pos < bytes.len() {
             match bytes[pos] {
                 b' ' | b'\t' | b'\r' | b'\n' => pos += 1,
+                // A line comment ends at any line end, CR included, so a
+                // file with old Mac line ends is not one long comment.
                 b'/' if bytes.get(pos + 1) == Some(&b'/') => {
-                    pos = src[pos..].find('\n').map_or(src.len(), |i| pos + i);
+                    pos = bytes[pos..]
+                        .iter()
+                        .position(|&b| crate::source::is_line_end(b))
+                        .map_or(src.len(), |i| pos + i);
                 }
+                // A byte-order mark at the very start is not text.
+                0xEF if pos == 0 && src.starts_with('\u{feff}') => pos += 3,
                 b'/' if bytes.get(pos + 1) == Some(&b'*') => match src[pos + 2..].find("*/") {
                     Some(i) => pos = pos + 2 + i + 2,
                     None => return (src.len(), Some(pos)),
@@ -730,6 +739,12 @@ impl Scanner<'_> {
         } else {
             format!("expected {expected}, found {found}")
         };
+        let word = &self.src[span.start..span.end];
+        if crate::numbers::is_non_finite_word(word) {
+            self.diagnostics
+                .push(crate::numbers::non_finite(span, word));
+            return;
+        }
         let mut diag = Diagnostic::new(Code::Syntax, span, message);
         if at >= end && expected.contains("`;`") {
             diag = diag
@@ -821,6 +836,14 @@ impl Scanner<'_> {
             Rule::number => {
                 let text = pair.as_str();
                 let value = text.parse::<f64>().unwrap_or(f64::NAN);
+                if crate::numbers::underflows(text, value) {
+                    self.diagnostics
+                        .push(crate::numbers::underflow(span, &snippet(text)));
+                    return Some(Value::Number {
+                        value: f64::NAN,
+                        span,
+                    });
+                }
                 if !value.is_finite() {
                     self.diagnostics.push(
                         Diagnostic::new(
@@ -1281,16 +1304,22 @@ Transformations { hline (%1,%5); %1->Rotate(%2,-0.7); %2->Translate(%1); }
     fn overflowing_number_is_invalid_number_and_keeps_the_statement() {
         let src = "S { (1e999, -1e400, 1e-400); }";
         let p = parse(src);
-        assert_eq!(codes(&p), [Code::InvalidNumber, Code::InvalidNumber]);
+        assert_eq!(codes(&p), [Code::InvalidNumber; 3]);
         assert_eq!(text(src, p.diagnostics[0].span), "1e999");
         assert_eq!(text(src, p.diagnostics[1].span), "-1e400");
+        assert!(
+            p.diagnostics[2].message.contains("too small"),
+            "{:?}",
+            p.diagnostics[2]
+        );
         let Clause::Value(v) = &p.file.sections[0].statements[0].clauses[0] else {
             panic!()
         };
         let n = numbers(v);
         assert_eq!(n[0], f64::INFINITY);
         assert_eq!(n[1], f64::NEG_INFINITY);
-        assert_eq!(n[2], 0.0); // underflow is silently zero
+        // Underflow is reported, never silently zero.
+        assert!(n[2].is_nan());
     }
 
     #[test]

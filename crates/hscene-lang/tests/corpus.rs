@@ -76,3 +76,40 @@ fn scenes_and_broken_scenes_replay_too() {
         }
     }
 }
+
+/// Replays `fuzz/corpus/mesh/` with the checks of
+/// `fuzz/fuzz_targets/mesh.rs`: the first byte picks the format, the second
+/// the layout size, the rest is the file.
+#[test]
+fn mesh_fuzz_corpus_replays_without_panics() {
+    use hscene_lang::mesh_file::{MeshFormat, parse};
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/corpus/mesh");
+    let mut files = 0;
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let path = entry.unwrap().path();
+        let data = std::fs::read(&path).unwrap();
+        files += 1;
+        let [kind, size, file @ ..] = &data[..] else {
+            continue;
+        };
+        let format = if kind % 2 == 0 {
+            MeshFormat::Obj
+        } else {
+            MeshFormat::Ply
+        };
+        match parse(format, file) {
+            Err(e) => {
+                let message = e.to_string();
+                assert!(!message.contains('\n'), "{}: {message:?}", path.display());
+            }
+            Ok(mesh) => {
+                let n = mesh.positions.len();
+                assert!(mesh.triangles.iter().flatten().all(|&i| (i as usize) < n));
+                if let Some(points) = mesh.layout(0.07 * f64::from(*size).max(1.0)) {
+                    assert!(points.iter().all(|p| p.coords().length() < 1.0));
+                }
+            }
+        }
+    }
+    assert!(files >= 5, "only {files} corpus files in {}", dir.display());
+}

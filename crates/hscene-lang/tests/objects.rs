@@ -1006,8 +1006,9 @@ fn figure_diagnostics() {
     expect(&src, "HSC0403", Severity::Error, "8", 0);
     let src = format!("{MATTE} Objects {{ RegularPolygon 7, 0.3, #1; }}");
     expect(&src, "HSC0403", Severity::Error, "7", 0);
+    // Every object length has one range, 0 to 36, checked before building.
     let src = format!("{MATTE} Objects {{ Pentagon 80, #1; }}");
-    expect(&src, "HSC0308", Severity::Error, "80", 0);
+    expect(&src, "HSC0403", Severity::Error, "80", 0);
     let src = format!("{MATTE} Objects {{ Saccheri 0.5, #1; }}");
     let d = expect(&src, "HSC0107", Severity::Error, "Saccheri 0.5, #1;", 0);
     assert!(d.help.unwrap().contains("Saccheri base, leg, #M;"));

@@ -1,4 +1,5 @@
-//! Fuzz target: arbitrary bytes (lossily decoded as UTF-8) through
+//! Fuzz target: arbitrary bytes through `hscene_lang::source::decode`, and
+//! (lossily decoded as UTF-8) through
 //! `hscene_lang::compile`, then every diagnostic's span through `LineIndex`.
 //! Nothing may panic, and every span must lie inside the source on character
 //! boundaries.
@@ -9,6 +10,14 @@ use hscene_lang::{LineIndex, compile};
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
+    // Decoding keeps every byte but a BOM and leaves no lone CR.
+    if let Ok(text) = hscene_lang::source::decode(data.to_vec()) {
+        let bytes = text.as_bytes();
+        assert!(data.len() - bytes.len() <= 3);
+        assert!(
+            (0..bytes.len()).all(|i| bytes[i] != b'\r' || bytes.get(i + 1) == Some(&b'\n'))
+        );
+    }
     let src = String::from_utf8_lossy(data);
     let compiled = compile(&src);
     let index = LineIndex::new(&src);

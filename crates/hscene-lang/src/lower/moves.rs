@@ -130,18 +130,19 @@ impl Lowerer<'_> {
             target.span,
             format!("no object or light is named {}", super::quote(name)),
         );
-        let names: Vec<&str> = self
-            .targets
-            .keys()
-            .map(String::as_str)
-            .chain([CAMERA])
-            .collect();
+        // The camera and the declared targets; none when there are too many
+        // to compare (see `suggest.rs`), so this stays linear per error.
+        let mut declared: Vec<&str> = Vec::new();
+        if self.targets.len() < super::objects::MAX_CANDIDATES {
+            declared = self.targets.keys().map(String::as_str).collect();
+            declared.push(CAMERA);
+        }
         d = if self.point_names.contains_key(name) {
             let name = super::shorten(name);
             d.with_help(format!(
                 "`{name}` is a point: write `%{name}->...` to move it"
             ))
-        } else if let Some(s) = closest(name, &names) {
+        } else if let Some(s) = closest(name, &declared) {
             d.with_help(format!("did you mean `@{s}`?"))
         } else {
             d.with_help("name the object in `Objects` (`ball: Sphere %1, 0.1, #1;`) or the light in `Lights` (`sun: %2, (1,1,1), (1,1,1);`); `@camera` is the camera")

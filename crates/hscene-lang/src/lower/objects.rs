@@ -19,10 +19,8 @@ use hgeom::{
     Platonic, Point, Polyhedron, Rod, TriangleMesh, Vertex,
 };
 
-/// Largest mesh size: its farthest vertex must stay representable.
-const MAX_MESH_SIZE: f64 = 36.0;
-
 use super::figures::{self, Figure};
+use super::ranges::MAX_MESH_SIZE;
 use super::{Lowerer, TargetSlot};
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::{MaterialId, Object, Shape};
@@ -334,10 +332,29 @@ impl Lowerer<'_> {
         let (Some(material), Some(opts), true) = (material, opts, ok) else {
             return Vec::new();
         };
+        if let Kind::Figure(f) = kind {
+            let depth = args.first().map(Arg::number);
+            let (faces, edges) = (
+                opts.wireframe.is_none(),
+                opts.wireframe.or(opts.edges).is_some(),
+            );
+            let estimate = super::budget::figure_estimate(f, depth, faces, edges);
+            if !self.fits(estimate, st.span) {
+                return Vec::new();
+            }
+        }
         let Some(built) = self.build(kind, name, &args, &positional) else {
             return Vec::new();
         };
-        self.place(built, material, opts, st)
+        let placed = self.place(built, material, opts, st);
+        let cost = placed
+            .iter()
+            .map(|&i| super::budget::shape_cost(&self.objects[i].0.shape))
+            .sum();
+        if !self.charge(cost, st.span) {
+            return Vec::new();
+        }
+        placed
     }
 
     fn unknown_object(&mut self, name: &Ident) {
@@ -366,7 +383,7 @@ impl Lowerer<'_> {
             Param::Point(role) => self.point_arg(value, role).map(Arg::Point),
             Param::Vertex(role) => self.vertex_arg_for(value, role).map(Arg::Vertex),
             Param::Ideal(role) => self.ideal_arg(value, role).map(Arg::Ideal),
-            Param::Length(what) => self.positive(value, what).map(Arg::Number),
+            Param::Length(what) => self.length(value, what).map(Arg::Number),
             Param::Count(what, min, max) => {
                 let x = self.number(value)?;
                 if x.fract() == 0.0 && x >= min as f64 && x <= max as f64 {
@@ -376,7 +393,10 @@ impl Lowerer<'_> {
                         Diagnostic::new(
                             Code::InvalidValue,
                             value.span(),
-                            format!("{what} must be a whole number from {min} to {max}, got {x}"),
+                            format!(
+                                "{what} must be a whole number from {min} to {max}, got {}",
+                                hgeom::Compact(x)
+                            ),
                         )
                         .with_help(usage.to_string()),
                     );
@@ -677,9 +697,9 @@ impl Lowerer<'_> {
                 Diagnostic::new(
                     Code::InvalidValue,
                     size_span,
-                    format!("a mesh size must be at most {MAX_MESH_SIZE}, got {size}"),
+                    format!("a mesh size must be at most {MAX_MESH_SIZE}, got {}", hgeom::Compact(size)),
                 )
-                .with_help("f64 holds ball points out to about distance 37 from the origin; the size is the distance of the mesh's farthest vertex from its centre"),
+                .with_help("the size is the distance of the mesh's farthest vertex from its centre; opposite vertices are twice that apart, and f64 holds about 37"),
             );
             return None;
         }
@@ -727,6 +747,9 @@ impl Lowerer<'_> {
             return None;
         };
         let total = data.triangles.len();
+        if !self.fits(total as u64, file_span) {
+            return None;
+        }
         match TriangleMesh::new(vertices, data.triangles) {
             Ok(mesh) => {
                 let dropped = mesh.dropped_triangles();
@@ -971,6 +994,9 @@ pub(super) fn wireframe(shapes: &[Shape], radius: f64) -> Result<Vec<Rod>, GeomE
     Ok(rods)
 }
 
+/// Most candidates a "did you mean" compares.
+pub(super) const MAX_CANDIDATES: usize = 1000;
+
 /// The candidate nearest to `word` by edit distance (ignoring case), if it
 /// is close enough to be a plausible typo.
 ///
@@ -979,7 +1005,6 @@ pub(super) fn wireframe(shapes: &[Shape], radius: f64) -> Result<Vec<Rod>, GeomE
 /// get no suggestion, which keeps the cost bounded.
 pub(super) fn closest<'a>(word: &str, candidates: &[&'a str]) -> Option<&'a str> {
     const MAX_WORD: usize = 64;
-    const MAX_CANDIDATES: usize = 1000;
     if word.len() > MAX_WORD || candidates.len() > MAX_CANDIDATES {
         return None;
     }

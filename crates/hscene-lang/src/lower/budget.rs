@@ -1,0 +1,109 @@
+//! The scene-wide cap on primitives: memory and preparation time grow with
+//! the number of faces, triangles and rods, and a few bytes of scene text
+//! (`Tessellation435 7` is 41511 cubes) can ask for gigabytes. Figures and
+//! meshes whose size is known before they are built are refused before
+//! anything is allocated; every object is counted once it exists.
+
+use crate::diagnostic::{Code, Diagnostic, Span};
+use crate::ir::Shape;
+
+use super::Lowerer;
+use super::figures::Figure;
+
+/// Most primitives (faces of polygons and polyhedra, mesh triangles, rods,
+/// and one for each other shape) in one scene. A scene at the cap needs
+/// about 300 MB to lower (measured with two `Tessellation435 7`);
+/// `docs/limits.md` has the table of limits.
+pub const MAX_PRIMITIVES: u64 = 500_000;
+
+/// Most lights in one scene: every shading point sends a shadow ray to
+/// each, and the lint for lights inside objects compares each light with
+/// each object, so lights multiply every other cost.
+pub const MAX_LIGHTS: usize = 1000;
+
+/// Cells of `Tessellation435 d` for `d = 0..=7`.
+const TESSELLATION_CELLS: [u64; 8] = [1, 7, 37, 163, 661, 2643, 10497, 41511];
+
+/// Primitives a figure will have at most, where that is large enough to
+/// matter and known before building it: its faces if they are drawn and
+/// its edges as rods if they are drawn (each edge counted for every cell,
+/// an upper bound); 0 otherwise (it is counted once built).
+pub(super) fn figure_estimate(f: Figure, depth: Option<f64>, faces: bool, edges: bool) -> u64 {
+    match (f, depth) {
+        // Six faces and twelve edges per cube; the depth was checked
+        // against 0..=7.
+        (Figure::Tessellation435, Some(d)) => {
+            TESSELLATION_CELLS.get(d as usize).map_or(u64::MAX, |c| {
+                c * (6 * u64::from(faces) + 12 * u64::from(edges))
+            })
+        }
+        _ => 0,
+    }
+}
+
+/// Primitives of a shape.
+pub(super) fn shape_cost(shape: &Shape) -> u64 {
+    let n = match shape {
+        Shape::Polyhedron(p) => p.faces().len(),
+        Shape::Wireframe(rods) => rods.len(),
+        Shape::Mesh(m) => m.triangle_count(),
+        Shape::Sphere(_)
+        | Shape::Polygon(_)
+        | Shape::Plane(_)
+        | Shape::Rod(_)
+        | Shape::Cylinder(_)
+        | Shape::Horosphere(_) => 1,
+    };
+    n as u64
+}
+
+impl Lowerer<'_> {
+    /// Whether `more` primitives still fit; reports the first statement
+    /// that does not fit (once per scene).
+    pub(super) fn fits(&mut self, more: u64, span: Span) -> bool {
+        if self.primitives.saturating_add(more) <= MAX_PRIMITIVES {
+            return true;
+        }
+        if !self.primitive_cap_reported {
+            self.primitive_cap_reported = true;
+            self.report(
+                Diagnostic::new(
+                    Code::TooManyPrimitives,
+                    span,
+                    format!(
+                        "this would bring the scene to {} primitives (faces, triangles and rods), past the limit of {MAX_PRIMITIVES}",
+                        self.primitives.saturating_add(more)
+                    ),
+                )
+                .with_help("use fewer or smaller figures, a lower tessellation depth, or a coarser mesh"),
+            );
+        }
+        false
+    }
+
+    /// Whether one more light fits; reports the first that does not.
+    pub(super) fn light_fits(&mut self, span: Span) -> bool {
+        if self.lights.len() < MAX_LIGHTS {
+            return true;
+        }
+        if !self.light_cap_reported {
+            self.light_cap_reported = true;
+            self.report(
+                Diagnostic::new(
+                    Code::TooManyPrimitives,
+                    span,
+                    format!("a scene may have at most {MAX_LIGHTS} lights; this is one more"),
+                )
+                .with_help("every light costs a shadow ray at every shading point; merge nearby lights or use an area light"),
+            );
+        }
+        false
+    }
+
+    /// Counts primitives that now exist; `false` (reported) past the cap.
+    pub(super) fn charge(&mut self, more: u64, span: Span) -> bool {
+        let ok = self.fits(more, span);
+        self.primitives = self.primitives.saturating_add(more);
+        ok
+    }
+}

@@ -1,0 +1,129 @@
+//! A Wavefront OBJ reader for what a mesh needs: `v` and `f` lines.
+//!
+//! Everything else (normals, texture coordinates, groups, materials, lines,
+//! points) is skipped. Errors name the line and the kind of problem and
+//! never quote the file, whose content may be anything.
+
+use hgeom::glam::DVec3;
+
+use super::{MeshData, MeshFileError, fan};
+
+/// Parses OBJ text (any line-end convention) into positions and triangles.
+/// Face indices are 1-based, or negative to count back from the last vertex
+/// read so far; `i`, `i/t`, `i//n` and `i/t/n` are all accepted.
+pub(super) fn parse(bytes: &[u8]) -> Result<MeshData, MeshFileError> {
+    let mut positions = Vec::new();
+    let mut triangles = Vec::new();
+    let mut face = Vec::new();
+    for (index, line) in lines(bytes).enumerate() {
+        let number = index + 1;
+        let invalid = |problem: &str| MeshFileError::invalid_at(number, problem);
+        let mut words = line
+            .split(|b| b.is_ascii_whitespace())
+            .filter(|w| !w.is_empty());
+        match words.next() {
+            Some(b"v") => {
+                let mut xyz = [0.0; 3];
+                for c in &mut xyz {
+                    let word = words
+                        .next()
+                        .ok_or_else(|| invalid("a vertex needs three coordinates"))?;
+                    *c = number_of(word)
+                        .ok_or_else(|| invalid("a vertex coordinate is not a number"))?;
+                }
+                let p = DVec3::from_array(xyz);
+                if !p.is_finite() {
+                    return Err(invalid("a vertex coordinate is not a finite number"));
+                }
+                positions.push(p);
+            }
+            Some(b"f") => {
+                face.clear();
+                for word in words {
+                    face.push(vertex_index(word, positions.len()).ok_or_else(|| {
+                        invalid("a face refers to a vertex that is not defined before it")
+                    })?);
+                }
+                if face.len() < 3 {
+                    return Err(invalid("a face needs at least three vertices"));
+                }
+                fan(&face, &mut triangles);
+            }
+            _ => {}
+        }
+    }
+    Ok(MeshData {
+        positions,
+        triangles,
+    })
+}
+
+/// The lines of `bytes`, each ended by LF, CRLF or a lone CR.
+fn lines(mut bytes: &[u8]) -> impl Iterator<Item = &[u8]> {
+    std::iter::from_fn(move || {
+        if bytes.is_empty() {
+            return None;
+        }
+        let end = bytes
+            .iter()
+            .position(|&b| b == b'\n' || b == b'\r')
+            .unwrap_or(bytes.len());
+        let line = &bytes[..end];
+        let skip = match bytes.get(end..end + 2) {
+            Some(b"\r\n") => 2,
+            Some(_) | None if end < bytes.len() => 1,
+            _ => 0,
+        };
+        bytes = &bytes[end + skip..];
+        Some(line)
+    })
+}
+
+fn number_of(word: &[u8]) -> Option<f64> {
+    std::str::from_utf8(word).ok()?.parse().ok()
+}
+
+/// The 0-based vertex of a face entry `i[/t[/n]]`, given `count` vertices
+/// read so far; `None` if it is malformed or outside `1..=count` (or
+/// `-count..=-1`).
+fn vertex_index(word: &[u8], count: usize) -> Option<u32> {
+    let first = word.split(|&b| b == b'/').next()?;
+    let i: i64 = std::str::from_utf8(first).ok()?.parse().ok()?;
+    let count = i64::try_from(count).ok()?;
+    let zero_based = match i {
+        i if i > 0 && i <= count => i - 1,
+        i if i < 0 && -i <= count => count + i,
+        _ => return None,
+    };
+    u32::try_from(zero_based).ok()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reads_vertices_and_faces_in_every_index_form() {
+        let data =
+            parse(b"# c\r\nv 0 0 0\rv 1 0 0\nv 0 1 0 1\nvn 0 0 1\nf 1/1/1 2//1 -1\ng x\nf 1 2 3\n")
+                .unwrap();
+        assert_eq!(data.positions.len(), 3);
+        assert_eq!(data.triangles, vec![[0, 1, 2], [0, 1, 2]]);
+    }
+
+    #[test]
+    fn errors_give_the_line_and_never_the_content() {
+        for (text, line) in [
+            (&b"v 0 0 0\nv root:x:0:0:root:/root:/bin/bash 1 2\n"[..], 2),
+            (b"v 0 0 0\nv 1 0 0\nv 0 1 0\n\n\nf 1 2 4\n", 6),
+            (b"v 0 0\n", 1),
+            (b"v 0 0 0\r\rf 1 1\n", 3),
+            (b"v 1e999 0 0\n", 1),
+            (b"v 0 0 0\nf 0 1 1\n", 2),
+        ] {
+            let e = parse(text).unwrap_err().to_string();
+            assert!(e.starts_with(&format!("line {line}: ")), "{e}");
+            assert!(!e.contains("root") && !e.contains('\n'), "{e}");
+        }
+    }
+}

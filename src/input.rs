@@ -1,0 +1,74 @@
+//! Reading scene files: bounded, decoded, and with errors in the format the
+//! user asked for.
+
+use std::io::Read;
+use std::path::Path;
+
+use crate::cli::Format;
+
+/// Largest scene file read, in bytes (16 MiB): thousands of times the
+/// largest real scene, small enough to index and report on at once.
+pub const MAX_SCENE_BYTES: u64 = 16 << 20;
+
+/// Why a scene file could not be read.
+#[derive(Debug)]
+pub enum InputError {
+    Io(std::io::Error),
+    TooLarge,
+    NotUtf8(hscene_lang::source::InvalidUtf8),
+}
+
+impl std::fmt::Display for InputError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            InputError::Io(e) => write!(f, "{e}"),
+            InputError::TooLarge => write!(
+                f,
+                "the file is larger than the limit of {MAX_SCENE_BYTES} bytes"
+            ),
+            InputError::NotUtf8(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+/// Reads at most [`MAX_SCENE_BYTES`] (a device or a pipe may never end) and
+/// decodes them as scene text (BOM skipped, any line ends). The path `-`
+/// is standard input.
+pub fn read_scene(path: &Path) -> Result<String, InputError> {
+    if path == Path::new("-") {
+        return read_bounded(std::io::stdin().lock());
+    }
+    read_bounded(std::fs::File::open(path).map_err(InputError::Io)?)
+}
+
+fn read_bounded(input: impl Read) -> Result<String, InputError> {
+    let mut bytes = Vec::new();
+    input
+        .take(MAX_SCENE_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(InputError::Io)?;
+    if bytes.len() as u64 > MAX_SCENE_BYTES {
+        return Err(InputError::TooLarge);
+    }
+    hscene_lang::source::decode(bytes).map_err(InputError::NotUtf8)
+}
+
+/// The message for a scene that cannot be read, as one line of the chosen
+/// format (JSON objects carry `"severity": "error"` and no position).
+pub fn describe_failure(path: &Path, error: &InputError, format: Format) -> String {
+    let message = format!("cannot read {}: {error}", path.display());
+    match format {
+        Format::Json => {
+            let mut obj = serde_json::json!({
+                "file": path.display().to_string(),
+                "severity": "error",
+                "message": message,
+            });
+            if let InputError::NotUtf8(e) = error {
+                obj["byte_offset"] = e.offset.into();
+            }
+            format!("{obj}\n")
+        }
+        Format::Human | Format::Short => format!("error: {message}\n"),
+    }
+}

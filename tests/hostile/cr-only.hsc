@@ -1,0 +1,1 @@
+// old Mac line ends: this comment ends at the CRPoints { (0,0,0.2); }BRDFs { diffuse = (1,0,0); }Objects { Sphere %1, 0.1, #1; Sphere %9, 0.1, #1; }
