@@ -105,12 +105,7 @@ fn check(args: &CheckArgs, color: ColorChoice) -> ExitCode {
         let source = match read {
             Ok(s) => s,
             Err(message) => {
-                // Machine-readable output stays on the stream it is read from.
-                if format == Format::Json && !emit_ir {
-                    let _ = out.write_all(message.as_bytes());
-                } else {
-                    eprint!("{message}");
-                }
+                report_failure(&mut out, format, emit_ir, &message);
                 io_failure = true;
                 continue;
             }
@@ -130,11 +125,7 @@ fn check(args: &CheckArgs, color: ColorChoice) -> ExitCode {
                 ),
                 Format::Human | Format::Short => format!("error: {message}\n"),
             };
-            if format == Format::Json && !emit_ir {
-                let _ = out.write_all(message.as_bytes());
-            } else {
-                eprint!("{message}");
-            }
+            report_failure(&mut out, format, emit_ir, &message);
             io_failure = true;
             continue;
         }
@@ -163,6 +154,17 @@ fn check(args: &CheckArgs, color: ColorChoice) -> ExitCode {
         ExitCode::from(EXIT_SCENE_ERRORS)
     } else {
         ExitCode::SUCCESS
+    }
+}
+
+/// A failure of `check` that is not a diagnostic (an unreadable file, a
+/// frame past the end). Machine-readable output stays on the stream it is
+/// read from: JSON goes to stdout unless stdout carries the IR.
+fn report_failure(out: &mut impl Write, format: Format, emit_ir: bool, message: &str) {
+    if format == Format::Json && !emit_ir {
+        let _ = out.write_all(message.as_bytes());
+    } else {
+        eprint!("{message}");
     }
 }
 

@@ -22,11 +22,7 @@ pub fn definition(
 ) -> Result<Option<GotoDefinitionResponse>, RequestError> {
     let (doc, offset) = docs.at(&p.text_document_position_params)?;
     let uri = &p.text_document_position_params.text_document.uri;
-    let Some(d) = doc
-        .symbols
-        .at(offset)
-        .and_then(|h| doc.symbols.definition_of(h))
-    else {
+    let Some(d) = doc.symbols.definition_at(offset) else {
         return Ok(None);
     };
     let def = &doc.symbols.definitions[d];
@@ -45,11 +41,7 @@ pub fn references(
 ) -> Result<Option<Vec<Location>>, RequestError> {
     let (doc, offset) = docs.at(&p.text_document_position)?;
     let uri = &p.text_document_position.text_document.uri;
-    let Some(d) = doc
-        .symbols
-        .at(offset)
-        .and_then(|h| doc.symbols.definition_of(h))
-    else {
+    let Some(d) = doc.symbols.definition_at(offset) else {
         return Ok(None);
     };
     let def = &doc.symbols.definitions[d];
@@ -74,8 +66,7 @@ pub fn rename(docs: &Documents, p: RenameParams) -> Result<Option<WorkspaceEdit>
     let uri = p.text_document_position.text_document.uri.clone();
     let symbols = &doc.symbols;
     let d = symbols
-        .at(offset)
-        .and_then(|h| symbols.definition_of(h))
+        .definition_at(offset)
         .ok_or_else(|| RequestError::failed("there is no declared name here"))?;
     let def = &symbols.definitions[d];
     let Some(old) = &def.name else {

@@ -1720,15 +1720,8 @@ impl Lowerer<'_> {
         let mut found = Vec::new();
         // One statement can give many objects (edges, tessellation cells),
         // all with the statement's span: lint each statement once.
-        let mut i = 0;
-        while i < self.objects.len() {
-            let span = self.objects[i].1;
-            let end = i + self.objects[i..]
-                .iter()
-                .take_while(|(_, s)| *s == span)
-                .count();
-            let group = &self.objects[i..end];
-            i = end;
+        for group in self.objects.chunk_by(|a, b| a.1 == b.1) {
+            let span = group[0].1;
             if group.iter().any(|(o, _)| eye.is_inside(&o.shape)) {
                 found.push(
                     Diagnostic::new(

@@ -312,6 +312,11 @@ impl SymbolIndex {
         }
     }
 
+    /// The declaration named or referenced at `offset`.
+    pub fn definition_at(&self, offset: usize) -> Option<usize> {
+        self.at(offset).and_then(|h| self.definition_of(h))
+    }
+
     /// The references to declaration `d`, in source order.
     pub fn uses_of(&self, d: usize) -> impl Iterator<Item = &Use> {
         self.uses.iter().filter(move |u| u.definition == Some(d))

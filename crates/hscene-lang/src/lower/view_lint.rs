@@ -63,15 +63,8 @@ impl Lowerer<'_> {
         .collect();
         let behind = eye.direction_to(&camera.target);
         let mut found = Vec::new();
-        let mut i = 0;
-        while i < self.objects.len() {
-            let span = self.objects[i].1;
-            let end = i + self.objects[i..]
-                .iter()
-                .take_while(|(_, s)| *s == span)
-                .count();
-            let group = &self.objects[i..end];
-            i = end;
+        for group in self.objects.chunk_by(|a, b| a.1 == b.1) {
+            let span = group[0].1;
             let all_behind = |v: &DVec3| group.iter().all(|(o, _)| eye.is_behind(&o.shape, *v));
             if behind.as_ref().is_some_and(all_behind) {
                 continue;
