@@ -78,11 +78,21 @@ impl HPlane {
         })
     }
 
-    /// A plane from a normal already unit to rounding, stored bit for bit
-    /// (so that a serialised plane reads back identical).
+    /// A plane from its stored parts, bit for bit (so that a serialised
+    /// plane reads back identical); the caller has checked them.
     #[cfg(feature = "serde")]
-    pub(crate) fn from_unit_normal_unchecked(normal: DVec4) -> HPlane {
-        HPlane { normal }
+    pub(crate) fn from_parts_unchecked(normal: DVec4, place: Isometry, local: DVec4) -> HPlane {
+        HPlane {
+            normal,
+            place,
+            local,
+        }
+    }
+
+    /// The placement and the unit normal in its frame (see the type docs).
+    #[cfg(feature = "serde")]
+    pub(crate) fn parts(&self) -> (Isometry, DVec4) {
+        (self.place, self.local)
     }
 
     /// The h-plane through three vertices (interior or ideal).

@@ -12,7 +12,7 @@
 //! | [`Vertex`] | `{"interior": Point}` or `{"ideal": IdealPoint}` |
 //! | [`Isometry`] | `{"translation": Point, "linear": [[c0], [c1], [c2]]}` (columns of `Q`) |
 //! | [`Segment`] | `{"start": Point, "end": Point}` |
-//! | [`HPlane`] | `{"normal": [x, y, z, t]}`, a unit spacelike Lorentz vector to `1e-12 \|n\|^2` |
+//! | [`HPlane`] | `{"normal": [x, y, z, t], "place": Isometry, "local": [x, y, z, t]}`: the unit spacelike normal (to `1e-12 \|n\|^2`) and, optionally, the placement that carries the unit normal `local` onto it |
 //! | [`HSphere`] | `{"center": Point, "radius": r}` |
 //!
 //! A stored gap is kept (far from the origin it is more precise than the
@@ -168,12 +168,19 @@ impl<'de> Deserialize<'de> for Segment {
 #[serde(deny_unknown_fields)]
 struct PlaneForm {
     normal: [f64; 4],
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    place: Option<Isometry>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    local: Option<[f64; 4]>,
 }
 
 impl Serialize for HPlane {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let (place, local) = self.parts();
         PlaneForm {
             normal: self.normal().to_array(),
+            place: Some(place),
+            local: Some(local.to_array()),
         }
         .serialize(s)
     }
@@ -181,19 +188,39 @@ impl Serialize for HPlane {
 
 impl<'de> Deserialize<'de> for HPlane {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<HPlane, D::Error> {
-        let n = DVec4::from_array(PlaneForm::deserialize(d)?.normal);
+        let form = PlaneForm::deserialize(d)?;
+        let n = DVec4::from_array(form.normal);
         HPlane::from_normal(n).map_err(D::Error::custom)?;
         // Unit to the rounding of its own components: a plane far from the
         // origin has a normal of size ~e^d whose Lorentz square is 1 only to
         // about eps |n|^2.
-        let norm_sq = crate::lorentz::dot(n, n);
-        if !((norm_sq - 1.0).abs() <= 1e-12 * n.length_squared().max(1.0)) {
+        let unit = |v: DVec4| {
+            (crate::lorentz::dot(v, v) - 1.0).abs() <= 1e-12 * v.length_squared().max(1.0)
+        };
+        if !unit(n) {
             return Err(D::Error::custom(format!(
-                "plane normal must be a unit spacelike vector (<n,n> = {norm_sq:e})"
+                "plane normal must be a unit spacelike vector (<n,n> = {:e})",
+                crate::lorentz::dot(n, n)
             )));
         }
-        // A unit normal is kept bit for bit, so the round trip is exact.
-        Ok(HPlane::from_unit_normal_unchecked(n))
+        let (place, local) = match (form.place, form.local) {
+            (None, None) => (Isometry::IDENTITY, n),
+            (Some(place), Some(local)) => (place, DVec4::from_array(local)),
+            _ => {
+                return Err(D::Error::custom(
+                    "a plane's `place` and `local` come together",
+                ));
+            }
+        };
+        // The placement must carry the local normal onto the normal, to the
+        // rounding of the normal's own size.
+        let carried = place.to_lorentz() * local;
+        if !(unit(local) && (carried - n).length() <= 1e-9 * n.length().max(1.0)) {
+            return Err(D::Error::custom(
+                "the plane's `place` does not carry `local` onto `normal`",
+            ));
+        }
+        Ok(HPlane::from_parts_unchecked(n, place, local))
     }
 }
 
