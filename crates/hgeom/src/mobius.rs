@@ -36,12 +36,26 @@ pub fn add_raw(u: DVec3, gap_u: f64, v: DVec3, gap_v: f64) -> (DVec3, f64) {
     let sum = u + v;
     let s = sum.length_squared();
     let d = s + gap_u * gap_v;
-    // `(s + gap_u) u + gap_u v` written as `s u + gap_u (u + v)`: when `u`
-    // and `v` nearly annihilate far out, `u + v` is formed exactly
-    // (Sterbenz) and small, where `gap_u u + gap_u v` rounds both products
-    // first and then cancels.
-    let coords = (s * u + gap_u * sum) / d;
     let gap = gap_u * gap_v / d;
+    // The sum as `u` plus its exact offset from `u`:
+    // `((s + gap_u) u + gap_u v) / D - u = gap_u ((u + v) - gap_v u) / D`.
+    let offset = gap_u * (sum - gap_v * u) / d;
+    let coords = if 16.0 * offset.length_squared() < u.length_squared() {
+        // The sum lies near `u` (a point moved 25 away lies next to the
+        // translation's own point): the offset is small and formed to a few
+        // ulps of itself, so the coordinates are rounded once, by the final
+        // addition, where forming `s u + gap_u (u + v)` and dividing rounded
+        // them 3-6 ulps (2e-5 of hyperbolic distance at 25;
+        // `far_translation_rounds_once` in `tests/far.rs`).
+        u + offset
+    } else {
+        // `(s + gap_u) u + gap_u v` written as `s u + gap_u (u + v)`: when
+        // `u` and `v` nearly annihilate far out, `u + v` is formed exactly
+        // (Sterbenz) and small, where `gap_u u + gap_u v` rounds both
+        // products first and then cancels, and `u (+) -u` is exactly the
+        // origin.
+        (s * u + gap_u * sum) / d
+    };
     (coords, gap)
 }
 

@@ -58,5 +58,5 @@ fn translation_25() {
     // of radius 0.008 one pixel wide: its shading and its end move with
     // the 2e-5 that rounding the scene 25 away costs), 1 on the others;
     // 0.9987 at 48 pixels (docs/geometry.md, section 16.5).
-    check_distance(25.0, 4, 0.99);
+    check_distance(25.0, 4, 0.999);
 }

@@ -275,11 +275,14 @@ fn farther_isometries_leave_the_image_unchanged() {
 
 /// Beyond what the hyperboloid can resolve (distance ~19 from the eye): a
 /// sphere of radius 24.5 and a glass rod of radius 24.3 about points 25
-/// away. Their primary rays are solved from sums of squares over exact gaps
-/// (`docs/geometry.md`, section 16.5), so they resolve; this once counted
-/// 224 failing pixels (through the glass rod, whose secondary rays from far
-/// points lost their unit tangents). Every pixel is finite, nothing fails,
-/// and both objects are drawn.
+/// away. The sphere's primary rays are solved from sums of squares over
+/// exact gaps (`docs/geometry.md`, section 16.5), so it is drawn. The eye
+/// lies inside the rod (2.8 from its axis), so every other ray leaves the
+/// rod 22 to 24 away, where hyperboloid tangents are no longer unit: those
+/// pixels must be counted as numeric failures, never shaded from garbage
+/// nor passed off as a miss. (Before Möbius addition rounded far sums once
+/// all 351 of them came back as silent misses; 235 are now found and
+/// counted, 125 still miss: docs/geometry.md, section 16.5.)
 #[test]
 fn beyond_the_hyperboloid_objects_resolve() {
     let glass = hscene_lang::ir::Material {
@@ -306,10 +309,13 @@ fn beyond_the_hyperboloid_objects_resolve() {
         ],
     );
     let out = run(&s, &RenderOptions::default());
-    assert_eq!(out.stats.numeric_failures, 0);
-    // Measured: 225 of the 576 pixels differ from the background.
+    assert!(out.image.pixels().iter().flatten().all(|c| c.is_finite()));
+    // Measured: 216 of the 576 pixels show the sphere, 235 are counted.
     let shown = differs_from_background(&out.image, s.settings.background);
     assert!(shown > 24 * 24 / 3, "{shown}");
+    let failures = usize::try_from(out.stats.numeric_failures).unwrap();
+    assert!(failures > 24 * 24 / 3, "{failures}");
+    assert!(failures + shown <= 24 * 24, "{failures} + {shown}");
 }
 
 /// Anti-aliasing is deterministic: the same seed gives the same image with
