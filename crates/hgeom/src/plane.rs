@@ -284,6 +284,7 @@ impl HPlane {
             t,
             point: ray.at(t),
             normal: self.normal,
+            shading: self.normal,
         })
     }
 
