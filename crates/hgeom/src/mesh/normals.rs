@@ -53,6 +53,8 @@ pub struct GivenNormals {
 /// The stored vertex normals of a smoothed mesh.
 #[derive(Debug, PartialEq)]
 pub(super) struct Smooth {
+    /// The crease angle asked for, in degrees.
+    crease: f64,
     /// Unit directions at the local origin (see the module docs).
     normals: Vec<[f32; 3]>,
     /// For each kept triangle, its corners' indices into `normals`, or
@@ -72,6 +74,16 @@ impl TriangleMesh {
         self.smooth
             .as_ref()
             .map_or(0, |s| s.normals.len() * 12 + s.corners.len() * 12)
+    }
+
+    /// The crease angle in degrees of a smoothed mesh
+    /// ([`TriangleMesh::smoothed`]); `None` for a flat-shaded one.
+    ///
+    /// # Accuracy
+    ///
+    /// Exact.
+    pub fn smooth_angle(&self) -> Option<f64> {
+        self.smooth.as_ref().map(|s| s.crease)
     }
 
     /// The same mesh shaded smoothly: hits get a shading normal
@@ -156,7 +168,11 @@ impl TriangleMesh {
             }
         }
         let mut mesh = self.clone();
-        mesh.smooth = Some(std::sync::Arc::new(Smooth { normals, corners }));
+        mesh.smooth = Some(std::sync::Arc::new(Smooth {
+            crease: crease_degrees,
+            normals,
+            corners,
+        }));
         Ok(mesh)
     }
 
