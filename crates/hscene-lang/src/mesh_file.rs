@@ -424,6 +424,8 @@ mod tests {
                 DVec3::new(0.0, 1.0, 0.0),
             ],
             triangles: vec![[0, 1, 2]],
+            normals: Vec::new(),
+            corner_normals: Vec::new(),
         };
         let pts = data.layout(3.0).expect("layout");
         // Box centre (0, 0.5, 0); farthest vertices at sqrt(4.25).
