@@ -82,7 +82,11 @@ impl HPlane {
     /// (so that a serialised plane reads back identical).
     #[cfg(feature = "serde")]
     pub(crate) fn from_unit_normal_unchecked(normal: DVec4) -> HPlane {
-        HPlane { normal }
+        HPlane {
+            normal,
+            place: Isometry::IDENTITY,
+            local: normal,
+        }
     }
 
     /// The h-plane through three vertices (interior or ideal).
