@@ -291,6 +291,7 @@ fn object(i: usize, o: &Object) -> Value {
                 "vertices": m.vertices().iter().map(point).collect::<Vec<_>>(),
                 "triangles": m.triangles().iter().map(|t| json!(t)).collect::<Vec<_>>(),
                 "dropped_triangles": m.dropped_triangles(),
+                "smooth": m.smooth_angle(),
             }),
         ),
     };

@@ -54,6 +54,9 @@ pub enum GeomError {
     /// A direction vector must be non-zero and finite.
     #[error("direction must be a non-zero finite vector")]
     BadDirection,
+    /// A crease angle (in degrees) must be a number in `0..=180`.
+    #[error("crease angle {0} is outside 0..=180 degrees")]
+    BadCreaseAngle(f64),
     /// A predefined figure was asked for with a vertex count it does not support.
     #[error("vertex count {got} is outside {min}..={max}")]
     VertexCountOutOfRange {

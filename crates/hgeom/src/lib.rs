@@ -74,7 +74,7 @@ pub use honeycomb::{
 pub use horosphere::Horosphere;
 pub use isometry::Isometry;
 pub use line::HLine;
-pub use mesh::TriangleMesh;
+pub use mesh::{GivenNormals, TriangleMesh};
 pub use plane::{BallShape, HPlane};
 pub use point::{IdealPoint, Point, Vertex};
 pub use polygon::ConvexPolygon;

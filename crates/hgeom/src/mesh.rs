@@ -75,6 +75,10 @@ use crate::plane::HPlane;
 use crate::point::Point;
 use crate::ray::{Hit, Ray};
 
+mod normals;
+
+pub use normals::GivenNormals;
+
 /// A triangle is dropped as degenerate when its Lorentz normal is below this
 /// fraction of the size of the vectors it is formed from (the criterion of
 /// [`HPlane::through`]): its three vertices lie on one h-line to rounding.
@@ -126,6 +130,8 @@ pub struct TriangleMesh {
     to_world: DMat4,
     /// The inverse placement's Lorentz matrix (world to local).
     to_local: DMat4,
+    /// Vertex normals for smooth shading ([`TriangleMesh::smoothed`]).
+    smooth: Option<Arc<normals::Smooth>>,
 }
 
 /// What every moved copy of a mesh shares.
@@ -287,6 +293,7 @@ impl TriangleMesh {
             shared,
             moved,
             placement,
+            smooth: None,
         }
     }
 
@@ -405,7 +412,9 @@ impl TriangleMesh {
         } else {
             iso.compose(&self.moved)
         };
-        TriangleMesh::placed(Arc::clone(&self.shared), moved)
+        let mut mesh = TriangleMesh::placed(Arc::clone(&self.shared), moved);
+        mesh.smooth.clone_from(&self.smooth);
+        mesh
     }
 
     /// A ball containing the whole mesh: its centre on the hyperboloid (in
@@ -642,10 +651,16 @@ impl TriangleMesh {
 
     #[inline]
     fn hit(&self, ray: &Ray, c: Candidate) -> Hit {
+        let point = ray.at(c.t);
+        let shading = match &self.smooth {
+            Some(smooth) => self.shading_normal(smooth, c.triangle, point, c.normal),
+            None => c.normal,
+        };
         Hit {
             t: c.t,
-            point: ray.at(c.t),
+            point,
             normal: c.normal,
+            shading,
         }
     }
 }
@@ -665,6 +680,7 @@ impl PartialEq for TriangleMesh {
     fn eq(&self, other: &TriangleMesh) -> bool {
         let (a, b) = (&*self.shared, &*other.shared);
         self.moved == other.moved
+            && self.smooth == other.smooth
             && (Arc::ptr_eq(&self.shared, &other.shared)
                 || (a.input == b.input && a.triangles == b.triangles && a.dropped == b.dropped))
     }

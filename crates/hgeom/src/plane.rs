@@ -294,6 +294,7 @@ impl HPlane {
             t,
             point: ray.at(t),
             normal: self.normal,
+            shading: self.normal,
         })
     }
 

@@ -37,6 +37,12 @@ pub struct Hit {
     /// Unit normal of the surface at the hit, a tangent vector at `point`,
     /// on the surface's outer (positive) side.
     pub normal: DVec4,
+    /// The unit normal to shade with, a tangent vector at `point` on the
+    /// same side as `normal`: `normal` itself except on smoothed meshes,
+    /// where it is interpolated from vertex normals
+    /// ([`TriangleMesh::smoothed`](crate::TriangleMesh::smoothed)). Only
+    /// lighting uses it; ray offsets and inside/outside use `normal`.
+    pub shading: DVec4,
 }
 
 impl Hit {

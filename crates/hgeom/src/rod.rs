@@ -308,7 +308,12 @@ impl Rod {
             Piece::StartCap => self.start_cap.as_ref()?.sphere.normal_at(point),
             Piece::EndCap => self.end_cap.as_ref()?.sphere.normal_at(point),
         };
-        Some(Hit { t, point, normal })
+        Some(Hit {
+            t,
+            point,
+            normal,
+            shading: normal,
+        })
     }
 }
 

@@ -39,10 +39,12 @@ pub(crate) fn hit_at_first_root(
 ) -> Option<Hit> {
     let t = first_in_range(roots.0, roots.1, t_min, t_max)?;
     let point = ray.at(t);
+    let normal = normal_at(point);
     Some(Hit {
         t,
         point,
-        normal: normal_at(point),
+        normal,
+        shading: normal,
     })
 }
 

@@ -124,13 +124,17 @@ impl<'s> Tracer<'s> {
         // rays from far points lose them sooner (s + t near 17 costs 1 %).
         // Shading with such vectors would be silent garbage (cosines far
         // above 1): count it as a numeric failure instead.
-        if !(is_unit(d) && is_unit(hit.normal)) {
+        if !(is_unit(d) && is_unit(hit.normal) && is_unit(hit.shading)) {
             stats.failures += 1;
             return self.scene.background.into();
         }
         let entering = lorentz::dot(d, hit.normal) < 0.0;
         // The normal on the side the ray came from, for shading.
         let n = if entering { hit.normal } else { -hit.normal };
+        // A smoothed mesh's interpolated normal lights the surface; it is
+        // turned to the ray's side with the geometric normal, which alone
+        // decides sides, reflections and refractions (docs/rendering.md).
+        let lit_normal = if entering { hit.shading } else { -hit.shading };
         let p = hit.point;
         // A texture replaces the ambient and diffuse reflectances in part of
         // the surface; only textured materials pay for finding out where.
@@ -148,7 +152,7 @@ impl<'s> Tracer<'s> {
             .any(|c| c.r != 0.0 || c.g != 0.0 || c.b != 0.0);
         let shading = Shading {
             p,
-            n,
+            n: lit_normal,
             view,
             diffuse,
             m,

@@ -10,6 +10,7 @@
 mod budget;
 mod figures;
 mod light_strength;
+mod mesh_object;
 mod moves;
 pub(crate) mod objects;
 mod ranges;

@@ -19,6 +19,7 @@ use std::path::Path;
 use hgeom::Point;
 use hgeom::glam::DVec3;
 
+mod normals;
 mod obj;
 
 /// The vertices and triangles read from a mesh file, in file coordinates.
@@ -31,6 +32,13 @@ pub struct MeshData {
     pub positions: Vec<DVec3>,
     /// Triangles as vertex indices, in the file's winding order.
     pub triangles: Vec<[u32; 3]>,
+    /// Vertex normals as written in the file (OBJ `vn`, PLY `nx ny nz`),
+    /// finite, of any length.
+    pub normals: Vec<DVec3>,
+    /// For each triangle, each corner's index into `normals`, or
+    /// `u32::MAX` where the file gives none; empty when it gives none at
+    /// all.
+    pub corner_normals: Vec<[u32; 3]>,
 }
 
 /// Largest mesh file read, in bytes (64 MiB): several million triangles,
@@ -285,6 +293,7 @@ fn parse_ply(bytes: &[u8]) -> Result<MeshData, MeshFileError> {
         .get("vertex")
         .ok_or_else(|| MeshFileError::Invalid("the PLY file has no `vertex` element".into()))?;
     let mut positions = Vec::with_capacity(vertices.len());
+    let mut normals = Vec::new();
     for (i, v) in vertices.iter().enumerate() {
         let coord = |name: &str| v.get(name).and_then(scalar);
         match (coord("x"), coord("y"), coord("z")) {
@@ -296,6 +305,22 @@ fn parse_ply(bytes: &[u8]) -> Result<MeshData, MeshFileError> {
                 )));
             }
         }
+        if let (Some(x), Some(y), Some(z)) = (coord("nx"), coord("ny"), coord("nz")) {
+            let n = DVec3::new(x, y, z);
+            if !n.is_finite() {
+                return Err(MeshFileError::Invalid(format!(
+                    "PLY vertex {} has a normal that is not a finite number",
+                    i + 1
+                )));
+            }
+            normals.push(n);
+        }
+    }
+    // A PLY element's properties are the same for every vertex: either all
+    // have a normal or none has.
+    let has_normals = !positions.is_empty() && normals.len() == positions.len();
+    if !has_normals {
+        normals.clear();
     }
     let faces = ply
         .payload
@@ -315,9 +340,16 @@ fn parse_ply(bytes: &[u8]) -> Result<MeshData, MeshFileError> {
             })?;
         fan(&face, &mut triangles);
     }
+    let corner_normals = if has_normals {
+        triangles.clone()
+    } else {
+        Vec::new()
+    };
     Ok(MeshData {
         positions,
         triangles,
+        normals,
+        corner_normals,
     })
 }
 
@@ -392,6 +424,8 @@ mod tests {
                 DVec3::new(0.0, 1.0, 0.0),
             ],
             triangles: vec![[0, 1, 2]],
+            normals: Vec::new(),
+            corner_normals: Vec::new(),
         };
         let pts = data.layout(3.0).expect("layout");
         // Box centre (0, 0.5, 0); farthest vertices at sqrt(4.25).
@@ -404,6 +438,8 @@ mod tests {
         let flat = MeshData {
             positions: vec![DVec3::ONE; 3],
             triangles: vec![[0, 1, 2]],
+            normals: Vec::new(),
+            corner_normals: Vec::new(),
         };
         assert!(flat.layout(1.0).is_none());
     }

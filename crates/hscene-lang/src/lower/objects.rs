@@ -9,22 +9,20 @@
 //!
 //! Positional arguments come first and are checked against the keyword's
 //! parameter list ([`Param`]); options (`wireframe`, `edges`,
-//! `edge_material`, `at`) follow. Every argument is checked even after one
+//! `edge_material`, `at`, `smooth`) follow. Every argument is checked even after one
 //! fails, so one statement reports all of its problems.
 
 use std::collections::HashMap;
 
 use hgeom::{
     ConvexPolygon, GeomError, HCylinder, HLine, HSphere, Horosphere, IdealPoint, Isometry,
-    Platonic, Point, Polyhedron, Rod, TriangleMesh, Vertex,
+    Platonic, Point, Polyhedron, Rod, Vertex,
 };
 
 use super::figures::{self, Figure};
-use super::ranges::MAX_MESH_SIZE;
 use super::{Lowerer, TargetSlot};
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::{MaterialId, Object, Shape};
-use crate::mesh_file::{self, MeshFileError};
 use crate::syntax::{Clause, Ident, Statement, Value};
 
 /// What an object keyword builds.
@@ -235,9 +233,17 @@ struct Options {
     edge_material: Option<MaterialId>,
     /// `at = %P`: the figure's centre, moved from the origin.
     at: Option<(Point, Span)>,
+    /// `smooth = ANGLE`: a mesh's crease angle in degrees.
+    pub(super) smooth: Option<f64>,
 }
 
-pub(crate) const OPTION_NAMES: [&str; 4] = ["wireframe", "edges", "edge_material", "at"];
+pub(crate) const OPTION_NAMES: [&str; 5] = ["wireframe", "edges", "edge_material", "at", "smooth"];
+
+/// Whether the keyword takes `smooth` (only `Mesh`: a file as its first
+/// parameter).
+fn smoothable(spec: &Spec) -> bool {
+    matches!(spec.params.first(), Some(Param::File(_)))
+}
 
 impl Lowerer<'_> {
     pub(super) fn objects_section(&mut self, section: &crate::syntax::Section) {
@@ -343,7 +349,7 @@ impl Lowerer<'_> {
                 return Vec::new();
             }
         }
-        let Some(built) = self.build(kind, name, &args, &positional) else {
+        let Some(built) = self.build(kind, name, &args, &positional, opts.smooth) else {
             return Vec::new();
         };
         let placed = self.place(built, material, opts, st);
@@ -496,6 +502,7 @@ impl Lowerer<'_> {
             let allowed = match key.text.as_str() {
                 "wireframe" | "edges" | "edge_material" => spec.faceted,
                 "at" => spec.centred,
+                "smooth" => smoothable(spec),
                 _ => false,
             };
             if !allowed {
@@ -518,6 +525,7 @@ impl Lowerer<'_> {
                     .copied()
                     .filter(|o| match *o {
                         "at" => spec.centred,
+                        "smooth" => smoothable(spec),
                         _ => spec.faceted,
                     })
                     .collect();
@@ -560,6 +568,10 @@ impl Lowerer<'_> {
                 }
                 "edge_material" => match self.material_arg(value) {
                     Some(m) => out.edge_material = Some(m),
+                    None => ok = false,
+                },
+                "smooth" => match self.crease_angle(value) {
+                    Some(a) => out.smooth = Some(a),
                     None => ok = false,
                 },
                 _ => match self.point_arg(value, "the centre (`at`)") {
@@ -607,6 +619,7 @@ impl Lowerer<'_> {
         name: &Ident,
         args: &[Arg],
         values: &[&Value],
+        smooth: Option<f64>,
     ) -> Option<Vec<Shape>> {
         match (kind, args) {
             (Kind::Sphere, [Arg::Point(c), Arg::Number(r)]) => HSphere::new(*c, *r)
@@ -663,9 +676,9 @@ impl Lowerer<'_> {
                     None
                 }
             },
-            (Kind::Mesh, [Arg::File(file), Arg::Number(size)]) => {
-                self.mesh(file, *size, values).map(|m| vec![Shape::Mesh(m)])
-            }
+            (Kind::Mesh, [Arg::File(file), Arg::Number(size)]) => self
+                .mesh(file, *size, values, smooth)
+                .map(|m| vec![Shape::Mesh(m)]),
             (Kind::Platonic(k), [Arg::Number(size)]) => match Polyhedron::platonic(k, *size) {
                 Ok(p) => Some(vec![Shape::Polyhedron(p)]),
                 Err(e) => {
@@ -686,89 +699,6 @@ impl Lowerer<'_> {
             },
             // The arguments were checked against the same table.
             _ => None,
-        }
-    }
-
-    /// Reads and lays out a mesh file (see `mesh_file.rs`).
-    fn mesh(&mut self, file: &str, size: f64, values: &[&Value]) -> Option<TriangleMesh> {
-        let (file_span, size_span) = (values[0].span(), values[1].span());
-        if size > MAX_MESH_SIZE {
-            self.report(
-                Diagnostic::new(
-                    Code::InvalidValue,
-                    size_span,
-                    format!("a mesh size must be at most {MAX_MESH_SIZE}, got {}", hgeom::Compact(size)),
-                )
-                .with_help("the size is the distance of the mesh's farthest vertex from its centre; opposite vertices are twice that apart, and f64 holds about 37"),
-            );
-            return None;
-        }
-        let path = match self.base_dir {
-            Some(dir) => dir.join(file),
-            None => std::path::PathBuf::from(file),
-        };
-        let data = match mesh_file::load(&path) {
-            Ok(data) => data,
-            Err(MeshFileError::Io(e)) => {
-                self.report(
-                    Diagnostic::new(
-                        Code::MeshFileUnreadable,
-                        file_span,
-                        format!("cannot read the mesh file {}: {e}", super::quote(file)),
-                    )
-                    .with_help("a relative file name is taken from the scene file's directory"),
-                );
-                return None;
-            }
-            Err(e) => {
-                self.report(
-                    Diagnostic::new(
-                        Code::MeshFileInvalid,
-                        file_span,
-                        format!("cannot use the mesh file {}: {e}", super::quote(file)),
-                    )
-                    .with_help("meshes are read from Wavefront OBJ (`.obj`) and PLY (`.ply`, ASCII or binary) files with triangle or polygon faces"),
-                );
-                return None;
-            }
-        };
-        let Some(vertices) = data.layout(size) else {
-            self.report(
-                Diagnostic::new(
-                    Code::MeshFileInvalid,
-                    file_span,
-                    format!(
-                        "the mesh in {} has no extent: all its vertices coincide",
-                        super::quote(file)
-                    ),
-                )
-                .with_help("use a file whose vertices span a surface"),
-            );
-            return None;
-        };
-        let total = data.triangles.len();
-        if !self.fits(total as u64, file_span) {
-            return None;
-        }
-        match TriangleMesh::new(vertices, data.triangles) {
-            Ok(mesh) => {
-                let dropped = mesh.dropped_triangles();
-                if dropped > 0 {
-                    self.report(
-                        Diagnostic::new(
-                            Code::DegenerateTriangles,
-                            file_span,
-                            format!("{dropped} of the {total} triangles of this mesh have no area and are left out"),
-                        )
-                        .with_help("such triangles (repeated or collinear vertices) draw nothing; clean the mesh to silence this"),
-                    );
-                }
-                Some(mesh)
-            }
-            Err(e) => {
-                self.geom_failure(file_span, "this mesh", &e);
-                None
-            }
         }
     }
 
@@ -819,7 +749,7 @@ impl Lowerer<'_> {
         }
     }
 
-    fn geom_failure(&mut self, span: Span, what: &str, e: &GeomError) {
+    pub(super) fn geom_failure(&mut self, span: Span, what: &str, e: &GeomError) {
         self.report(
             Diagnostic::new(
                 Code::NumericFailure,

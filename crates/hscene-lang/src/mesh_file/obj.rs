@@ -1,7 +1,7 @@
-//! A Wavefront OBJ reader for what a mesh needs: `v` and `f` lines.
+//! A Wavefront OBJ reader for what a mesh needs: `v`, `vn` and `f` lines.
 //!
-//! Everything else (normals, texture coordinates, groups, materials, lines,
-//! points) is skipped. Errors name the line and the kind of problem and
+//! Everything else (texture coordinates, groups, materials, lines, points)
+//! is skipped. Errors name the line and the kind of problem and
 //! never quote the file, whose content may be anything.
 
 use hgeom::glam::DVec3;
@@ -14,7 +14,10 @@ use super::{MeshData, MeshFileError, fan};
 pub(super) fn parse(bytes: &[u8]) -> Result<MeshData, MeshFileError> {
     let mut positions = Vec::new();
     let mut triangles = Vec::new();
+    let mut normals = Vec::new();
+    let mut corner_normals = Vec::new();
     let mut face = Vec::new();
+    let mut face_normals = Vec::new();
     for (index, line) in lines(bytes).enumerate() {
         let number = index + 1;
         let invalid = |problem: &str| MeshFileError::invalid_at(number, problem);
@@ -37,24 +40,49 @@ pub(super) fn parse(bytes: &[u8]) -> Result<MeshData, MeshFileError> {
                 }
                 positions.push(p);
             }
+            Some(b"vn") => {
+                let mut xyz = [0.0; 3];
+                for c in &mut xyz {
+                    let word = words
+                        .next()
+                        .ok_or_else(|| invalid("a vertex normal needs three coordinates"))?;
+                    *c = number_of(word)
+                        .ok_or_else(|| invalid("a vertex normal coordinate is not a number"))?;
+                }
+                let n = DVec3::from_array(xyz);
+                if !n.is_finite() {
+                    return Err(invalid("a vertex normal is not finite"));
+                }
+                normals.push(n);
+            }
             Some(b"f") => {
                 face.clear();
+                face_normals.clear();
                 for word in words {
                     face.push(vertex_index(word, positions.len()).ok_or_else(|| {
                         invalid("a face refers to a vertex that is not defined before it")
+                    })?);
+                    face_normals.push(normal_index(word, normals.len()).ok_or_else(|| {
+                        invalid("a face refers to a normal that is not defined before it")
                     })?);
                 }
                 if face.len() < 3 {
                     return Err(invalid("a face needs at least three vertices"));
                 }
                 fan(&face, &mut triangles);
+                fan(&face_normals, &mut corner_normals);
             }
             _ => {}
         }
     }
+    if normals.is_empty() || corner_normals.iter().flatten().all(|&n| n == u32::MAX) {
+        corner_normals.clear();
+    }
     Ok(MeshData {
         positions,
         triangles,
+        normals,
+        corner_normals,
     })
 }
 
@@ -87,8 +115,22 @@ fn number_of(word: &[u8]) -> Option<f64> {
 /// read so far; `None` if it is malformed or outside `1..=count` (or
 /// `-count..=-1`).
 fn vertex_index(word: &[u8], count: usize) -> Option<u32> {
-    let first = word.split(|&b| b == b'/').next()?;
-    let i: i64 = std::str::from_utf8(first).ok()?.parse().ok()?;
+    index_in(word.split(|&b| b == b'/').next()?, count)
+}
+
+/// The 0-based normal of a face entry `i/t/n` or `i//n` given `count`
+/// normals read so far, `u32::MAX` for an entry without one; `None` if the
+/// normal index is malformed or out of range.
+fn normal_index(word: &[u8], count: usize) -> Option<u32> {
+    match word.split(|&b| b == b'/').nth(2) {
+        None | Some(b"") => Some(u32::MAX),
+        Some(n) => index_in(n, count),
+    }
+}
+
+/// A 1-based (or negative, counting back) OBJ index among `count` items.
+fn index_in(word: &[u8], count: usize) -> Option<u32> {
+    let i: i64 = std::str::from_utf8(word).ok()?.parse().ok()?;
     let count = i64::try_from(count).ok()?;
     let zero_based = match i {
         i if i > 0 && i <= count => i - 1,
@@ -109,6 +151,9 @@ mod tests {
                 .unwrap();
         assert_eq!(data.positions.len(), 3);
         assert_eq!(data.triangles, vec![[0, 1, 2], [0, 1, 2]]);
+        assert_eq!(data.normals, vec![DVec3::Z]);
+        let none = u32::MAX;
+        assert_eq!(data.corner_normals, vec![[0, 0, none], [none; 3]]);
     }
 
     #[test]
@@ -120,6 +165,8 @@ mod tests {
             (b"v 0 0 0\r\rf 1 1\n", 3),
             (b"v 1e999 0 0\n", 1),
             (b"v 0 0 0\nf 0 1 1\n", 2),
+            (b"v 0 0 0\nvn 0 0 1\nf 1//1 1//2 1//1\n", 3),
+            (b"vn 0 x 1\n", 1),
         ] {
             let e = parse(text).unwrap_err().to_string();
             assert!(e.starts_with(&format!("line {line}: ")), "{e}");
