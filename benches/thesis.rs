@@ -1,4 +1,4 @@
-//! The thesis's speed tables (SPEC 6, thesis §8.5 Tables 2 and 3), measured
+//! The thesis's speed tables (thesis §8.5, Tables 2 and 3; docs/gallery.md), measured
 //! on our renderer next to the error of the hits, and optionally next to
 //! POV-Ray rendering the Euclidean twin of each scene.
 //!

@@ -1,4 +1,4 @@
-//! End-to-end tests of the SPEC 4.2 extensions through the binary: meshes
+//! End-to-end tests of the language extensions beyond the thesis through the binary: meshes
 //! found relative to the scene file, animations written frame by frame, and
 //! the new fields of `check --emit ir`.
 

@@ -3,7 +3,8 @@
 //! Every isometry of the ball can be written uniquely as `x -> a (+) Q x`
 //! with `a = f(0)` an h-point and `Q` in O(3) (`det Q = -1` for the
 //! orientation-reversing ones, such as reflections). This is the
-//! representation SPEC 2.3 measured as the most drift-resistant: composition
+//! representation that drifts least under long chains (docs/geometry.md,
+//! section 16.2): composition
 //! goes through the gyration, the translation part carries an exact gap, and
 //! the rotation part never mixes with it.
 
@@ -126,7 +127,7 @@ impl Isometry {
     /// The translation along the segment's h-line that maps its start to its
     /// end.
     ///
-    /// SPEC 2.2 defines it as the reflection in the plane orthogonal to the
+    /// The thesis defines it as the reflection in the plane orthogonal to the
     /// segment at its start followed by the reflection in its bisector plane
     /// (see [`Isometry::translation_by_reflections`]). We evaluate the same map
     /// as `tau_a tau_w tau_(-a)` with `w = (-a) (+) b`: a transvection
@@ -162,7 +163,7 @@ impl Isometry {
             .compose(&to_origin))
     }
 
-    /// The translation built literally as SPEC 2.2 defines it, from two
+    /// The translation built literally as the thesis defines it, from two
     /// reflections. Equal to [`Isometry::translation`]; kept as its reference.
     ///
     /// Errors: [`GeomError::Coincident`] from either plane constructor.
@@ -365,9 +366,9 @@ impl Isometry {
     /// holds to about `eps (2/gap_a)^2` and the matrix is only useful while
     /// the translation part is within ~18 of the origin
     /// (`lorentz_matrix_agrees_with_apply` in `tests/derivations.rs`;
-    /// `frame_is_lorentz_orthonormal` in `line.rs`). SPEC 2.3 measured
-    /// composed Lorentz matrices drifting 100 to 10^6 times faster than the
-    /// gyrovector form, which is why they are derived, never stored.
+    /// `frame_is_lorentz_orthonormal` in `line.rs`). Composed Lorentz matrices
+    /// drift 100 to 10^6 times faster than the gyrovector form
+    /// (docs/geometry.md, section 16.2), which is why they are derived, never stored.
     pub fn to_lorentz(&self) -> DMat4 {
         // The boost is a Lorentz matrix exactly when `A` is on the sheet:
         // derive `A` from the coordinates and their own gap. A composed

@@ -244,7 +244,7 @@ impl Point {
     /// Because the components grow like `2/gap` (about `e^d` at distance `d`),
     /// `<X,X> = -1` itself holds only to about `eps |X|^2`; beyond distance
     /// ~19 it is not resolved at all, which is why hgeom keeps far points in
-    /// the ball (SPEC 2.3).
+    /// the ball (docs/geometry.md, section 16).
     #[inline]
     pub fn to_hyperboloid(&self) -> DVec4 {
         let inv = 1.0 / self.gap;

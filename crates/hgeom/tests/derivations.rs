@@ -387,7 +387,7 @@ fn reflection_is_the_hyperboloid_mirror() {
     }
 }
 
-/// SPEC 2.2 defines the translation as two reflections (in the plane
+/// The thesis defines the translation as two reflections (in the plane
 /// orthogonal to the segment at its start, then in the bisector); hgeom
 /// evaluates `tau_A tau_w tau_{-A}`. They are the same map.
 #[test]
@@ -590,7 +590,7 @@ fn crossing_from_origin_equals_the_general_formula() {
 // 6. h-spheres
 // ---------------------------------------------------------------------------
 
-/// `HSphere::euclidean` against the SPEC formula evaluated in 320 bits:
+/// `HSphere::euclidean` against the closed form (docs/geometry.md) evaluated in 320 bits:
 /// centre factor `(1-T^2)/(1-a^2T^2)`, radius `T(1-a^2)/(1-a^2T^2)`.
 #[test]
 fn euclidean_sphere_matches_the_reference() {

@@ -1,4 +1,4 @@
-//! The pixel nets of SPEC 3.2: maps from a pixel's fractional position to the
+//! The five pixel nets (docs/rendering.md, "The five pixel nets"): maps from a pixel's fractional position to the
 //! primary ray (a diameter from the eye at the origin of the canonical frame).
 
 use hgeom::glam::DVec3;

@@ -18,7 +18,7 @@ pub struct Sampler {
 
 impl Sampler {
     /// `samples >= 1` per pixel. One sample sits at the pixel centre (the
-    /// SPEC's unjittered net); a perfect square `m^2` is stratified on an
+    /// thesis's unjittered net); a perfect square `m^2` is stratified on an
     /// `m x m` grid with one jittered sample per cell; any other count is
     /// jittered uniformly over the pixel.
     pub fn new(samples: u32, seed: u64) -> Sampler {

@@ -1,5 +1,5 @@
 //! Whitted ray tracing with the Phong model and hyperbolic attenuation
-//! (SPEC 3.3, thesis Eq. 4, 7 and 9), solid checker textures and spherical
+//! (docs/rendering.md "Light"; thesis Eq. 4, 7 and 9), solid checker textures and spherical
 //! area lights (soft shadows).
 
 use std::f64::consts::{PI, TAU};
@@ -117,8 +117,8 @@ impl<'s> Tracer<'s> {
         // PreparedScene::new checked every material index.
         let m = &self.scene.materials[object.material];
         let d = ray.tangent_at(hit.t);
-        // The hyperboloid loses unit tangent vectors far from the eye (SPEC
-        // 2.3: its f64 range ends near distance 19). Along a ray the error of
+        // The hyperboloid loses unit tangent vectors far from the eye (its
+        // f64 range ends near distance 19, docs/geometry.md section 16). Along a ray the error of
         // the invariants grows like `1e-16 cosh^2(s) cosh^2(t)` for an origin
         // at distance `s` from the eye and arc length `t`, so long secondary
         // rays from far points lose them sooner (s + t near 17 costs 1 %).

@@ -30,7 +30,8 @@ impl Rgb {
     }
 }
 
-/// The pixel net (SPEC 3.2), numbered as in the thesis.
+/// The pixel net (docs/rendering.md, "The five pixel nets"), numbered as
+/// in the thesis.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Net {
     /// Net 0: the Euclidean grid on the plane `z = f` (a pinhole camera).

@@ -1,6 +1,6 @@
 //! Integration tests of `hscene_lang::compile`: the thesis's Appendix A
 //! scene, transformation semantics (checked against independently derived
-//! formulas), defaults, the SPEC 4.2 extension syntax, ideal points, one
+//! formulas), defaults, the extension syntax beyond the thesis, ideal points, one
 //! test per diagnostic (exact code, severity and span), "one run reports all
 //! problems", and a robustness property test.
 //!
@@ -643,7 +643,7 @@ fn material_fields_default_when_absent() {
     );
 }
 
-// ----- 4. names and the SPEC 4.2 syntax -----------------------------------------
+// ----- 4. names and the extension syntax -----------------------------------------
 
 const SPEC_42: &str = "Globals { from = (0,0,0); to = %target; up = (0,0.1,0); }
 Points  { eye = (0,0,0); target = (0,0,0.3); (0.1,0,0.3); (0.1,0,0); }

@@ -520,7 +520,7 @@ fn default_up_turns_with_the_camera() {
 #[test]
 fn thesis_figure_33_one_translation_of_scene_and_observer() {
     // Moving the scene's objects, lights and the camera by one isometry
-    // keeps every distance between them (the image is unchanged, SPEC 3.1).
+    // keeps every distance between them (the image is unchanged, docs/rendering.md).
     let s = scene(&format!(
         "{AXES} {MATTE} Lights {{ l: %x, (1,1,1), (1,1,1); }}
          Objects {{ b: Sphere %c, 0.05, #1; }}
