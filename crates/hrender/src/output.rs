@@ -131,13 +131,15 @@ pub fn write_image_with(
         path: path.to_path_buf(),
         source,
     };
-    let tmp = tempfile::Builder::new()
-        .prefix(".hscene-")
-        .suffix(".part")
-        .tempfile_in(output_dir(path))
+    let (tmp, live) = crate::unfinished::LIVE
+        .create(|| {
+            tempfile::Builder::new()
+                .prefix(".hscene-")
+                .suffix(".part")
+                .tempfile_in(output_dir(path))
+        })
         // tempfile names its file in the message; only the kind is kept.
         .map_err(|e| io(e.kind().into()))?;
-    let live = crate::unfinished::LIVE.register(tmp.path());
     {
         let mut out = BufWriter::new(tmp.as_file());
         match format {

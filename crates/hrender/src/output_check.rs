@@ -53,10 +53,17 @@ pub fn check_output(
         return Err(dir_error(std::io::ErrorKind::NotADirectory.into()));
     }
     // The probe's own name must not appear in the message: keep the kind.
-    tempfile::Builder::new()
-        .prefix(".hscene-probe-")
-        .tempfile_in(dir)
+    // It is listed like an output's temporary file, so that a signal while
+    // it exists removes it too.
+    let (probe, listed) = crate::unfinished::LIVE
+        .create(|| {
+            tempfile::Builder::new()
+                .prefix(".hscene-probe-")
+                .tempfile_in(dir)
+        })
         .map_err(|e| dir_error(e.kind().into()))?;
+    drop(probe);
+    drop(listed);
     Ok(format)
 }
 

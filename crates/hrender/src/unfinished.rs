@@ -2,7 +2,7 @@
 //! process (Ctrl-C, SIGTERM) can remove them before it exits: a temporary
 //! file's own cleanup runs on drop, which a signal skips.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::sync::{Mutex, MutexGuard, PoisonError};
 
 /// A list of temporary files now being written.
@@ -18,7 +18,8 @@ impl Registry {
     }
 
     /// Lists `path` until the returned guard is dropped or finished.
-    pub(crate) fn register(&self, path: &Path) -> Registered<'_> {
+    #[cfg(test)]
+    pub(crate) fn register(&self, path: &std::path::Path) -> Registered<'_> {
         self.list().push(path.to_path_buf());
         Registered {
             registry: self,
@@ -26,10 +27,34 @@ impl Registry {
         }
     }
 
-    fn remove_all(&self) {
-        for path in self.list().drain(..) {
+    /// Creates a temporary file and lists it with the list locked, so that
+    /// a cleanup runs either before the file exists or after it is listed:
+    /// a signal can never land between the two.
+    pub(crate) fn create(
+        &self,
+        create: impl FnOnce() -> std::io::Result<tempfile::NamedTempFile>,
+    ) -> std::io::Result<(tempfile::NamedTempFile, Registered<'_>)> {
+        let mut list = self.list();
+        let file = create()?;
+        list.push(file.path().to_path_buf());
+        let path = file.path().to_path_buf();
+        Ok((
+            file,
+            Registered {
+                registry: self,
+                path,
+            },
+        ))
+    }
+
+    /// Removes every listed file; the list stays locked while the guard
+    /// lives.
+    fn remove_all(&self) -> MutexGuard<'_, Vec<PathBuf>> {
+        let mut list = self.list();
+        for path in list.drain(..) {
             let _ = std::fs::remove_file(path);
         }
+        list
     }
 }
 
@@ -38,7 +63,9 @@ impl Registry {
 /// followed by the process's exit; an output renamed into place is final
 /// and no longer listed.
 pub fn remove_unfinished_outputs() {
-    LIVE.remove_all();
+    // The process exits next: the list stays locked for good, so no new
+    // temporary file can be created between this cleanup and the exit.
+    std::mem::forget(LIVE.remove_all());
 }
 
 /// A listed temporary file; dropping it takes it off the list.
@@ -75,14 +102,30 @@ mod tests {
         let a = dir.path().join("a.part");
         std::fs::write(&a, b"x").unwrap();
         let reg = registry.register(&a);
-        registry.remove_all();
+        drop(registry.remove_all());
         assert!(!a.exists());
         drop(reg);
         let b = dir.path().join("b.part");
         std::fs::write(&b, b"x").unwrap();
         registry.register(&b).finish(|| ());
-        registry.remove_all();
+        drop(registry.remove_all());
         assert!(b.exists());
+        assert!(registry.list().is_empty());
+    }
+
+    #[test]
+    fn created_files_are_listed_until_dropped() {
+        let registry = Registry(Mutex::new(Vec::new()));
+        let dir = tempfile::tempdir().unwrap();
+        let (file, reg) = registry
+            .create(|| tempfile::Builder::new().tempfile_in(dir.path()))
+            .unwrap();
+        let path = file.path().to_path_buf();
+        assert_eq!(*registry.list(), vec![path.clone()]);
+        drop(registry.remove_all());
+        assert!(!path.exists());
+        drop(reg);
+        drop(file);
         assert!(registry.list().is_empty());
     }
 }
