@@ -645,7 +645,7 @@ fn material_fields_default_when_absent() {
 
 // ----- 4. names and the extension syntax -----------------------------------------
 
-const SPEC_42: &str = "Globals { from = (0,0,0); to = %target; up = (0,0.1,0); }
+const EXTENSION_SYNTAX: &str = "Globals { from = (0,0,0); to = %target; up = (0,0.1,0); }
 Points  { eye = (0,0,0); target = (0,0,0.3); (0.1,0,0.3); (0.1,0,0); }
 BRDFs   {
     ambient = (0.1,0.1,0.1), diffuse = (0.5,0.5,0.5);
@@ -659,8 +659,8 @@ Objects {
 }";
 
 #[test]
-fn spec_4_2_named_points_and_materials() {
-    let c = compile_checked(SPEC_42);
+fn extension_syntax_named_points_and_materials() {
+    let c = compile_checked(EXTENSION_SYNTAX);
     assert!(c.diagnostics.is_empty(), "{:#?}", c.diagnostics);
     let scene = c.scene.unwrap();
 
