@@ -223,26 +223,20 @@ fn object(i: usize, o: &Object) -> Value {
         "material": o.material.0 + 1,
         "frame": isometry(&o.frame),
     });
-    let (kind, params) = match &o.shape {
+    let params = match &o.shape {
         Shape::Sphere(s) => {
             let (c, r) = s.euclidean();
-            (
-                "sphere",
-                json!({
-                    "center": point(&s.center()),
-                    "radius": s.radius(),
-                    "euclidean": { "center": vec3(c), "radius": r },
-                }),
-            )
-        }
-        Shape::Polygon(p) => ("polygon", polygon(p)),
-        Shape::Polyhedron(p) => (
-            "polyhedron",
             json!({
-                "center": point(&p.center()),
-                "faces": p.faces().iter().map(polygon).collect::<Vec<_>>(),
-            }),
-        ),
+                "center": point(&s.center()),
+                "radius": s.radius(),
+                "euclidean": { "center": vec3(c), "radius": r },
+            })
+        }
+        Shape::Polygon(p) => polygon(p),
+        Shape::Polyhedron(p) => json!({
+            "center": point(&p.center()),
+            "faces": p.faces().iter().map(polygon).collect::<Vec<_>>(),
+        }),
         Shape::Plane(p) => {
             let n = p.normal();
             let ball = match p.ball_shape() {
@@ -251,52 +245,37 @@ fn object(i: usize, o: &Object) -> Value {
                     json!({ "shape": "sphere", "center": vec3(center), "radius": radius })
                 }
             };
-            (
-                "plane",
-                json!({ "normal": [n.x, n.y, n.z, n.w], "ball": ball }),
-            )
+            json!({ "normal": [n.x, n.y, n.z, n.w], "ball": ball })
         }
-        Shape::Rod(r) => ("rod", rod(r)),
+        Shape::Rod(r) => rod(r),
         Shape::Cylinder(c) => {
             let line = c.line();
             let (back, front) = line.ends();
-            (
-                "cylinder",
-                json!({
-                    "line": {
-                        "base": point(&line.base()),
-                        "ends": [vec3(back.coords()), vec3(front.coords())],
-                    },
-                    "radius": c.radius(),
-                }),
-            )
+            json!({
+                "line": {
+                    "base": point(&line.base()),
+                    "ends": [vec3(back.coords()), vec3(front.coords())],
+                },
+                "radius": c.radius(),
+            })
         }
         Shape::Horosphere(h) => {
             let (c, r) = h.euclidean();
-            (
-                "horosphere",
-                json!({
-                    "center": vec3(h.center().coords()),
-                    "euclidean": { "center": vec3(c), "radius": r },
-                }),
-            )
-        }
-        Shape::Wireframe(rods) => (
-            "wireframe",
-            json!({ "rods": rods.iter().map(rod).collect::<Vec<_>>() }),
-        ),
-        Shape::Mesh(m) => (
-            "mesh",
             json!({
-                "vertices": m.vertices().iter().map(point).collect::<Vec<_>>(),
-                "triangles": m.triangles().iter().map(|t| json!(t)).collect::<Vec<_>>(),
-                "dropped_triangles": m.dropped_triangles(),
-                "smooth": m.smooth_angle(),
-            }),
-        ),
+                "center": vec3(h.center().coords()),
+                "euclidean": { "center": vec3(c), "radius": r },
+            })
+        }
+        Shape::Wireframe(rods) => json!({ "rods": rods.iter().map(rod).collect::<Vec<_>>() }),
+        Shape::Mesh(m) => json!({
+            "vertices": m.vertices().iter().map(point).collect::<Vec<_>>(),
+            "triangles": m.triangles().iter().map(|t| json!(t)).collect::<Vec<_>>(),
+            "dropped_triangles": m.dropped_triangles(),
+            "smooth": m.smooth_angle(),
+        }),
     };
     if let (Value::Object(out), Value::Object(params)) = (&mut v, params) {
-        out.insert("kind".into(), Value::from(kind));
+        out.insert("kind".into(), Value::from(o.shape.kind_name()));
         out.extend(params);
     }
     v

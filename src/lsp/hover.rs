@@ -6,7 +6,7 @@
 use std::fmt::Write as _;
 
 use hgeom::Point;
-use hscene_lang::ir::{PointPosition, Rgb, Scene, Shape};
+use hscene_lang::ir::{PointPosition, Rgb, Scene};
 use hscene_lang::symbols::{Definition, SymbolKind};
 use lsp_types::{Hover, HoverContents, HoverParams, MarkupContent, MarkupKind};
 
@@ -150,29 +150,15 @@ fn object(scene: &Scene, name: &str, eye: Point) -> String {
         .filter(|o| o.name.as_deref() == Some(name))
     {
         let material = o.material.0 + 1;
-        match &o.shape {
-            Shape::Sphere(s) => {
-                let _ = writeln!(
-                    out,
-                    "Sphere of radius `{}`, material `#{material}`  ",
-                    s.radius()
-                );
-                out.push_str(&at_distance(s.center(), eye));
-            }
-            shape => {
-                let kind = match shape {
-                    Shape::Sphere(_) => "sphere",
-                    Shape::Polygon(_) => "polygon",
-                    Shape::Polyhedron(_) => "polyhedron",
-                    Shape::Plane(_) => "plane",
-                    Shape::Rod(_) => "rod",
-                    Shape::Cylinder(_) => "cylinder",
-                    Shape::Horosphere(_) => "horosphere",
-                    Shape::Wireframe(_) => "wireframe",
-                    Shape::Mesh(_) => "mesh",
-                };
-                let _ = writeln!(out, "A {kind}, material `#{material}`  ");
-            }
+        if let Some(s) = o.shape.sphere() {
+            let _ = writeln!(
+                out,
+                "Sphere of radius `{}`, material `#{material}`  ",
+                s.radius()
+            );
+            out.push_str(&at_distance(s.center(), eye));
+        } else {
+            let _ = writeln!(out, "A {}, material `#{material}`  ", o.shape.kind_name());
         }
     }
     out

@@ -36,6 +36,7 @@
 #![warn(missing_docs)]
 
 pub mod accurate;
+mod bound;
 mod compact;
 mod cylinder;
 mod distance;
@@ -63,6 +64,7 @@ mod serde_impls;
 mod shape;
 mod sphere;
 
+pub use bound::BoundingBall;
 pub use compact::Compact;
 pub use cylinder::HCylinder;
 pub use error::GeomError;

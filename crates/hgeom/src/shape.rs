@@ -1,16 +1,22 @@
-//! The interface every surface shares: ray intersection and moving by an
-//! isometry, plus the inside test for the closed ones.
+//! The interface every surface shares: ray intersection (nearest and any),
+//! moving by an isometry, a bounding ball, and whether it is representable
+//! in f64; plus the inside test for the closed ones.
 //!
 //! The inherent methods of each shape are the same functions (and document
 //! their own accuracy); the traits let generic code, such as a renderer's
-//! list of objects or a test over every shape, treat them alike.
+//! list of objects or a test over every shape, treat them alike. The trait
+//! is dyn-compatible: a renderer can hold `Box<dyn Shape + Send + Sync>`.
 
+use glam::DVec4;
+
+use crate::bound::{self, BoundingBall};
 use crate::cylinder::HCylinder;
 use crate::horosphere::Horosphere;
 use crate::isometry::Isometry;
+use crate::lorentz;
 use crate::mesh::TriangleMesh;
 use crate::plane::HPlane;
-use crate::point::Point;
+use crate::point::{Point, Vertex};
 use crate::polygon::ConvexPolygon;
 use crate::polyhedron::Polyhedron;
 use crate::ray::{Hit, Ray};
@@ -23,7 +29,7 @@ use crate::sphere::HSphere;
 /// ```
 /// use hgeom::{HSphere, Isometry, Point, Ray, Shape};
 ///
-/// fn nearest<S: Shape>(shapes: &[S], ray: &Ray) -> Option<f64> {
+/// fn nearest(shapes: &[Box<dyn Shape>], ray: &Ray) -> Option<f64> {
 ///     shapes
 ///         .iter()
 ///         .filter_map(|s| s.intersect(ray, 0.0, f64::INFINITY))
@@ -34,8 +40,9 @@ use crate::sphere::HSphere;
 /// let near = HSphere::new(Point::new(0.0, 0.0, 0.3)?, 0.1)?;
 /// let far = HSphere::new(Point::new(0.0, 0.0, 0.8)?, 0.1)?;
 /// let ray = Ray::from_origin(glam::DVec3::Z)?;
-/// let t = nearest(&[far, near], &ray).unwrap();
+/// let t = nearest(&[Box::new(far), Box::new(near)], &ray).unwrap();
 /// assert!((t - (near.center().distance(Point::ORIGIN) - 0.1)).abs() < 1e-14);
+/// assert!(near.bound().is_some() && near.is_representable());
 /// # Ok::<(), hgeom::GeomError>(())
 /// ```
 pub trait Shape {
@@ -43,10 +50,45 @@ pub trait Shape {
     /// inside `(t_min, t_max)`, with the outward unit normal there.
     fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit>;
 
+    /// True if the ray meets the surface anywhere in `(t_min, t_max)`: the
+    /// shadow-ray test, which may stop at the first hit it finds.
+    #[inline]
+    fn blocks(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        self.intersect(ray, t_min, t_max).is_some()
+    }
+
     /// The image of the surface under `iso`.
     fn transformed(&self, iso: &Isometry) -> Self
     where
         Self: Sized;
+
+    /// A closed h-ball containing the surface (and every hit its exact test
+    /// accepts); `None` if it is unbounded: it reaches the absolute (planes,
+    /// cylinders, horospheres, anything with an ideal point).
+    fn bound(&self) -> Option<BoundingBall>;
+
+    /// Balls whose union contains the surface, for the leaves of a bounding
+    /// hierarchy; empty if it is unbounded. Long thin surfaces give several
+    /// small balls, which hug them far better than one ball can.
+    fn bound_pieces(&self) -> Vec<BoundingBall> {
+        self.bound().into_iter().collect()
+    }
+
+    /// True if every quantity that defines the surface is finite and usable
+    /// in f64 here: its points have ball coordinates with a positive gap,
+    /// its normals and frames are finite. A surface moved too far from the
+    /// origin fails this; the exact tests need it.
+    fn is_representable(&self) -> bool;
+
+    /// [`Shape::is_representable`], and in addition well conditioned enough
+    /// in this frame for the exact tests to be right: a plane's normal must
+    /// still be unit (one carried far by a Lorentz matrix loses
+    /// `eps e^{2d}` of it and would meet rays at the wrong place). Asked of
+    /// surfaces already moved near the eye; far from it, a surface can be
+    /// representable and not traceable until moved.
+    fn is_traceable(&self) -> bool {
+        self.is_representable()
+    }
 }
 
 /// A shape that bounds a region: points can be inside it.
@@ -55,31 +97,138 @@ pub trait Solid: Shape {
     fn contains(&self, p: &Point) -> bool;
 }
 
-macro_rules! impl_shape {
-    ($($t:ty),*) => {$(
-        impl Shape for $t {
-            #[inline]
-            fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-                <$t>::intersect(self, ray, t_min, t_max)
-            }
-            #[inline]
-            fn transformed(&self, iso: &Isometry) -> Self {
-                <$t>::transformed(self, iso)
-            }
+/// `intersect` and `transformed` of a shape, forwarded to its inherent
+/// methods of the same names.
+macro_rules! forward_intersect_and_move {
+    ($t:ty) => {
+        #[inline]
+        fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+            <$t>::intersect(self, ray, t_min, t_max)
         }
-    )*};
+        #[inline]
+        fn transformed(&self, iso: &Isometry) -> Self {
+            <$t>::transformed(self, iso)
+        }
+    };
 }
 
-impl_shape!(
-    HSphere,
-    HPlane,
-    HCylinder,
-    Horosphere,
-    Rod,
-    ConvexPolygon,
-    Polyhedron,
-    TriangleMesh
-);
+/// True if a polygon's or rod's defining point is usable: an h-point with
+/// ball coordinates, or an ideal point with a finite direction.
+fn vertex_ok(v: &Vertex) -> bool {
+    match v {
+        Vertex::Interior(p) => p.is_representable(),
+        Vertex::Ideal(i) => i.coords().is_finite(),
+    }
+}
+
+/// True if a plane's normal is finite and still unit to `1e-6`.
+fn normal_is_unit(n: DVec4) -> bool {
+    n.is_finite() && (lorentz::dot(n, n) - 1.0).abs() <= 1e-6
+}
+
+impl Shape for HSphere {
+    forward_intersect_and_move!(HSphere);
+    fn bound(&self) -> Option<BoundingBall> {
+        BoundingBall::new(self.center().to_hyperboloid(), self.radius())
+    }
+    fn is_representable(&self) -> bool {
+        self.center().is_representable()
+    }
+}
+
+impl Shape for HPlane {
+    forward_intersect_and_move!(HPlane);
+    fn bound(&self) -> Option<BoundingBall> {
+        None
+    }
+    fn is_representable(&self) -> bool {
+        self.normal().is_finite()
+    }
+    fn is_traceable(&self) -> bool {
+        normal_is_unit(self.normal())
+    }
+}
+
+impl Shape for HCylinder {
+    forward_intersect_and_move!(HCylinder);
+    fn bound(&self) -> Option<BoundingBall> {
+        None
+    }
+    fn is_representable(&self) -> bool {
+        self.line().base().is_representable() && self.line().frame().is_finite()
+    }
+}
+
+impl Shape for Horosphere {
+    forward_intersect_and_move!(Horosphere);
+    fn bound(&self) -> Option<BoundingBall> {
+        None
+    }
+    fn is_representable(&self) -> bool {
+        let (c, r) = self.euclidean();
+        c.is_finite() && r.is_finite() && r > 0.0
+    }
+}
+
+impl Shape for Rod {
+    forward_intersect_and_move!(Rod);
+    fn bound(&self) -> Option<BoundingBall> {
+        bound::rod_ball(self)
+    }
+    fn bound_pieces(&self) -> Vec<BoundingBall> {
+        bound::rod_pieces(self)
+    }
+    fn is_representable(&self) -> bool {
+        vertex_ok(&self.start()) && vertex_ok(&self.end()) && self.tube().line().frame().is_finite()
+    }
+}
+
+impl Shape for ConvexPolygon {
+    forward_intersect_and_move!(ConvexPolygon);
+    fn bound(&self) -> Option<BoundingBall> {
+        bound::vertices_ball(self.vertices())
+    }
+    fn is_representable(&self) -> bool {
+        self.vertices().iter().all(vertex_ok)
+    }
+    fn is_traceable(&self) -> bool {
+        self.is_representable() && normal_is_unit(self.plane().normal())
+    }
+}
+
+impl Shape for Polyhedron {
+    forward_intersect_and_move!(Polyhedron);
+    /// The ball about every vertex; `None` if a vertex is ideal.
+    fn bound(&self) -> Option<BoundingBall> {
+        bound::vertices_ball(self.faces().iter().flat_map(|f| f.vertices()))
+    }
+    fn is_representable(&self) -> bool {
+        self.center().is_representable() && self.faces().iter().all(Shape::is_representable)
+    }
+    fn is_traceable(&self) -> bool {
+        self.faces().iter().all(Shape::is_traceable)
+    }
+}
+
+impl Shape for TriangleMesh {
+    forward_intersect_and_move!(TriangleMesh);
+    #[inline]
+    fn blocks(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        TriangleMesh::blocks(self, ray, t_min, t_max)
+    }
+    fn bound(&self) -> Option<BoundingBall> {
+        let (centre, radius) = self.bounding_ball();
+        BoundingBall::new(centre, radius)
+    }
+    /// The placement's translation part is the mesh's centre; the vertices
+    /// are within the bounding radius of it.
+    fn is_representable(&self) -> bool {
+        let (centre, radius) = self.bounding_ball();
+        self.placement().translation_part().is_representable()
+            && centre.is_finite()
+            && radius.is_finite()
+    }
+}
 
 macro_rules! impl_solid {
     ($($t:ty),*) => {$(

@@ -45,45 +45,11 @@ impl Bound {
         )
     }
 
-    /// The centre, on the hyperboloid.
-    pub fn center(&self) -> DVec4 {
-        self.center
-    }
-
-    /// The hyperbolic radius.
-    pub fn radius(&self) -> f64 {
-        self.radius
-    }
-
-    /// A ball containing every point (hyperboloid vectors), enlarged by `pad`.
-    ///
-    /// The centre is the normalised sum `m / sqrt(-<m,m>)` (for two points,
-    /// the midpoint of their segment); `-<m,m>` is evaluated as
-    /// `n^2 + sum_{i<j} |X_i - X_j|^2` (Lorentz norms of differences, all
-    /// non-negative), which does not cancel even for far, clustered
-    /// points. The radius is the largest distance from the centre.
-    pub fn around(points: &[DVec4], pad: f64) -> Option<Bound> {
-        if points.is_empty() {
-            return None;
-        }
-        let n = points.len() as f64;
-        let sum: DVec4 = points.iter().copied().sum();
-        let mut spread = 0.0;
-        for (i, a) in points.iter().enumerate() {
-            for b in &points[i + 1..] {
-                let d = *a - *b;
-                spread += lorentz::dot(d, d).max(0.0);
-            }
-        }
-        // -<m,m> = sum_{i,j} -<X_i,X_j> and -<X_i,X_j> = 1 + |X_i - X_j|^2 / 2,
-        // so -<m,m> = n^2 + sum_{i<j} |X_i - X_j|^2.
-        let norm = (n * n + spread).sqrt();
-        let center = sum / norm;
-        let radius = points
-            .iter()
-            .map(|x| lorentz::distance(center, *x))
-            .fold(0.0, f64::max);
-        Bound::new(center, radius + pad)
+    /// True if the hyperboloid point lies in the ball, to a relative
+    /// tolerance on `cosh r`.
+    #[cfg(test)]
+    pub fn contains(&self, x: DVec4, tolerance: f64) -> bool {
+        -lorentz::dot(x, self.center) <= self.cosh_r * (1.0 + tolerance)
     }
 
     /// The smallest ball containing both.
@@ -319,6 +285,11 @@ fn build_into(nodes: &mut Vec<Node>, work: &mut [(u32, Bound, DVec3)]) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn around(points: &[DVec4]) -> Bound {
+        let ball = hgeom::BoundingBall::around(points, 0.0).unwrap();
+        Bound::new(ball.center(), ball.radius()).unwrap()
+    }
     use hgeom::Point;
 
     fn h(x: f64, y: f64, z: f64) -> DVec4 {
@@ -330,7 +301,7 @@ mod tests {
     #[test]
     fn around_contains_its_points_and_union_contains_both() {
         let pts = [h(0.1, 0.2, 0.3), h(-0.4, 0.1, 0.5), h(0.2, -0.6, 0.1)];
-        let b = Bound::around(&pts, 0.0).unwrap();
+        let b = around(&pts);
         for x in pts {
             assert!(lorentz::distance(b.center, x) <= b.radius * (1.0 + 1e-12));
         }
@@ -340,7 +311,7 @@ mod tests {
             assert!(lorentz::distance(u.center, c) + r <= u.radius * (1.0 + 1e-12));
         }
         // Two points: the centre is the midpoint.
-        let two = Bound::around(&[h(0.5, 0.0, 0.0), h(-0.5, 0.0, 0.0)], 0.0).unwrap();
+        let two = around(&[h(0.5, 0.0, 0.0), h(-0.5, 0.0, 0.0)]);
         assert!((two.center - DVec4::W).length() < 1e-15);
     }
 

@@ -4,101 +4,52 @@
 //! pays the exact intersection only for what it may actually meet.
 
 use hgeom::glam::{DVec3, DVec4};
-use hgeom::lorentz;
-use hgeom::{
-    ConvexPolygon, HCylinder, HPlane, HSphere, Hit, Horosphere, Isometry, Point, Ray, Rod,
-    TriangleMesh, Vertex,
-};
-use hscene_lang::ir::{self, Fog, Material, Rgb, Scene};
+use hgeom::{Hit, Isometry, Point, Ray};
+use hscene_lang::ir::{self, BoxedSurface, Fog, Material, Rgb, Scene, Surfaces};
 
 use crate::bvh::{Bound, Bvh, Step};
 use crate::camera::CanonicalCamera;
 use crate::error::RenderError;
 
-/// Padding of bounds around polygons. A polygon accepts hits slightly
-/// outside its edges (`<P,E> >= -1e-10 |P| |E|`, to keep shared edges
-/// watertight); that slack grows like `cosh^2` of the distance from the
-/// origin, so the pad is this factor times `1 + max w^2` over the vertices.
-const FLAT_PAD: f64 = 1e-9;
-
-/// A traceable shape in the canonical frame.
-#[derive(Clone, Debug)]
+/// A traceable shape in the canonical frame: one surface, or the parts of a
+/// composite (a polyhedron's faces, a wireframe's rods) under a hierarchy of
+/// their own. Which kinds of surface there are is the IR's business
+/// ([`ir::Shape`]); here every surface is an `hgeom::Shape`.
 pub enum Primitive {
-    /// An h-sphere.
-    Sphere(HSphere),
-    /// A convex polygon.
-    Polygon(ConvexPolygon),
-    /// A polyhedral surface: its faces, with a hierarchy over them.
-    Polyhedron(Composite<ConvexPolygon>),
-    /// A whole h-plane.
-    Plane(HPlane),
-    /// A rod about a segment (boxed: a rod is several times larger than
-    /// the other variants).
-    Rod(Box<Rod>),
-    /// An h-cylinder about a whole line (boxed, likewise).
-    Cylinder(Box<HCylinder>),
-    /// A horosphere.
-    Horosphere(Horosphere),
-    /// A set of rods, with a hierarchy over them.
-    Wireframe(Composite<Rod>),
-    /// A triangle mesh, with its own hierarchy (in Klein coordinates of the
-    /// mesh's local frame; boxed: the mesh's header is large).
-    Mesh(Box<TriangleMesh>),
+    /// One surface.
+    Single(BoxedSurface),
+    /// Parts with a hierarchy over them.
+    Composite(Composite),
 }
 
-/// What a composite primitive is made of.
-pub trait Part {
-    /// Nearest hit in `(t_min, t_max)`.
-    fn hit(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit>;
-    /// A ball containing the part, if it is bounded.
-    fn bound(&self) -> Option<Bound>;
-    /// Balls whose union contains the part, for the hierarchy's leaves;
-    /// empty if the part is unbounded. Long thin parts give several small
-    /// balls, which hug them far better than one ball can.
-    fn pieces(&self) -> Vec<Bound> {
-        self.bound().into_iter().collect()
-    }
-}
-
-impl Part for ConvexPolygon {
-    #[inline]
-    fn hit(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        self.intersect(ray, t_min, t_max)
-    }
-    fn bound(&self) -> Option<Bound> {
-        polygon_bound(self)
-    }
-}
-
-impl Part for Rod {
-    #[inline]
-    fn hit(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        self.intersect(ray, t_min, t_max)
-    }
-    fn bound(&self) -> Option<Bound> {
-        rod_bound(self)
-    }
-    fn pieces(&self) -> Vec<Bound> {
-        rod_pieces(self)
+impl std::fmt::Debug for Primitive {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Primitive::Single(_) => f.write_str("Primitive::Single"),
+            Primitive::Composite(c) => write!(f, "Primitive::Composite({} parts)", c.parts.len()),
+        }
     }
 }
 
 /// Parts with a hierarchy of bounds over them.
-#[derive(Clone, Debug)]
-pub struct Composite<T> {
-    parts: Vec<T>,
+pub struct Composite {
+    parts: Vec<BoxedSurface>,
     accel: Accel,
 }
 
-impl<T: Part> Composite<T> {
-    fn new(parts: Vec<T>) -> Composite<T> {
+impl Composite {
+    fn new(parts: Vec<BoxedSurface>) -> Composite {
         let mut leaves = Vec::new();
         for (i, part) in parts.iter().enumerate() {
-            let pieces = part.pieces();
+            let pieces = part.bound_pieces();
             if pieces.is_empty() {
                 leaves.push((i as u32, None));
             }
-            leaves.extend(pieces.into_iter().map(|b| (i as u32, Some(b))));
+            leaves.extend(
+                pieces
+                    .iter()
+                    .map(|b| (i as u32, Bound::new(b.center(), b.radius()))),
+            );
         }
         Composite {
             parts,
@@ -107,7 +58,7 @@ impl<T: Part> Composite<T> {
     }
 
     /// The parts.
-    pub fn parts(&self) -> &[T] {
+    pub fn parts(&self) -> &[BoxedSurface] {
         &self.parts
     }
 
@@ -115,7 +66,7 @@ impl<T: Part> Composite<T> {
     fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         self.accel
             .nearest(ray, t_min, t_max, |i, lo, hi| {
-                self.parts[i as usize].hit(ray, lo, hi)
+                self.parts[i as usize].intersect(ray, lo, hi)
             })
             .map(|(hit, _)| hit)
     }
@@ -124,7 +75,7 @@ impl<T: Part> Composite<T> {
     fn blocks(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
         let mut found = false;
         self.accel.any(ray, t_min, t_max, |i| {
-            found = self.parts[i as usize].hit(ray, t_min, t_max).is_some();
+            found = self.parts[i as usize].blocks(ray, t_min, t_max);
             if found { Step::Stop } else { Step::Continue }
         });
         found
@@ -216,165 +167,32 @@ impl Accel {
     }
 }
 
-/// A ball around a polygon: around its vertices (a convex polygon is their
-/// convex hull, and balls are convex); none if a vertex is ideal.
-fn polygon_bound(p: &ConvexPolygon) -> Option<Bound> {
-    let pts = p
-        .vertices()
-        .iter()
-        .map(|v| match v {
-            Vertex::Interior(q) => Some(q.to_hyperboloid()),
-            Vertex::Ideal(_) => None,
-        })
-        .collect::<Option<Vec<DVec4>>>()?;
-    let far = pts.iter().map(|x| x.w * x.w).fold(1.0, f64::max);
-    Bound::around(&pts, FLAT_PAD * (1.0 + far))
-}
-
-/// A ball around a finite rod: centred at the segment's midpoint, of radius
-/// half its length plus the rod's radius (the rod is the `r`-neighbourhood
-/// of the segment, and the segment lies in the ball about its midpoint).
-fn rod_bound(r: &Rod) -> Option<Bound> {
-    match (r.start(), r.end()) {
-        (Vertex::Interior(a), Vertex::Interior(b)) => Bound::around(
-            &[a.to_hyperboloid(), b.to_hyperboloid()],
-            r.radius() * (1.0 + 1e-9) + 1e-12,
-        ),
-        _ => None,
-    }
-}
-
-/// Balls along a finite rod: the segment cut into `k` equal pieces, each
-/// in the ball about its midpoint of radius half its length plus the rod's
-/// radius (the end pieces' balls contain the caps, as the caps are balls of
-/// the rod's radius about the end points). `k` makes the pieces about 16
-/// rod radii long, at most 8 of them: measured on a {4,3,5} wireframe that
-/// saves a quarter of the work (long rods around the eye), while on 600
-/// short random rods it costs 2 %; finer pieces only add leaves.
-fn rod_pieces(r: &Rod) -> Vec<Bound> {
-    let single = || rod_bound(r).into_iter().collect();
-    let (Vertex::Interior(a), Vertex::Interior(b)) = (r.start(), r.end()) else {
-        return Vec::new();
-    };
-    let (xa, xb) = (a.to_hyperboloid(), b.to_hyperboloid());
-    let Some((towards, len)) = lorentz::direction_towards(xa, xb) else {
-        return single();
-    };
-    let k = (len / (16.0 * r.radius())).ceil().clamp(1.0, 8.0);
-    if !(k > 1.0) {
-        return single();
-    }
-    let half = 0.5 * len / k;
-    let radius = (half + r.radius()) * (1.0 + 1e-9) + 1e-12;
-    let pieces: Option<Vec<Bound>> = (0..k as u32)
-        .map(|i| {
-            let s = (2.0 * f64::from(i) + 1.0) * half;
-            Bound::new(lorentz::geodesic_point(xa, towards, s), radius)
-        })
-        .collect();
-    pieces.unwrap_or_else(single)
-}
-
 impl Primitive {
     /// The shape moved by each of `stages` in turn.
     fn from_shape(shape: &ir::Shape, stages: &[Isometry]) -> Primitive {
-        let mut prim = Primitive::moved(shape, &stages[0]);
+        let mut moved = shape.transformed(&stages[0]);
         for iso in &stages[1..] {
-            prim = prim.transformed(iso);
+            moved = moved.transformed(iso);
         }
-        prim
+        match moved.into_surfaces() {
+            Surfaces::Single(s) => Primitive::Single(s),
+            Surfaces::Parts(parts) => Primitive::Composite(Composite::new(parts)),
+        }
     }
 
-    fn transformed(&self, iso: &Isometry) -> Primitive {
+    /// True if every part can be traced exactly in this frame.
+    fn is_traceable(&self) -> bool {
         match self {
-            Primitive::Sphere(s) => Primitive::Sphere(s.transformed(iso)),
-            Primitive::Polygon(p) => Primitive::Polygon(p.transformed(iso)),
-            Primitive::Polyhedron(p) => Primitive::Polyhedron(Composite::new(
-                p.parts.iter().map(|f| f.transformed(iso)).collect(),
-            )),
-            Primitive::Plane(p) => Primitive::Plane(p.transformed(iso)),
-            Primitive::Rod(r) => Primitive::Rod(Box::new(r.transformed(iso))),
-            Primitive::Cylinder(c) => Primitive::Cylinder(Box::new(c.transformed(iso))),
-            Primitive::Horosphere(h) => Primitive::Horosphere(h.transformed(iso)),
-            Primitive::Wireframe(w) => Primitive::Wireframe(Composite::new(
-                w.parts.iter().map(|r| r.transformed(iso)).collect(),
-            )),
-            Primitive::Mesh(m) => Primitive::Mesh(Box::new(m.transformed(iso))),
-        }
-    }
-
-    fn moved(shape: &ir::Shape, iso: &Isometry) -> Primitive {
-        match shape {
-            ir::Shape::Sphere(s) => Primitive::Sphere(s.transformed(iso)),
-            ir::Shape::Polygon(p) => Primitive::Polygon(p.transformed(iso)),
-            ir::Shape::Polyhedron(p) => {
-                Primitive::Polyhedron(Composite::new(p.transformed(iso).faces().to_vec()))
-            }
-            ir::Shape::Plane(p) => Primitive::Plane(p.transformed(iso)),
-            ir::Shape::Rod(r) => Primitive::Rod(Box::new(r.transformed(iso))),
-            ir::Shape::Cylinder(c) => Primitive::Cylinder(Box::new(c.transformed(iso))),
-            ir::Shape::Horosphere(h) => Primitive::Horosphere(h.transformed(iso)),
-            ir::Shape::Wireframe(rods) => Primitive::Wireframe(Composite::new(
-                rods.iter().map(|r| r.transformed(iso)).collect(),
-            )),
-            ir::Shape::Mesh(m) => Primitive::Mesh(Box::new(m.transformed(iso))),
-        }
-    }
-
-    /// True if every defining point is representable in f64 in this frame.
-    fn is_representable(&self) -> bool {
-        let vertex_ok = |v: &Vertex| match v {
-            Vertex::Interior(p) => p.is_representable(),
-            Vertex::Ideal(i) => i.coords().is_finite(),
-        };
-        let rod_ok = |r: &Rod| {
-            vertex_ok(&r.start()) && vertex_ok(&r.end()) && r.tube().line().frame().is_finite()
-        };
-        // A plane whose normal is no longer unit in this frame (it came from
-        // a bare normal far out, carried by a Lorentz matrix that lost
-        // `eps e^{2d}`) would meet rays at the wrong place or not at all: a
-        // silent loss. Planes placed by an isometry are unit here to rounding.
-        let plane_ok = |n: DVec4| n.is_finite() && (lorentz::dot(n, n) - 1.0).abs() <= 1e-6;
-        let polygon_ok =
-            |p: &ConvexPolygon| p.vertices().iter().all(vertex_ok) && plane_ok(p.plane().normal());
-        match self {
-            Primitive::Sphere(s) => s.center().is_representable(),
-            Primitive::Polygon(p) => polygon_ok(p),
-            Primitive::Polyhedron(p) => p.parts().iter().all(polygon_ok),
-            Primitive::Plane(p) => plane_ok(p.normal()),
-            Primitive::Rod(r) => rod_ok(r),
-            Primitive::Cylinder(c) => {
-                c.line().base().is_representable() && c.line().frame().is_finite()
-            }
-            Primitive::Horosphere(h) => {
-                let (c, r) = h.euclidean();
-                c.is_finite() && r.is_finite()
-            }
-            Primitive::Wireframe(w) => w.parts().iter().all(rod_ok),
-            // The placement's translation part is the mesh's centre; the
-            // vertices are within the bounding radius of it.
-            Primitive::Mesh(m) => {
-                let (centre, radius) = m.bounding_ball();
-                m.placement().translation_part().is_representable()
-                    && centre.is_finite()
-                    && radius.is_finite()
-            }
+            Primitive::Single(s) => s.is_traceable(),
+            Primitive::Composite(c) => c.parts.iter().all(|p| p.is_traceable()),
         }
     }
 
     /// A ball containing the primitive, if it is bounded.
     fn bound(&self) -> Option<Bound> {
         match self {
-            Primitive::Sphere(s) => Bound::new(s.center().to_hyperboloid(), s.radius()),
-            Primitive::Polygon(p) => polygon_bound(p),
-            Primitive::Polyhedron(p) => p.accel.bound(),
-            Primitive::Rod(r) => rod_bound(r),
-            Primitive::Wireframe(w) => w.accel.bound(),
-            Primitive::Mesh(m) => {
-                let (centre, radius) = m.bounding_ball();
-                Bound::new(centre, radius)
-            }
-            Primitive::Plane(_) | Primitive::Cylinder(_) | Primitive::Horosphere(_) => None,
+            Primitive::Single(s) => s.bound().and_then(|b| Bound::new(b.center(), b.radius())),
+            Primitive::Composite(c) => c.accel.bound(),
         }
     }
 
@@ -382,15 +200,8 @@ impl Primitive {
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         match self {
-            Primitive::Sphere(s) => s.intersect(ray, t_min, t_max),
-            Primitive::Polygon(p) => p.intersect(ray, t_min, t_max),
-            Primitive::Polyhedron(p) => p.intersect(ray, t_min, t_max),
-            Primitive::Plane(p) => p.intersect(ray, t_min, t_max),
-            Primitive::Rod(r) => r.intersect(ray, t_min, t_max),
-            Primitive::Cylinder(c) => c.intersect(ray, t_min, t_max),
-            Primitive::Horosphere(h) => h.intersect(ray, t_min, t_max),
-            Primitive::Wireframe(w) => w.intersect(ray, t_min, t_max),
-            Primitive::Mesh(m) => m.intersect(ray, t_min, t_max),
+            Primitive::Single(s) => s.intersect(ray, t_min, t_max),
+            Primitive::Composite(c) => c.intersect(ray, t_min, t_max),
         }
     }
 
@@ -399,16 +210,14 @@ impl Primitive {
     #[inline]
     pub fn blocks(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
         match self {
-            Primitive::Polyhedron(p) => p.blocks(ray, t_min, t_max),
-            Primitive::Wireframe(w) => w.blocks(ray, t_min, t_max),
-            Primitive::Mesh(m) => m.blocks(ray, t_min, t_max),
-            _ => self.intersect(ray, t_min, t_max).is_some(),
+            Primitive::Single(s) => s.blocks(ray, t_min, t_max),
+            Primitive::Composite(c) => c.blocks(ray, t_min, t_max),
         }
     }
 }
 
 /// An object ready for tracing.
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub struct PreparedObject {
     /// Geometry in the canonical frame.
     pub primitive: Primitive,
@@ -447,7 +256,7 @@ pub enum Nearest {
 }
 
 /// The whole scene in the canonical frame.
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub struct PreparedScene {
     /// Objects.
     pub objects: Vec<PreparedObject>,
@@ -501,7 +310,7 @@ impl PreparedScene {
                 )));
             }
             let primitive = Primitive::from_shape(&o.shape, stages);
-            if !primitive.is_representable() {
+            if !primitive.is_traceable() {
                 return Err(RenderError::OutOfRange {
                     what: format!("object {}", index + 1),
                 });
@@ -618,6 +427,7 @@ impl PreparedScene {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use hgeom::{ConvexPolygon, HPlane, Rod};
 
     fn p(x: f64, y: f64, z: f64) -> Point {
         Point::from_coords(DVec3::new(x, y, z)).unwrap()
@@ -637,34 +447,9 @@ mod tests {
             .transformed(&far);
         let bare = HPlane::from_normal(placed.normal()).unwrap();
         let back = far.inverse();
-        let prim = |plane: &HPlane| Primitive::Plane(*plane).transformed(&back);
-        assert!(prim(&placed).is_representable());
-        assert!(!prim(&bare).is_representable());
-    }
-
-    /// A long rod's pieces cover it: every hit lies in one of them.
-    #[test]
-    fn rod_pieces_cover_the_rod() {
-        let rod = Rod::new(p(-0.6, 0.1, 0.4).into(), p(0.5, -0.1, 0.6).into(), 0.02).unwrap();
-        let pieces = rod_pieces(&rod);
-        assert_eq!(pieces.len(), 8);
-        let mut hits = 0;
-        for i in 0..4000 {
-            let a = f64::from(i) * 0.618_033_988_749_895;
-            let r = 0.95 * (f64::from(i) / 4000.0).sqrt();
-            let ray = Ray::from_origin_unchecked(DVec3::new(r * a.sin(), r * a.cos(), 1.0));
-            if let Some(hit) = rod.intersect(&ray, 0.0, f64::INFINITY) {
-                hits += 1;
-                assert!(
-                    pieces
-                        .iter()
-                        .any(|b| -hgeom::lorentz::dot(hit.point, b.center())
-                            <= b.radius().cosh() * (1.0 + 1e-12)),
-                    "hit {i} outside every piece"
-                );
-            }
-        }
-        assert!(hits > 50, "{hits}");
+        let prim = |plane: &HPlane| Primitive::from_shape(&ir::Shape::Plane(*plane), &[back]);
+        assert!(prim(&placed).is_traceable());
+        assert!(!prim(&bare).is_traceable());
     }
 
     /// Every primitive's bound contains the hits of many rays: the bound
@@ -681,26 +466,27 @@ mod tests {
         let dodeca = hgeom::Polyhedron::platonic(hgeom::Platonic::Dodecahedron, 0.4)
             .unwrap()
             .transformed(&Isometry::transvection_from_origin(p(0.0, 0.0, 0.5)));
-        let prims = [
-            Primitive::Rod(Box::new(rod.clone())),
-            Primitive::Polygon(poly),
-            Primitive::Polyhedron(Composite::new(dodeca.faces().to_vec())),
-            Primitive::Wireframe(Composite::new(vec![rod])),
+        let shapes = [
+            ir::Shape::Rod(rod.clone()),
+            ir::Shape::Polygon(poly),
+            ir::Shape::Polyhedron(dodeca),
+            ir::Shape::Wireframe(vec![rod]),
         ];
-        for prim in &prims {
+        for shape in &shapes {
+            let prim = Primitive::from_shape(shape, &[Isometry::IDENTITY]);
             let b = prim.bound().expect("bounded");
+            let mut hits = 0;
             for i in 0..2000 {
                 let a = f64::from(i) * 0.618_033_988_749_895;
                 let r = 0.9 * (f64::from(i) / 2000.0).sqrt();
                 let ray = Ray::from_origin_unchecked(DVec3::new(r * a.sin(), r * a.cos(), 1.0));
                 if let Some(hit) = prim.intersect(&ray, 0.0, f64::INFINITY) {
-                    assert!(
-                        -hgeom::lorentz::dot(hit.point, b.center()) <= b.radius().cosh() + 1e-12,
-                        "{prim:?}"
-                    );
+                    hits += 1;
+                    assert!(b.contains(hit.point, 1e-12), "{prim:?}");
                     assert!(b.entry(&ray, 1.0, f64::INFINITY).is_some());
                 }
             }
+            assert!(hits > 50, "{prim:?}: {hits}");
         }
     }
 }

@@ -4,10 +4,11 @@
 //! resolved, every transformation applied, every default filled in. The IR
 //! carries no source text and no spans; the renderer needs nothing else.
 
-use hgeom::{
-    ConvexPolygon, HCylinder, HPlane, HSphere, Horosphere, IdealPoint, Isometry, Point, Polyhedron,
-    Rod, TriangleMesh,
-};
+use hgeom::{IdealPoint, Isometry, Point};
+
+mod shape;
+
+pub use shape::{BoxedSurface, Shape, Surfaces};
 
 /// A linear RGB triple.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -221,32 +222,6 @@ pub struct Light {
     /// Shadow rays per shading point for an area light (`samples = n`);
     /// 1 for a point light. Invariant: at least 1.
     pub samples: u32,
-}
-
-/// The geometry of a scene object.
-// Rods carry their tube's Lorentz frame and two caps; boxing them would
-// save memory only in scenes of a few objects, and the IR is built once.
-#[allow(clippy::large_enum_variant)]
-#[derive(Clone, Debug, PartialEq)]
-pub enum Shape {
-    /// An h-sphere.
-    Sphere(HSphere),
-    /// A convex planar h-polygon.
-    Polygon(ConvexPolygon),
-    /// A polyhedral surface (faces oriented outward).
-    Polyhedron(Polyhedron),
-    /// A whole h-plane (its normal side is the outside).
-    Plane(HPlane),
-    /// The points within a distance of an h-segment.
-    Rod(Rod),
-    /// The points at a distance from a whole h-line.
-    Cylinder(HCylinder),
-    /// A horosphere (the outside is away from its ideal centre).
-    Horosphere(Horosphere),
-    /// A wireframe: the edges of a polygon or polyhedron as rods.
-    Wireframe(Vec<Rod>),
-    /// A triangle mesh (from an OBJ or PLY file).
-    Mesh(TriangleMesh),
 }
 
 /// A renderable object.

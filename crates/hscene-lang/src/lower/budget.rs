@@ -5,7 +5,6 @@
 //! anything is allocated; every object is counted once it exists.
 
 use crate::diagnostic::{Code, Diagnostic, Span};
-use crate::ir::Shape;
 
 use super::Lowerer;
 use super::figures::Figure;
@@ -39,22 +38,6 @@ pub(super) fn figure_estimate(f: Figure, depth: Option<f64>, faces: bool, edges:
         }
         _ => 0,
     }
-}
-
-/// Primitives of a shape.
-pub(super) fn shape_cost(shape: &Shape) -> u64 {
-    let n = match shape {
-        Shape::Polyhedron(p) => p.faces().len(),
-        Shape::Wireframe(rods) => rods.len(),
-        Shape::Mesh(m) => m.triangle_count(),
-        Shape::Sphere(_)
-        | Shape::Polygon(_)
-        | Shape::Plane(_)
-        | Shape::Rod(_)
-        | Shape::Cylinder(_)
-        | Shape::Horosphere(_) => 1,
-    };
-    n as u64
 }
 
 impl Lowerer<'_> {

@@ -12,7 +12,7 @@
 use std::collections::HashMap;
 
 use hgeom::glam::DVec3;
-use hgeom::{HLine, Isometry, Point, Vertex};
+use hgeom::{HLine, Isometry, Point};
 
 use super::objects::closest;
 use super::{Lowerer, TargetSlot, reference_text};
@@ -195,48 +195,6 @@ fn default_up_point(eye: &Point) -> Option<Point> {
 /// The image of a shape under an isometry, or `None` if some part of it
 /// leaves what f64 can represent.
 pub(super) fn transform_shape(shape: &Shape, iso: &Isometry) -> Option<Shape> {
-    let moved = match shape {
-        Shape::Sphere(s) => Shape::Sphere(s.transformed(iso)),
-        Shape::Polygon(p) => Shape::Polygon(p.transformed(iso)),
-        Shape::Polyhedron(p) => Shape::Polyhedron(p.transformed(iso)),
-        Shape::Plane(p) => Shape::Plane(p.transformed(iso)),
-        Shape::Rod(r) => Shape::Rod(r.transformed(iso)),
-        Shape::Cylinder(c) => Shape::Cylinder(c.transformed(iso)),
-        Shape::Horosphere(h) => Shape::Horosphere(h.transformed(iso)),
-        Shape::Mesh(m) => Shape::Mesh(m.transformed(iso)),
-        Shape::Wireframe(rods) => {
-            Shape::Wireframe(rods.iter().map(|r| r.transformed(iso)).collect())
-        }
-    };
-    representable(&moved).then_some(moved)
-}
-
-fn vertex_ok(v: &Vertex) -> bool {
-    match v {
-        Vertex::Interior(p) => p.is_representable(),
-        Vertex::Ideal(p) => p.coords().is_finite(),
-    }
-}
-
-/// True if every point that defines the shape has usable ball coordinates.
-pub(super) fn representable(shape: &Shape) -> bool {
-    match shape {
-        Shape::Sphere(s) => s.center().is_representable(),
-        Shape::Polygon(p) => p.vertices().iter().all(vertex_ok),
-        Shape::Polyhedron(p) => {
-            p.center().is_representable()
-                && p.faces().iter().all(|f| f.vertices().iter().all(vertex_ok))
-        }
-        Shape::Plane(p) => p.normal().is_finite(),
-        Shape::Rod(r) => vertex_ok(&r.start()) && vertex_ok(&r.end()),
-        Shape::Cylinder(c) => c.line().base().is_representable(),
-        Shape::Horosphere(h) => {
-            let (c, r) = h.euclidean();
-            c.is_finite() && r.is_finite() && r > 0.0
-        }
-        Shape::Mesh(m) => m.vertices().iter().all(Point::is_representable),
-        Shape::Wireframe(rods) => rods
-            .iter()
-            .all(|r| vertex_ok(&r.start()) && vertex_ok(&r.end())),
-    }
+    let moved = shape.transformed(iso);
+    moved.is_representable().then_some(moved)
 }

@@ -355,7 +355,7 @@ impl Lowerer<'_> {
         let placed = self.place(built, material, opts, st);
         let cost = placed
             .iter()
-            .map(|&i| super::budget::shape_cost(&self.objects[i].0.shape))
+            .map(|&i| self.objects[i].0.shape.primitive_count())
             .sum();
         if !self.charge(cost, st.span) {
             return Vec::new();

@@ -13,8 +13,8 @@
 //! the ball distance `2 asinh(|x - c| / sqrt(g_x g_c))` is good to a few
 //! ulps anywhere.
 
-use hgeom::glam::{DVec3, DVec4};
-use hgeom::{Isometry, Point, Rod, Vertex, lorentz};
+use hgeom::glam::DVec3;
+use hgeom::{Isometry, Point};
 
 use crate::ir::Shape;
 
@@ -42,80 +42,21 @@ impl SeenFrom {
 
     /// True if the point is strictly inside a closed object.
     pub(super) fn is_inside(&self, shape: &Shape) -> bool {
-        let iso = &self.to_origin;
-        let here = DVec4::W;
-        match shape {
-            Shape::Sphere(s) => self.point.distance(s.center()) < s.radius(),
-            Shape::Polygon(_) => false,
-            Shape::Polyhedron(p) => {
-                // Behind every face plane means inside only for a closed
-                // surface (the golden rectangles are not one): there every
-                // edge belongs to exactly two faces. For star polyhedra this
-                // finds the core.
-                let sides: usize = p.faces().iter().map(|f| f.vertices().len()).sum();
-                let closed = !p.faces().is_empty() && sides == 2 * p.edges().len();
-                closed
-                    && p.faces()
-                        .iter()
-                        .all(|f| lorentz::dot(here, f.plane().transformed(iso).normal()) < 0.0)
-            }
-            // A plane bounds a half-space, not an object one can be inside of.
-            Shape::Plane(_) => false,
-            Shape::Rod(r) => r.transformed(iso).contains_hyperboloid(here),
-            Shape::Cylinder(c) => c.transformed(iso).contains_hyperboloid(here),
-            Shape::Horosphere(h) => h.transformed(iso).contains_hyperboloid(here),
-            Shape::Wireframe(rods) => rods
-                .iter()
-                .any(|r| r.transformed(iso).contains_hyperboloid(here)),
-            // Whether a mesh is closed, and so has an inside, is not checked.
-            Shape::Mesh(_) => false,
-        }
+        shape.encloses(&self.point, &self.to_origin)
     }
 
     /// True if the object lies entirely on the far side of the plane
     /// through the point orthogonal to `view` (a unit ball direction at the
-    /// point, from [`SeenFrom::direction_to`]): in the point's frame that
-    /// plane is the flat one `x . view = 0`, and a point's side is the sign
-    /// of `x . view`, its signed distance `asinh(2 x.view / g)`.
+    /// point, from [`SeenFrom::direction_to`]).
     pub(super) fn is_behind(&self, shape: &Shape, view: DVec3) -> bool {
-        let iso = &self.to_origin;
-        let sinh_ahead = |p: &Point| {
-            let q = iso.apply(p);
-            2.0 * q.coords().dot(view) / q.gap()
-        };
-        let vertex_behind = |v: &Vertex| iso.apply_vertex(v).coords().dot(view) < 0.0;
-        match shape {
-            Shape::Sphere(s) => sinh_ahead(&s.center()) < -s.radius().sinh(),
-            Shape::Polygon(p) => p.vertices().iter().all(vertex_behind),
-            Shape::Polyhedron(p) => p
-                .faces()
-                .iter()
-                .all(|f| f.vertices().iter().all(vertex_behind)),
-            // Unbounded surfaces always reach in front of the eye's plane.
-            Shape::Plane(_) | Shape::Cylinder(_) | Shape::Horosphere(_) => false,
-            Shape::Rod(r) => rod_behind(r, &sinh_ahead),
-            Shape::Wireframe(rods) => rods.iter().all(|r| rod_behind(r, &sinh_ahead)),
-            Shape::Mesh(m) => m.vertices().iter().all(|p| sinh_ahead(p) < 0.0),
-        }
+        shape.lies_behind(&self.to_origin, view)
     }
-}
-
-/// A rod is behind the plane when both ends are, by more than its radius
-/// (the rod lies within its radius of the segment, which is behind if its
-/// ends are: half-spaces are convex).
-fn rod_behind(rod: &Rod, sinh_ahead: &impl Fn(&Point) -> f64) -> bool {
-    let end_behind = |v: Vertex| match v {
-        Vertex::Interior(p) => sinh_ahead(&p) < -rod.radius().sinh(),
-        // An ideal end: the rod's tube reaches the absolute there.
-        Vertex::Ideal(_) => false,
-    };
-    end_behind(rod.start()) && end_behind(rod.end())
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use hgeom::{HSphere, Horosphere, IdealPoint};
+    use hgeom::{HSphere, Horosphere, IdealPoint, Rod};
 
     fn at(dir: DVec3, d: f64) -> Point {
         Point::at_distance_from_origin(dir, d).unwrap()

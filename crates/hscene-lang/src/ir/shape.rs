@@ -1,0 +1,230 @@
+//! The geometry of a scene object, and the one place that knows each kind
+//! of shape: every pass (moves, budgets, lints, the renderer, the IR's
+//! JSON form) asks a [`Shape`] through these methods instead of matching on
+//! its variants.
+//!
+//! Adding a kind of shape: its hgeom surface (implementing `hgeom::Shape`),
+//! a variant here with a row in each `match` below, its object keyword in
+//! the lowering's keyword table, and its JSON fields in the binary's IR
+//! writer (`docs/ARCHITECTURE.md`, "Adding a primitive").
+
+use hgeom::glam::{DVec3, DVec4};
+use hgeom::{
+    ConvexPolygon, HCylinder, HPlane, HSphere, Horosphere, Isometry, Point, Polyhedron, Rod,
+    Shape as Surface, TriangleMesh, Vertex, lorentz,
+};
+
+/// A surface the renderer can trace, of any kind.
+pub type BoxedSurface = Box<dyn Surface + Send + Sync>;
+
+/// What a shape is made of, for a renderer.
+pub enum Surfaces {
+    /// One surface.
+    Single(BoxedSurface),
+    /// Several parts (a polyhedron's faces, a wireframe's rods), which a
+    /// renderer may put under a bounding hierarchy of their own; the object
+    /// is met where its nearest part is.
+    Parts(Vec<BoxedSurface>),
+}
+
+/// The geometry of a scene object.
+// Rods carry their tube's Lorentz frame and two caps; boxing them would
+// save memory only in scenes of a few objects, and the IR is built once.
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Debug, PartialEq)]
+pub enum Shape {
+    /// An h-sphere.
+    Sphere(HSphere),
+    /// A convex planar h-polygon.
+    Polygon(ConvexPolygon),
+    /// A polyhedral surface (faces oriented outward).
+    Polyhedron(Polyhedron),
+    /// A whole h-plane (its normal side is the outside).
+    Plane(HPlane),
+    /// The points within a distance of an h-segment.
+    Rod(Rod),
+    /// The points at a distance from a whole h-line.
+    Cylinder(HCylinder),
+    /// A horosphere (the outside is away from its ideal centre).
+    Horosphere(Horosphere),
+    /// A wireframe: the edges of a polygon or polyhedron as rods.
+    Wireframe(Vec<Rod>),
+    /// A triangle mesh (from an OBJ or PLY file).
+    Mesh(TriangleMesh),
+}
+
+impl Shape {
+    /// The kind's name in lower case, as messages, hovers and the IR's JSON
+    /// form (`"kind"`) write it.
+    pub fn kind_name(&self) -> &'static str {
+        match self {
+            Shape::Sphere(_) => "sphere",
+            Shape::Polygon(_) => "polygon",
+            Shape::Polyhedron(_) => "polyhedron",
+            Shape::Plane(_) => "plane",
+            Shape::Rod(_) => "rod",
+            Shape::Cylinder(_) => "cylinder",
+            Shape::Horosphere(_) => "horosphere",
+            Shape::Wireframe(_) => "wireframe",
+            Shape::Mesh(_) => "mesh",
+        }
+    }
+
+    /// The h-sphere, if the shape is one.
+    pub fn sphere(&self) -> Option<&HSphere> {
+        match self {
+            Shape::Sphere(s) => Some(s),
+            _ => None,
+        }
+    }
+
+    /// The image of the shape under an isometry (unchecked: ask
+    /// [`Shape::is_representable`] of the result).
+    pub fn transformed(&self, iso: &Isometry) -> Shape {
+        match self {
+            Shape::Sphere(s) => Shape::Sphere(s.transformed(iso)),
+            Shape::Polygon(p) => Shape::Polygon(p.transformed(iso)),
+            Shape::Polyhedron(p) => Shape::Polyhedron(p.transformed(iso)),
+            Shape::Plane(p) => Shape::Plane(p.transformed(iso)),
+            Shape::Rod(r) => Shape::Rod(r.transformed(iso)),
+            Shape::Cylinder(c) => Shape::Cylinder(c.transformed(iso)),
+            Shape::Horosphere(h) => Shape::Horosphere(h.transformed(iso)),
+            Shape::Mesh(m) => Shape::Mesh(m.transformed(iso)),
+            Shape::Wireframe(rods) => {
+                Shape::Wireframe(rods.iter().map(|r| r.transformed(iso)).collect())
+            }
+        }
+    }
+
+    /// True if every surface of the shape is representable in f64
+    /// (`hgeom::Shape::is_representable`).
+    pub fn is_representable(&self) -> bool {
+        self.all(&|s| s.is_representable())
+    }
+
+    /// True if every surface of the shape can be traced exactly in this
+    /// frame (`hgeom::Shape::is_traceable`).
+    pub fn is_traceable(&self) -> bool {
+        self.all(&|s| s.is_traceable())
+    }
+
+    /// True if `test` holds for every surface of the shape.
+    fn all(&self, test: &dyn Fn(&dyn Surface) -> bool) -> bool {
+        match self {
+            Shape::Sphere(s) => test(s),
+            Shape::Polygon(p) => test(p),
+            Shape::Polyhedron(p) => test(p),
+            Shape::Plane(p) => test(p),
+            Shape::Rod(r) => test(r),
+            Shape::Cylinder(c) => test(c),
+            Shape::Horosphere(h) => test(h),
+            Shape::Wireframe(rods) => rods.iter().all(|r| test(r)),
+            Shape::Mesh(m) => test(m),
+        }
+    }
+
+    /// The number of primitives the renderer traces for it: faces, rods or
+    /// triangles of a composite, 1 otherwise (the scene-wide budget counts
+    /// these).
+    pub fn primitive_count(&self) -> u64 {
+        let n = match self {
+            Shape::Polyhedron(p) => p.faces().len(),
+            Shape::Wireframe(rods) => rods.len(),
+            Shape::Mesh(m) => m.triangle_count(),
+            Shape::Sphere(_)
+            | Shape::Polygon(_)
+            | Shape::Plane(_)
+            | Shape::Rod(_)
+            | Shape::Cylinder(_)
+            | Shape::Horosphere(_) => 1,
+        };
+        n as u64
+    }
+
+    /// The surfaces to trace: composites give their parts.
+    pub fn into_surfaces(self) -> Surfaces {
+        fn boxed<S: Surface + Send + Sync + 'static>(s: S) -> BoxedSurface {
+            Box::new(s)
+        }
+        match self {
+            Shape::Sphere(s) => Surfaces::Single(boxed(s)),
+            Shape::Polygon(p) => Surfaces::Single(boxed(p)),
+            Shape::Polyhedron(p) => Surfaces::Parts(p.faces().iter().cloned().map(boxed).collect()),
+            Shape::Plane(p) => Surfaces::Single(boxed(p)),
+            Shape::Rod(r) => Surfaces::Single(boxed(r)),
+            Shape::Cylinder(c) => Surfaces::Single(boxed(c)),
+            Shape::Horosphere(h) => Surfaces::Single(boxed(h)),
+            Shape::Wireframe(rods) => Surfaces::Parts(rods.into_iter().map(boxed).collect()),
+            Shape::Mesh(m) => Surfaces::Single(boxed(m)),
+        }
+    }
+
+    /// True if the point is strictly inside the shape, decided in the
+    /// point's own frame: `to_origin` takes the point to the origin (where
+    /// every product is small, so far scenes get exact answers; the sphere
+    /// needs no move, its ball distance being good anywhere). Only closed
+    /// shapes have an inside: polygons, planes and meshes (whose closedness
+    /// is not checked) never contain a point.
+    pub(crate) fn encloses(&self, point: &Point, to_origin: &Isometry) -> bool {
+        let here = DVec4::W;
+        match self {
+            Shape::Sphere(s) => point.distance(s.center()) < s.radius(),
+            Shape::Polygon(_) | Shape::Plane(_) | Shape::Mesh(_) => false,
+            Shape::Polyhedron(p) => {
+                // Behind every face plane means inside only for a closed
+                // surface (the golden rectangles are not one): there every
+                // edge belongs to exactly two faces. For star polyhedra this
+                // finds the core.
+                let sides: usize = p.faces().iter().map(|f| f.vertices().len()).sum();
+                let closed = !p.faces().is_empty() && sides == 2 * p.edges().len();
+                closed
+                    && p.faces().iter().all(|f| {
+                        lorentz::dot(here, f.plane().transformed(to_origin).normal()) < 0.0
+                    })
+            }
+            Shape::Rod(r) => r.transformed(to_origin).contains_hyperboloid(here),
+            Shape::Cylinder(c) => c.transformed(to_origin).contains_hyperboloid(here),
+            Shape::Horosphere(h) => h.transformed(to_origin).contains_hyperboloid(here),
+            Shape::Wireframe(rods) => rods
+                .iter()
+                .any(|r| r.transformed(to_origin).contains_hyperboloid(here)),
+        }
+    }
+
+    /// True if the shape lies entirely on the far side of the plane through
+    /// a point orthogonal to `view` (a unit ball direction there), decided
+    /// in that point's frame (`to_origin` takes it to the origin): there the
+    /// plane is the flat one `x . view = 0`, and a point's side is the sign
+    /// of `x . view`, its signed distance `asinh(2 x.view / g)`.
+    pub(crate) fn lies_behind(&self, to_origin: &Isometry, view: DVec3) -> bool {
+        let sinh_ahead = |p: &Point| {
+            let q = to_origin.apply(p);
+            2.0 * q.coords().dot(view) / q.gap()
+        };
+        let vertex_behind = |v: &Vertex| to_origin.apply_vertex(v).coords().dot(view) < 0.0;
+        // A rod is behind the plane when both ends are, by more than its
+        // radius (the rod lies within its radius of the segment, which is
+        // behind if its ends are: half-spaces are convex). An ideal end: the
+        // rod's tube reaches the absolute there.
+        let rod_behind = |rod: &Rod| {
+            let end_behind = |v: Vertex| match v {
+                Vertex::Interior(p) => sinh_ahead(&p) < -rod.radius().sinh(),
+                Vertex::Ideal(_) => false,
+            };
+            end_behind(rod.start()) && end_behind(rod.end())
+        };
+        match self {
+            Shape::Sphere(s) => sinh_ahead(&s.center()) < -s.radius().sinh(),
+            Shape::Polygon(p) => p.vertices().iter().all(vertex_behind),
+            Shape::Polyhedron(p) => p
+                .faces()
+                .iter()
+                .all(|f| f.vertices().iter().all(vertex_behind)),
+            // Unbounded surfaces always reach in front of the plane.
+            Shape::Plane(_) | Shape::Cylinder(_) | Shape::Horosphere(_) => false,
+            Shape::Rod(r) => rod_behind(r),
+            Shape::Wireframe(rods) => rods.iter().all(rod_behind),
+            Shape::Mesh(m) => m.vertices().iter().all(|p| sinh_ahead(p) < 0.0),
+        }
+    }
+}
