@@ -330,7 +330,7 @@ impl Isometry {
     /// holds to about `eps (2/gap_a)^2` and the matrix is only useful while
     /// the translation part is within ~18 of the origin
     /// (`lorentz_matrix_agrees_with_apply` in `tests/derivations.rs`;
-    /// `frame_is_lorentz_orthonormal` in `line.rs`). Composed Lorentz matrices
+    /// `lorentz_basis_is_orthonormal` in `line.rs`). Composed Lorentz matrices
     /// drift 100 to 10^6 times faster than the gyrovector form
     /// (docs/geometry.md, section 16.2), which is why they are derived, never stored.
     pub fn to_lorentz(&self) -> DMat4 {

@@ -328,7 +328,7 @@ impl Primitive {
             Vertex::Ideal(i) => i.coords().is_finite(),
         };
         let rod_ok = |r: &Rod| {
-            vertex_ok(&r.start()) && vertex_ok(&r.end()) && r.tube().line().frame().is_finite()
+            vertex_ok(&r.start()) && vertex_ok(&r.end()) && r.tube().line().lorentz_basis().is_finite()
         };
         // A plane whose normal is no longer unit in this frame (it came from
         // a bare normal far out, carried by a Lorentz matrix that lost
@@ -344,7 +344,7 @@ impl Primitive {
             Primitive::Plane(p) => plane_ok(p.normal()),
             Primitive::Rod(r) => rod_ok(r),
             Primitive::Cylinder(c) => {
-                c.line().base().is_representable() && c.line().frame().is_finite()
+                c.line().base().is_representable() && c.line().lorentz_basis().is_finite()
             }
             Primitive::Horosphere(h) => {
                 let (c, r) = h.euclidean();
