@@ -328,7 +328,9 @@ impl Primitive {
             Vertex::Ideal(i) => i.coords().is_finite(),
         };
         let rod_ok = |r: &Rod| {
-            vertex_ok(&r.start()) && vertex_ok(&r.end()) && r.tube().line().lorentz_basis().is_finite()
+            vertex_ok(&r.start())
+                && vertex_ok(&r.end())
+                && r.tube().line().lorentz_basis().is_finite()
         };
         // A plane whose normal is no longer unit in this frame (it came from
         // a bare normal far out, carried by a Lorentz matrix that lost
