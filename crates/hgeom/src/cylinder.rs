@@ -14,7 +14,7 @@ use crate::roots::{exp_roots, hit_at_first_root};
 /// equidistant surface; in the ball, a "banana" through the line's two
 /// ideal ends).
 ///
-/// With the line's adapted frame (see [`HLine`]) the surface is the quadric
+/// With the line's adapted Lorentz basis (see [`HLine`]) the surface is the quadric
 /// `<X,N1>^2 + <X,N2>^2 = sinh^2 r` of `R^{3,1}`, so a ray meets it where a
 /// quadratic vanishes: a closed form, where the thesis bisected.
 ///
@@ -126,9 +126,9 @@ impl HCylinder {
     /// # Accuracy
     ///
     /// Decides `<X,N1>^2 + <X,N2>^2 < sinh^2 r` with the products rounded at
-    /// about `eps |X| |M|` (`M` the frame): exact away from the surface.
+    /// about `eps |X| |M|` (`M` the line's Lorentz basis): exact away from the surface.
     pub fn contains_hyperboloid(&self, x: DVec4) -> bool {
-        let m = self.line.frame();
+        let m = self.line.lorentz_basis();
         let (c1, c2) = (lorentz::dot(x, m.x_axis), lorentz::dot(x, m.y_axis));
         c1 * c1 + c2 * c2 < self.sinh2_r
     }
@@ -183,7 +183,7 @@ impl HCylinder {
     }
 
     pub(crate) fn axis_coords(&self, ray: &Ray) -> AxisCoords {
-        let m = self.line.frame();
+        let m = self.line.lorentz_basis();
         AxisCoords {
             o: [
                 lorentz::dot(ray.origin, m.x_axis),
@@ -210,7 +210,7 @@ impl HCylinder {
     /// `|<N,X>| < 1e-12 |X| |N|` in `tests/surfaces.rs`); stepping `1e-4`
     /// along it increases the distance to the axis by `1e-4` to 1e-8.
     pub fn normal_at(&self, x: DVec4) -> DVec4 {
-        let m = self.line.frame();
+        let m = self.line.lorentz_basis();
         let (c1, c2) = (lorentz::dot(x, m.x_axis), lorentz::dot(x, m.y_axis));
         let c2sum = c1 * c1 + c2 * c2;
         let g = c1 * m.x_axis + c2 * m.y_axis;

@@ -116,15 +116,3 @@ pub(crate) fn positive_length(x: f64) -> Result<(), GeomError> {
         Err(GeomError::BadRadius(x))
     }
 }
-
-/// A point that f64 can hold with usable ball coordinates, or the reason it
-/// cannot (a figure so large that a vertex lies beyond distance ~37).
-pub(crate) fn representable(p: crate::point::Point) -> Result<crate::point::Point, GeomError> {
-    if p.is_representable() {
-        Ok(p)
-    } else {
-        Err(GeomError::NotInBall {
-            norm: p.coords().length(),
-        })
-    }
-}

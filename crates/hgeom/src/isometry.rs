@@ -13,7 +13,6 @@ use glam::{DMat3, DMat4, DVec3};
 use crate::accurate::one_minus_norm_sq;
 use crate::error::GeomError;
 use crate::mobius::{self, add_raw, add_raw_consistent};
-use crate::plane::HPlane;
 use crate::point::{IdealPoint, Point, Vertex};
 use crate::segment::Segment;
 
@@ -21,7 +20,7 @@ use crate::segment::Segment;
 ///
 /// Invariants: `a` is an h-point (with its accurate gap), `Q` is orthogonal
 /// to rounding (`|Q Q^T - I|` a few ulps; [`Isometry::orthogonal_unchecked`] is the
-/// one constructor that trusts its caller for this). Application,
+/// one public constructor that trusts its caller for this). Application,
 /// composition and inversion are exact formulas.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Isometry {
@@ -98,32 +97,6 @@ impl Isometry {
         Ok(Isometry::orthogonal_unchecked(q))
     }
 
-    /// The reflection in an h-plane: inversion in its sphere, or the Euclidean
-    /// mirror in a plane through the origin.
-    ///
-    /// With `N = (n, n_t)`: the image of the origin is `n_t n / |n|^2` (gap
-    /// `1/|n|^2`) and the linear part is the mirror `I - 2 n n^T / |n|^2`.
-    ///
-    /// # Accuracy
-    ///
-    /// `a` and `Q` are within a few ulps of the formula for the stored
-    /// normal, and the gap `1/|n|^2` is exact for `<N,N> = 1`. Applied twice
-    /// it returns points to within 2e-12 (measured 4e-13; the `reflection`
-    /// family of `tests/reference.rs`, points up to 6 away and planes through
-    /// points up to 4 away), and it fixes its plane to 1e-11
-    /// (`reflections_are_involutions_fixing_their_plane` in
-    /// `tests/properties.rs`; `reflection_is_the_hyperboloid_mirror` in
-    /// `tests/derivations.rs`).
-    pub fn reflection(plane: &HPlane) -> Isometry {
-        let nv = plane.normal();
-        let n = nv.truncate();
-        let n2 = n.length_squared();
-        let a = Point::new_unchecked(n * (nv.w / n2), 1.0 / n2);
-        let u = n / n2.sqrt();
-        let q = DMat3::IDENTITY - 2.0 * DMat3::from_cols(u * u.x, u * u.y, u * u.z);
-        Isometry { a, q }
-    }
-
     /// The translation along the segment's h-line that maps its start to its
     /// end.
     ///
@@ -161,25 +134,6 @@ impl Isometry {
             .inverse()
             .compose(&Isometry::transvection_from_origin(w))
             .compose(&to_origin))
-    }
-
-    /// The translation built literally as the thesis defines it, from two
-    /// reflections. Equal to [`Isometry::translation`]; kept as its reference.
-    ///
-    /// Errors: [`GeomError::Coincident`] from either plane constructor.
-    ///
-    /// # Accuracy
-    ///
-    /// Good for segments near the origin of length well above `eps |X|^2`
-    /// (agrees with [`Isometry::translation`] to 1e-12 for ends within 1.5
-    /// and lengths 0.05..3, `tests/derivations.rs`); the bisector's normal
-    /// `X_b - X_a` cancels for short or far segments (a segment of length
-    /// 1e-12 can come out as the identity), which is why
-    /// [`Isometry::translation`] does not use it.
-    pub fn translation_by_reflections(segment: &Segment) -> Result<Isometry, GeomError> {
-        let first = HPlane::orthogonal_at(&segment.start(), &segment.end())?;
-        let second = HPlane::bisector(&segment.start(), &segment.end())?;
-        Ok(Isometry::reflection(&second).compose(&Isometry::reflection(&first)))
     }
 
     /// The rotation by `angle` radians about the h-line through the segment,
@@ -237,6 +191,16 @@ impl Isometry {
     pub fn from_parts(translation: Point, linear: DMat3) -> Result<Isometry, GeomError> {
         let q = Isometry::orthogonal(linear)?.q;
         Ok(Isometry { a: translation, q })
+    }
+
+    /// [`Isometry::from_parts`] unchecked, for the constructors elsewhere in
+    /// the crate that compute an orthogonal `linear` themselves (the
+    /// reflection in a plane).
+    pub(crate) fn from_parts_unchecked(translation: Point, linear: DMat3) -> Isometry {
+        Isometry {
+            a: translation,
+            q: linear,
+        }
     }
 
     /// The image of the origin, `f(0) = a`.
@@ -366,7 +330,7 @@ impl Isometry {
     /// holds to about `eps (2/gap_a)^2` and the matrix is only useful while
     /// the translation part is within ~18 of the origin
     /// (`lorentz_matrix_agrees_with_apply` in `tests/derivations.rs`;
-    /// `frame_is_lorentz_orthonormal` in `line.rs`). Composed Lorentz matrices
+    /// `lorentz_basis_is_orthonormal` in `line.rs`). Composed Lorentz matrices
     /// drift 100 to 10^6 times faster than the gyrovector form
     /// (docs/geometry.md, section 16.2), which is why they are derived, never stored.
     pub fn to_lorentz(&self) -> DMat4 {
@@ -479,22 +443,6 @@ mod tests {
             .compose(&ta.inverse());
         let probe = p(0.3, -0.3, 0.2);
         assert!((t.apply(&probe).coords() - alt.apply(&probe).coords()).length() < 1e-14);
-    }
-
-    #[test]
-    fn reflection_is_an_involution_and_fixes_its_plane() {
-        let (a, b, c) = (p(0.1, 0.2, 0.3), p(-0.4, 0.1, 0.0), p(0.3, -0.5, 0.5));
-        let plane = HPlane::through(&a.into(), &b.into(), &c.into()).unwrap();
-        let r = Isometry::reflection(&plane);
-        assert!(!r.preserves_orientation());
-        for q in [a, b, c] {
-            assert!((r.apply(&q).coords() - q.coords()).length() < 1e-14);
-        }
-        let x = p(0.5, 0.5, -0.1);
-        let back = r.apply(&r.apply(&x));
-        assert!((back.coords() - x.coords()).length() < 1e-14);
-        let rr = r.compose(&r);
-        assert!(rr.translation_part().coords().length() < 1e-14);
     }
 
     #[test]

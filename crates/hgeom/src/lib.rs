@@ -8,12 +8,12 @@
 //! | `point` | [`Point`] (with its accurate gap), [`IdealPoint`], [`Vertex`] |
 //! | `distance` | [`Point::distance`] in the `2 asinh` form |
 //! | [`mobius`] | Möbius addition and the gyration: the algebra of isometries |
-//! | `isometry` | [`Isometry`] `x -> a (+) Qx`: reflections, translations, rotations, composition, inverse, Lorentz matrix |
+//! | `isometry` | [`Isometry`] `x -> a (+) Qx`: translations, rotations about segments, composition, inverse, Lorentz matrix |
 //! | [`lorentz`] | the hyperboloid model: Lorentz form, orthogonal complement, geodesics |
 //! | [`ray`] | [`Ray`], [`Hit`], reflection and refraction in the tangent space, ball/hyperboloid tangents |
 //! | `segment` | [`Segment`] |
-//! | `line` | [`HLine`] with its adapted Lorentz frame |
-//! | `plane` | [`HPlane`] (unit spacelike normal), [`BallShape`] |
+//! | `line` | [`HLine`] with its adapted Lorentz basis; [`Isometry::rotation`] about it |
+//! | `plane` | [`HPlane`] (unit spacelike normal), [`BallShape`]; [`Isometry::reflection`] in it |
 //! | `sphere` | [`HSphere`]: Euclidean form, closed-form ray intersection |
 //! | `cylinder` | [`HCylinder`]: the equidistant surface of an h-line, closed form |
 //! | `rod` | [`Rod`]: tube plus two caps, for wireframes |
@@ -29,6 +29,21 @@
 //! | `ops` | `Isometry * Point`, `Isometry * Isometry` |
 //! | `serde_impls` | the `serde` feature's exact, validating forms |
 //! | `fermi` | [`fermi_coordinates`] about the origin and their inverse (solid textures) |
+//!
+//! ## Module layering
+//!
+//! The modules import one another in one direction only, never in a cycle.
+//! The leaves import nothing of the crate: `accurate`, `compact` and
+//! `lorentz`; `error` imports only `compact` (to print numbers in its
+//! messages). Above them come `point`; then `distance`, `mobius` and `ray`;
+//! `roots` and `segment`; `isometry`; and on top the surfaces and figures
+//! (`plane`, `line`, `sphere`, `horosphere`, `cylinder`, `polygon`, `rod`,
+//! `mesh`, `polygons`, `polyhedron`, `honeycomb`), with `fermi`, `ops` and
+//! `serde_impls`. An isometry built from a surface is defined with that
+//! surface (the reflection in `plane`, the rotation about a line in `line`),
+//! since the surface already depends on `isometry`. `shape` only imports:
+//! it implements the shared traits for every surface, so nothing but the
+//! crate root refers to it.
 
 // `!(x > 0.0)` is deliberate throughout: it sends NaN down the failure path,
 // which `x <= 0.0` would not.

@@ -1,4 +1,4 @@
-//! h-lines (complete geodesics), with an orthonormal Lorentz frame that makes
+//! h-lines (complete geodesics), with an orthonormal Lorentz basis that makes
 //! distances to the line and the equidistant surfaces around it cheap.
 
 use glam::{DMat3, DMat4, DVec3, DVec4};
@@ -15,19 +15,19 @@ use crate::point::{IdealPoint, Point, Vertex};
 /// It is stored as the isometry that carries the *canonical line* (the
 /// diameter along the ball's z axis, oriented towards `+z`) onto it, with the
 /// isometry's Lorentz matrix `M` cached. The columns of `M` are an orthonormal
-/// frame of `R^{3,1}` adapted to the line:
+/// basis of `R^{3,1}` adapted to the line:
 /// `P = M e_w` is the line's base point, `U = M e_z` its unit tangent there,
 /// and `N1 = M e_x`, `N2 = M e_y` span the Lorentz-orthogonal complement of
 /// the line's plane, so for any point `X`
 /// `sinh^2 d(X, line) = <X,N1>^2 + <X,N2>^2`.
 ///
-/// Invariants: the frame is the Lorentz matrix of `to_line` (orthonormal to
+/// Invariants: the Lorentz basis is the Lorentz matrix of `to_line` (orthonormal to
 /// about `eps |M|^2`, `M`'s entries growing like `2/gap` of the base
 /// point); the line passes through the base point in direction `U`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HLine {
     to_line: Isometry,
-    frame: DMat4,
+    lorentz_basis: DMat4,
 }
 
 impl HLine {
@@ -90,9 +90,9 @@ impl HLine {
     /// # Accuracy
     ///
     /// The stored isometry is exact up to the rounding of `dir/|dir|` and of
-    /// the orthonormal pair completing it (a few ulps); the frame is as
-    /// accurate as [`Isometry::to_lorentz`] (Lorentz-orthonormal to 1e-13
-    /// for base points within ~1 of the origin, `frame_is_lorentz_orthonormal`).
+    /// the orthonormal pair completing it (a few ulps); the Lorentz basis is
+    /// as accurate as [`Isometry::to_lorentz`] (Lorentz-orthonormal to 1e-13
+    /// for base points within ~1 of the origin, `lorentz_basis_is_orthonormal`).
     pub fn from_point_direction(p: &Point, dir: DVec3) -> Result<HLine, GeomError> {
         let len = dir.length();
         if !(len > 0.0 && len.is_finite()) {
@@ -117,7 +117,7 @@ impl HLine {
     fn from_isometry(to_line: Isometry) -> HLine {
         HLine {
             to_line,
-            frame: to_line.to_lorentz(),
+            lorentz_basis: to_line.to_lorentz(),
         }
     }
 
@@ -131,15 +131,16 @@ impl HLine {
         self.to_line
     }
 
-    /// The adapted Lorentz frame `[N1 | N2 | U | P]` (see the type docs).
+    /// The adapted Lorentz basis as the columns `[N1 | N2 | U | P]` of a
+    /// matrix (see the type docs).
     ///
     /// # Accuracy
     ///
     /// Exact: the stored matrix (see the type's invariants for how
     /// orthonormal it is).
     #[inline]
-    pub fn frame(&self) -> DMat4 {
-        self.frame
+    pub fn lorentz_basis(&self) -> DMat4 {
+        self.lorentz_basis
     }
 
     /// The base point `P` (an h-point on the line).
@@ -190,12 +191,12 @@ impl HLine {
     ///
     /// As stated: absolute error about `4 eps |X| |M|`; it agrees with
     /// `sinh` of [`HLine::distance_to`] to 1e-13 relative near the origin
-    /// (`sinh_distance_to_a_line_is_the_frame_formula` in
+    /// (`sinh_distance_to_a_line_is_the_lorentz_basis_formula` in
     /// `tests/derivations.rs`).
     #[inline]
     pub fn sinh_distance_h(&self, x: DVec4) -> f64 {
-        let c1 = lorentz::dot(x, self.frame.x_axis);
-        let c2 = lorentz::dot(x, self.frame.y_axis);
+        let c1 = lorentz::dot(x, self.lorentz_basis.x_axis);
+        let c2 = lorentz::dot(x, self.lorentz_basis.y_axis);
         c1.hypot(c2)
     }
 
@@ -232,8 +233,8 @@ impl HLine {
     pub fn foot_parameter(&self, p: &Point) -> f64 {
         let x = p.to_hyperboloid();
         // X = cosh(d) (cosh s P + sinh s U) + normal part: tanh s = <X,U> / -<X,P>.
-        let u = lorentz::dot(x, self.frame.z_axis);
-        let t = -lorentz::dot(x, self.frame.w_axis);
+        let u = lorentz::dot(x, self.lorentz_basis.z_axis);
+        let t = -lorentz::dot(x, self.lorentz_basis.w_axis);
         (u / t).atanh()
     }
 
@@ -242,7 +243,7 @@ impl HLine {
     /// # Accuracy
     ///
     /// As [`Isometry::compose`] for the stored isometry, then a fresh
-    /// [`Isometry::to_lorentz`] for the frame.
+    /// [`Isometry::to_lorentz`] for the Lorentz basis.
     pub fn transformed(&self, iso: &Isometry) -> HLine {
         HLine::from_isometry(iso.compose(&self.to_line))
     }
@@ -343,9 +344,9 @@ mod tests {
     }
 
     #[test]
-    fn frame_is_lorentz_orthonormal() {
+    fn lorentz_basis_is_orthonormal() {
         let line = HLine::through(&p(0.7, 0.1, 0.0).into(), &p(0.2, -0.6, 0.3).into()).unwrap();
-        let m = line.frame();
+        let m = line.lorentz_basis();
         let cols = [m.x_axis, m.y_axis, m.z_axis, m.w_axis];
         let eta = [1.0, 1.0, 1.0, -1.0];
         for i in 0..4 {

@@ -80,7 +80,7 @@ pub fn orthogonal_complement(a: DVec4, b: DVec4, c: DVec4) -> DVec4 {
 /// its Lorentz square has absolute error about `4 eps |X - Y| (|X| + |Y|)`:
 /// relative error about `eps (|X| + |Y|)^2` for the distance, a few ulps
 /// near the origin and useless beyond distance ~18. For ball points use
-/// [`crate::distance`], which is accurate everywhere.
+/// [`Point::distance`](crate::Point::distance), which is accurate everywhere.
 #[inline]
 pub fn distance(x: DVec4, y: DVec4) -> f64 {
     let d = x - y;

@@ -292,6 +292,18 @@ impl Point {
     }
 }
 
+/// A point that f64 can hold with usable ball coordinates, or the reason it
+/// cannot (a figure so large that a vertex lies beyond distance ~37).
+pub(crate) fn representable(p: Point) -> Result<Point, GeomError> {
+    if p.is_representable() {
+        Ok(p)
+    } else {
+        Err(GeomError::NotInBall {
+            norm: p.coords().length(),
+        })
+    }
+}
+
 /// A point on the absolute (the unit sphere): an ideal point.
 ///
 /// Invariant: `dir` is a unit vector (to a few ulps: `||dir| - 1| <= 4 eps`

@@ -18,8 +18,8 @@ use std::ops::RangeInclusive;
 
 use glam::{DVec3, DVec4};
 
-use crate::error::{GeomError, positive_length, representable};
-use crate::point::{IdealPoint, Point, Vertex};
+use crate::error::{GeomError, positive_length};
+use crate::point::{IdealPoint, Point, Vertex, representable};
 use crate::polygon::ConvexPolygon;
 
 /// The vertex counts the predefined regular polygons support (the thesis's

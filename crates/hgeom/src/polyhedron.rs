@@ -4,10 +4,10 @@ use std::collections::{HashMap, HashSet};
 
 use glam::{DVec3, DVec4};
 
-use crate::error::{GeomError, positive_length, representable};
+use crate::error::{GeomError, positive_length};
 use crate::isometry::Isometry;
 use crate::lorentz;
-use crate::point::{IdealPoint, Point, Vertex};
+use crate::point::{IdealPoint, Point, Vertex, representable};
 use crate::polygon::ConvexPolygon;
 use crate::polygons::from_hyperboloid_checked;
 use crate::ray::{Hit, Ray};

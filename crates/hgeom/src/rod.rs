@@ -28,9 +28,9 @@ use crate::sphere::HSphere;
 /// are the unit tangents of the line at those points, pointing from `start`
 /// towards `end`.
 ///
-/// There is no `_unchecked` constructor: building a rod (a line frame, two
-/// spheres) costs far more than its checks, so skipping them would gain
-/// nothing on any hot path.
+/// There is no `_unchecked` constructor: building a rod (a line's Lorentz
+/// basis, two spheres) costs far more than its checks, so skipping them
+/// would gain nothing on any hot path.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Rod {
     start: Vertex,
@@ -64,8 +64,8 @@ impl Rod {
     pub fn new(start: Vertex, end: Vertex, radius: f64) -> Result<Rod, GeomError> {
         let line = HLine::through(&start, &end)?;
         let tube = HCylinder::new(line, radius)?;
-        let frame = line.frame();
-        let (p, u) = (frame.w_axis, frame.z_axis);
+        let basis = line.lorentz_basis();
+        let (p, u) = (basis.w_axis, basis.z_axis);
         // HLine::through puts the base point at `start` when it is an h-point,
         // else at `end` when that one is: the tangent there is U itself.
         let (start_cap, end_cap) = match (start, end) {
@@ -146,25 +146,25 @@ impl Rod {
 
     /// The image under an isometry. Exact and infallible: the tube and the
     /// caps are carried over, and the end-plane normals are derived afresh
-    /// from the moved tube's frame, as [`Rod::new`] derives them.
+    /// from the moved tube's Lorentz basis, as [`Rod::new`] derives them.
     ///
     /// Multiplying the old end-plane normals by the isometry's Lorentz
     /// matrix, both of size `e^d` far out, lost `eps e^{2d}`: a cap axis
-    /// 0.12 off at distance 17.6 and 12 off at 19.9. The tube's frame is the
+    /// 0.12 off at distance 17.6 and 12 off at 19.9. The tube's Lorentz basis is the
     /// Lorentz matrix of a composed isometry, whose entries are of the size
     /// of the rod's own distance from the origin.
     ///
     /// # Accuracy
     ///
     /// As [`HCylinder::transformed`] and [`HSphere::transformed`]; the
-    /// end-plane normals are within a few ulps of the frame's columns.
+    /// end-plane normals are within a few ulps of the basis vectors.
     /// Hits on the moved rod agree with the original's to 1e-8 relative
     /// (`isometries_preserve_hits` in `tests/surfaces.rs`), also after a
     /// move 25 away and back (`rod_moved_far_and_back` in `tests/far.rs`).
     pub fn transformed(&self, iso: &Isometry) -> Rod {
         let tube = self.tube.transformed(iso);
-        let frame = tube.line().frame();
-        let (p, u) = (frame.w_axis, frame.z_axis);
+        let basis = tube.line().lorentz_basis();
+        let (p, u) = (basis.w_axis, basis.z_axis);
         // The line's base point is the start when it is an h-point, else the
         // end (see `try_new`); isometries keep it so.
         let end_axis = match (self.start, self.end) {

@@ -56,7 +56,7 @@ impl Segment {
     ///
     /// # Accuracy
     ///
-    /// As [`distance`]: relative error below 1e-13.
+    /// As [`Point::distance`]: relative error below 1e-13.
     pub fn length(&self) -> f64 {
         distance(&self.start, &self.end)
     }

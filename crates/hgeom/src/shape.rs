@@ -155,7 +155,7 @@ impl Shape for HCylinder {
         None
     }
     fn is_representable(&self) -> bool {
-        self.line().base().is_representable() && self.line().frame().is_finite()
+        self.line().base().is_representable() && self.line().lorentz_basis().is_finite()
     }
 }
 
@@ -179,7 +179,9 @@ impl Shape for Rod {
         bound::rod_pieces(self)
     }
     fn is_representable(&self) -> bool {
-        vertex_ok(&self.start()) && vertex_ok(&self.end()) && self.tube().line().frame().is_finite()
+        vertex_ok(&self.start())
+            && vertex_ok(&self.end())
+            && self.tube().line().lorentz_basis().is_finite()
     }
 }
 

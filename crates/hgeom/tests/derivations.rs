@@ -660,10 +660,10 @@ fn sphere_roots_solve_the_level_equation() {
 // 7. h-lines and h-cylinders
 // ---------------------------------------------------------------------------
 
-/// `sinh^2 d(X, line) = <X,N1>^2 + <X,N2>^2` in the adapted frame, against
+/// `sinh^2 d(X, line) = <X,N1>^2 + <X,N2>^2` in the adapted Lorentz basis, against
 /// the canonical-frame distance.
 #[test]
-fn sinh_distance_to_a_line_is_the_frame_formula() {
+fn sinh_distance_to_a_line_is_the_lorentz_basis_formula() {
     let mut rng = Rng(19);
     for _ in 0..200 {
         let (a, b) = (rng.point(0.0, 2.0), rng.point(0.0, 2.0));

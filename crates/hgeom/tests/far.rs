@@ -130,7 +130,8 @@ fn plane_through_far_points() {
 }
 
 /// Cause 3. A rod moved 19.9 away and back meets rays where the original
-/// does: its end-plane normals are derived from the moved tube's frame.
+/// does: its end-plane normals are derived from the moved tube's Lorentz
+/// basis.
 /// Carried by the far Lorentz matrix they came back 12 off.
 #[test]
 fn rod_moved_far_and_back() {
