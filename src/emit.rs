@@ -7,7 +7,7 @@
 use std::path::Path;
 
 use hgeom::{BallShape, ConvexPolygon, Point, Rod, Vertex};
-use hscene_lang::ir::{Camera, Light, Material, Object, PointPosition, Rgb, Scene, Shape};
+use hscene_lang::ir::{Camera, Light, Material, Object, Rgb, Scene, Shape};
 use serde_json::{Value, json};
 
 /// The version of the IR schema.
@@ -106,8 +106,8 @@ fn header(path: &Path, scene: &Scene) -> Value {
 
 fn point_entry(p: &hscene_lang::ir::PointRecord) -> Value {
     let (position, ideal) = match p.position {
-        PointPosition::Interior(q) => (q.coords(), false),
-        PointPosition::Ideal(q) => (q.coords(), true),
+        Vertex::Interior(q) => (q.coords(), false),
+        Vertex::Ideal(q) => (q.coords(), true),
     };
     json!({
         "number": p.number,

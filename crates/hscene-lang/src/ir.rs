@@ -5,8 +5,8 @@
 //! carries no source text and no spans; the renderer needs nothing else.
 
 use hgeom::{
-    ConvexPolygon, HCylinder, HPlane, HSphere, Horosphere, IdealPoint, Isometry, Point, Polyhedron,
-    Rod, TriangleMesh,
+    ConvexPolygon, HCylinder, HPlane, HSphere, Horosphere, Isometry, Point, Polyhedron, Rod,
+    TriangleMesh, Vertex,
 };
 
 /// A linear RGB triple.
@@ -277,17 +277,9 @@ pub struct PointRecord {
     pub number: usize,
     /// Name, if declared with one.
     pub name: Option<String>,
-    /// Final position after all transformations.
-    pub position: PointPosition,
-}
-
-/// An h-point or an ideal point.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum PointPosition {
-    /// Inside the ball.
-    Interior(Point),
-    /// On the absolute.
-    Ideal(IdealPoint),
+    /// Final position after all transformations: an h-point, or an ideal
+    /// point on the absolute.
+    pub position: Vertex,
 }
 
 /// A fully resolved scene.

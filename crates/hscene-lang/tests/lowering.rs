@@ -9,8 +9,7 @@
 use hgeom::glam::DVec3;
 use hgeom::{Point, Vertex};
 use hscene_lang::ir::{
-    Camera, Material, MaterialId, Net, PointPosition, Resolution, Rgb, Scene, Settings, Shape,
-    Window,
+    Camera, Material, MaterialId, Net, Resolution, Rgb, Scene, Settings, Shape, Window,
 };
 use hscene_lang::{Compiled, Diagnostic, LineIndex, Severity, Span, compile};
 use proptest::prelude::*;
@@ -179,8 +178,8 @@ fn interior(scene: &Scene, number: usize) -> DVec3 {
     let rec = &scene.points[number - 1];
     assert_eq!(rec.number, number);
     match rec.position {
-        PointPosition::Interior(p) => p.coords(),
-        PointPosition::Ideal(p) => panic!("%{number} is ideal: {p:?}"),
+        Vertex::Interior(p) => p.coords(),
+        Vertex::Ideal(p) => panic!("%{number} is ideal: {p:?}"),
     }
 }
 
@@ -774,7 +773,7 @@ Objects { Polygon (%1, %2, %3, %4), #1; Polygon ((0,0,1), (0.3,0,0.3), (0,0.3,0.
     let scene = c.scene.unwrap();
     for rec in &scene.points {
         assert!(
-            matches!(rec.position, PointPosition::Ideal(_)),
+            matches!(rec.position, Vertex::Ideal(_)),
             "%{} should be ideal: {:?}",
             rec.number,
             rec.position
@@ -1141,7 +1140,7 @@ fn point_near_the_absolute_warning() {
     // Still an interior point.
     assert!(matches!(
         c.scene.unwrap().points[0].position,
-        PointPosition::Interior(_)
+        Vertex::Interior(_)
     ));
     // Moderately close points are not flagged.
     let ok = "Points { (0.999,0,0); } Lights { %1, (1,1,1), (1,1,1); }";
@@ -1427,7 +1426,7 @@ fn check_compile(src: &str) -> Result<(), TestCaseError> {
     prop_assert_eq!(c.scene.is_some(), !has_error, "{:#?}", c.diagnostics);
     if let Some(scene) = &c.scene {
         for rec in &scene.points {
-            if let PointPosition::Interior(p) = rec.position {
+            if let Vertex::Interior(p) = rec.position {
                 prop_assert!(p.coords().is_finite() && p.gap() > 0.0, "{:?}", rec);
             }
         }
