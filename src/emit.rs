@@ -86,7 +86,7 @@ fn header(path: &Path, scene: &Scene) -> Value {
         "file": path.display().to_string(),
         "settings": {
             "recursion_depth": s.recursion_depth,
-            "resolution": [s.resolution.width, s.resolution.height],
+            "resolution": [s.resolution.width(), s.resolution.height()],
             "window_size": [s.window.width, s.window.height],
             "net_type": s.net.index(),
             "background": rgb(s.background),
@@ -220,8 +220,8 @@ fn object(i: usize, o: &Object) -> Value {
     let mut v = json!({
         "number": i + 1,
         "name": o.name,
-        "material": o.material.0 + 1,
-        "frame": isometry(&o.frame),
+        "material": o.material.index() + 1,
+        "frame": isometry(&o.placement),
     });
     let (kind, params) = match &o.shape {
         Shape::Sphere(s) => {

@@ -149,7 +149,7 @@ fn object(scene: &Scene, name: &str, eye: Point) -> String {
         .iter()
         .filter(|o| o.name.as_deref() == Some(name))
     {
-        let material = o.material.0 + 1;
+        let material = o.material.index() + 1;
         match &o.shape {
             Shape::Sphere(s) => {
                 let _ = writeln!(

@@ -20,7 +20,7 @@ mod lints;
 mod materials;
 mod moves;
 mod names;
-pub(crate) mod objects;
+mod objects;
 mod points;
 mod ranges;
 mod resolve;
@@ -45,6 +45,8 @@ pub(crate) use globals::GLOBAL_KEYS;
 pub use globals::{MAX_FRAMES, MAX_PIXELS, MAX_SAMPLES};
 pub(crate) use lights::LIGHT_OPTIONS;
 pub(crate) use materials::MATERIAL_FIELDS;
+pub(crate) use objects::keywords::object_names;
+pub(crate) use objects::options::OPTION_NAMES;
 pub(crate) use transformations::TRANSFORMATIONS;
 
 /// Section names, in processing order.

@@ -6,7 +6,7 @@ pub fn sections() -> &'static [&'static str] {
     &crate::lower::SECTIONS
 }
 
-/// The keys of `Globals`.
+/// The keys of `Globals`, aliases (`eye` for `from`) included.
 pub fn global_keys() -> &'static [&'static str] {
     &crate::lower::GLOBAL_KEYS
 }
@@ -18,12 +18,12 @@ pub fn material_fields() -> &'static [&'static str] {
 
 /// Object keywords of `Objects` (solids, predefined figures, aliases).
 pub fn object_keywords() -> Vec<&'static str> {
-    crate::lower::objects::keywords::object_names()
+    crate::lower::object_names()
 }
 
 /// `key = value` options an object statement may end with.
 pub fn object_options() -> &'static [&'static str] {
-    &crate::lower::objects::options::OPTION_NAMES
+    &crate::lower::OPTION_NAMES
 }
 
 /// Keywords of `Transformations`.
@@ -43,6 +43,8 @@ mod tests {
     fn tables_are_filled() {
         assert!(super::sections().contains(&"Points"));
         assert!(super::global_keys().contains(&"resolution"));
+        assert!(super::global_keys().contains(&"eye"));
+        assert!(super::light_options().contains(&"irradiance_at"));
         assert!(super::material_fields().contains(&"shininess"));
         assert!(super::object_keywords().contains(&"Sphere"));
         assert!(super::object_options().contains(&"wireframe"));

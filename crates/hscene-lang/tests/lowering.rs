@@ -8,9 +8,7 @@
 
 use hgeom::glam::DVec3;
 use hgeom::{Point, Vertex};
-use hscene_lang::ir::{
-    Camera, Material, MaterialId, Net, Resolution, Rgb, Scene, Settings, Shape, Window,
-};
+use hscene_lang::ir::{Camera, Material, Net, Resolution, Rgb, Scene, Settings, Shape, Window};
 use hscene_lang::{Compiled, Diagnostic, LineIndex, Severity, Span, compile};
 use proptest::prelude::*;
 
@@ -276,10 +274,7 @@ fn appendix_a_compiles_with_one_warning() {
         scene.settings,
         Settings {
             recursion_depth: 1,
-            resolution: Resolution {
-                width: 1200,
-                height: 1200
-            },
+            resolution: Resolution::new(1200, 1200).unwrap(),
             window: Window {
                 width: 0.15,
                 height: 0.15
@@ -316,7 +311,7 @@ fn appendix_a_compiles_with_one_warning() {
     let expected = appendix_expected();
     for (k, (sphere, material)) in spheres.iter().enumerate() {
         assert_eq!(sphere.radius(), 0.05);
-        assert_eq!(*material, MaterialId(0));
+        assert_eq!(material.index(), 0);
         assert_close(
             sphere.center().coords(),
             expected[k + 2],
@@ -325,7 +320,7 @@ fn appendix_a_compiles_with_one_warning() {
         );
     }
     let (dodecahedron, material) = polyhedra[0];
-    assert_eq!(material, MaterialId(1));
+    assert_eq!(material.index(), 1);
     assert_eq!(dodecahedron.faces().len(), 12);
     assert!(dodecahedron.faces().iter().all(|f| f.vertices().len() == 5));
     assert_eq!(dodecahedron.center(), Point::ORIGIN);
@@ -550,10 +545,7 @@ fn empty_file_gets_the_documented_defaults() {
             scene.settings,
             Settings {
                 recursion_depth: 1,
-                resolution: Resolution {
-                    width: 512,
-                    height: 512
-                },
+                resolution: Resolution::new(512, 512).unwrap(),
                 window: Window {
                     width: 0.15,
                     height: 0.15
@@ -596,13 +588,7 @@ fn globals_override_each_default() {
     assert!(c.diagnostics.is_empty(), "{:#?}", c.diagnostics);
     let s = c.scene.unwrap().settings;
     assert_eq!(s.recursion_depth, 3);
-    assert_eq!(
-        s.resolution,
-        Resolution {
-            width: 640,
-            height: 480
-        }
-    );
+    assert_eq!(s.resolution, Resolution::new(640, 480).unwrap());
     assert_eq!(
         s.window,
         Window {
@@ -696,7 +682,7 @@ fn extension_syntax_named_points_and_materials() {
     assert_eq!(scene.objects.len(), 3);
     // `%target`/`%2` and `#glass`/`#2` name the same things.
     assert_eq!(scene.objects[0], scene.objects[1]);
-    assert_eq!(scene.objects[0].material, MaterialId(1));
+    assert_eq!(scene.objects[0].material.index(), 1);
     let Shape::Sphere(s) = &scene.objects[0].shape else {
         panic!("{:?}", scene.objects[0]);
     };
@@ -705,7 +691,7 @@ fn extension_syntax_named_points_and_materials() {
     let Shape::Polygon(poly) = &scene.objects[2].shape else {
         panic!("{:?}", scene.objects[2]);
     };
-    assert_eq!(scene.objects[2].material, MaterialId(0));
+    assert_eq!(scene.objects[2].material.index(), 0);
     let vs: Vec<DVec3> = poly.vertices().iter().map(Vertex::coords).collect();
     assert_eq!(
         vs,

@@ -95,14 +95,17 @@ fn keys_help() -> String {
     format!("globals are {}", names.join(", "))
 }
 
+/// The default image size.
+const DEFAULT_RESOLUTION: Resolution = match Resolution::new(512, 512) {
+    Some(r) => r,
+    None => panic!("the default resolution is not empty"),
+};
+
 /// Default settings: the thesis's Appendix A values, at a smaller resolution.
 pub(super) fn default_settings() -> Settings {
     Settings {
         recursion_depth: 1,
-        resolution: Resolution {
-            width: 512,
-            height: 512,
-        },
+        resolution: DEFAULT_RESOLUTION,
         window: Window {
             width: 0.15,
             height: 0.15,
@@ -235,10 +238,10 @@ impl Lowerer<'_> {
                 );
                 return;
             }
-            self.settings.resolution = Resolution {
-                width: w as u32,
-                height: h as u32,
-            };
+            // Both sides are from 1 to MAX_RESOLUTION, so this is `Some`.
+            if let Some(resolution) = Resolution::new(w as u32, h as u32) {
+                self.settings.resolution = resolution;
+            }
         }
     }
 }

@@ -53,7 +53,7 @@ impl Lowerer<'_> {
             for (object, _) in &self.objects {
                 let opaque = self
                     .materials
-                    .get(object.material.0)
+                    .get(object.material.index())
                     .is_some_and(|m| m.transmission == 0.0);
                 if opaque && from.is_inside(&object.shape) {
                     found.push(Diagnostic::new(

@@ -104,7 +104,7 @@ impl Lowerer<'_> {
                             Some(s) => {
                                 let object = &mut self.objects[i].0;
                                 object.shape = s;
-                                object.frame = iso.compose(&object.frame);
+                                object.placement = iso.compose(&object.placement);
                             }
                             None => {
                                 self.out_of_range(&target, "this object");

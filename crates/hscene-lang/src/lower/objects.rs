@@ -13,9 +13,9 @@
 mod args;
 mod build;
 pub(super) mod figures;
-pub(crate) mod keywords;
+pub(super) mod keywords;
 mod mesh;
-pub(crate) mod options;
+pub(super) mod options;
 
 use super::Lowerer;
 use super::budget::{figure_estimate, shape_cost};

@@ -97,7 +97,7 @@ impl Lowerer<'_> {
         match found {
             Some(i) => {
                 self.materials.mark_used(i);
-                Some(MaterialId(i))
+                Some(MaterialId::declared(i))
             }
             None if self.index_overflowed(r) => {
                 self.material_ref_failed = true;

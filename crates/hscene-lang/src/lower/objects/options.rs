@@ -202,10 +202,10 @@ impl Lowerer<'_> {
         st: &Statement,
     ) -> Vec<usize> {
         let name = st.label.as_ref().map(|l| l.text.clone());
-        let mut frame = Isometry::IDENTITY;
+        let mut placement = Isometry::IDENTITY;
         if let Some((centre, span)) = opts.at {
             let iso = Isometry::transvection_from_origin(centre);
-            frame = iso;
+            placement = iso;
             let mut moved = Vec::with_capacity(shapes.len());
             for s in &shapes {
                 match transform_shape(s, &iso) {
@@ -240,18 +240,18 @@ impl Lowerer<'_> {
         if opts.wireframe.is_none() {
             for shape in shapes {
                 out.push(self.objects.len());
-                let frame = match &shape {
+                let placement = match &shape {
                     Shape::Sphere(s) if opts.at.is_none() => {
                         Isometry::transvection_from_origin(s.center())
                     }
-                    _ => frame,
+                    _ => placement,
                 };
                 self.objects.push((
                     Object {
                         shape,
                         material,
                         name: name.clone(),
-                        frame,
+                        placement,
                     },
                     st.span,
                 ));
@@ -264,7 +264,7 @@ impl Lowerer<'_> {
                     shape: Shape::Wireframe(rods),
                     material: opts.edge_material.unwrap_or(material),
                     name,
-                    frame,
+                    placement,
                 },
                 st.span,
             ));
