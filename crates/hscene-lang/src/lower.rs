@@ -220,7 +220,7 @@ fn declared_frames(file: &SourceFile) -> u32 {
                 key,
                 value: Value::Number { value, .. },
                 ..
-            } if key.text == "frames" => Some(*value),
+            } if globals::is_frames_key(&key.text) => Some(*value),
             _ => None,
         })
         .rfind(|x| x.fract() == 0.0 && (1.0..=f64::from(MAX_FRAMES)).contains(x))

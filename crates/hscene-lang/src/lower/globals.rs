@@ -90,6 +90,12 @@ pub(crate) const GLOBAL_KEYS: [&str; KEYS.len()] = {
     names
 };
 
+/// Whether `name` is the key of the frame count (read before lowering).
+pub(super) fn is_frames_key(name: &str) -> bool {
+    KEYS.iter()
+        .any(|k| k.name == name && k.sets == Global::Frames)
+}
+
 fn keys_help() -> String {
     let names: Vec<&str> = KEYS.iter().filter(|k| !k.alias).map(|k| k.name).collect();
     format!("globals are {}", names.join(", "))

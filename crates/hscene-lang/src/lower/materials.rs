@@ -149,9 +149,10 @@ impl Lowerer<'_> {
                 ambient: checker.ambient.unwrap_or(scaled(m.ambient, 0.25)),
             });
             if m.texture.is_none()
-                && let Some(key) = ["checker_diffuse", "checker_ambient"]
+                && let Some(key) = FIELDS
                     .iter()
-                    .find_map(|k| seen.get(*k))
+                    .filter(|(_, f)| matches!(f, Field::CheckerDiffuse | Field::CheckerAmbient))
+                    .find_map(|(name, _)| seen.get(*name))
             {
                 self.report(
                     Diagnostic::new(

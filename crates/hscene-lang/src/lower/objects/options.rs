@@ -142,7 +142,7 @@ impl Lowerer<'_> {
         let drawn = out.wireframe.is_some() || out.edges.is_some();
         let useless = options
             .iter()
-            .find(|(k, _)| k.text == "edge_material" && !drawn);
+            .find(|(k, _)| option(&k.text) == Some(ObjectOption::EdgeMaterial) && !drawn);
         if let Some((key, _)) = useless {
             self.report(
                 Diagnostic::new(
