@@ -11,9 +11,10 @@ use crate::diagnostic::{Code, Diagnostic};
 use crate::ir::MaterialId;
 use crate::syntax::{RefSigil, RefTarget, Reference, Value};
 
-/// The two tables `%` references in transformations resolve against.
+/// The totally geodesic subspaces a transformation's `%` references name:
+/// h-lines (rotation axes, translations) and h-planes (reflections).
 #[derive(Clone, Copy, PartialEq, Eq)]
-enum Flat {
+enum Subspace {
     Line,
     Plane,
 }
@@ -130,17 +131,17 @@ impl Lowerer<'_> {
     }
 
     pub(super) fn resolve_line(&mut self, value: &Value) -> Option<Segment> {
-        let index = self.resolve_flat(value, Flat::Line)?;
+        let index = self.resolve_subspace(value, Subspace::Line)?;
         self.lines[index]
     }
 
     pub(super) fn resolve_plane(&mut self, value: &Value) -> Option<HPlane> {
-        let index = self.resolve_flat(value, Flat::Plane)?;
+        let index = self.resolve_subspace(value, Subspace::Plane)?;
         self.planes[index]
     }
 
     /// Resolve `%N` / `%name` against the line or plane table.
-    fn resolve_flat(&mut self, value: &Value, kind: Flat) -> Option<usize> {
+    fn resolve_subspace(&mut self, value: &Value, kind: Subspace) -> Option<usize> {
         let Value::Reference(
             r @ Reference {
                 sigil: RefSigil::Percent,
@@ -149,8 +150,8 @@ impl Lowerer<'_> {
         ) = value
         else {
             let what = match kind {
-                Flat::Line => "h-line",
-                Flat::Plane => "h-plane",
+                Subspace::Line => "h-line",
+                Subspace::Plane => "h-plane",
             };
             self.report(Diagnostic::new(
                 Code::WrongType,
@@ -163,13 +164,13 @@ impl Lowerer<'_> {
             return None;
         };
         let (found, len, what, declare) = match kind {
-            Flat::Line => (
+            Subspace::Line => (
                 self.lines.find(&r.target),
                 self.lines.len(),
                 "h-line",
                 "hline (%A, %B);",
             ),
-            Flat::Plane => (
+            Subspace::Plane => (
                 self.planes.find(&r.target),
                 self.planes.len(),
                 "h-plane",

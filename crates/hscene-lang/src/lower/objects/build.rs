@@ -14,6 +14,10 @@ use crate::lower::Lowerer;
 use crate::syntax::{Ident, Value};
 
 impl Lowerer<'_> {
+    /// Builds the shape(s) of a checked statement: one shape, or for
+    /// polygons, polyhedra and figures the faceted shapes (each
+    /// `Shape::Polygon` or `Shape::Polyhedron`) whose edges the wireframe
+    /// options draw.
     pub(super) fn build(
         &mut self,
         kind: ObjectKeyword,
