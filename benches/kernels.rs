@@ -173,10 +173,7 @@ fn appendix_render(c: &mut Criterion) {
         .scene
         .expect("appendix compiles");
     let options = hrender::RenderOptions {
-        resolution: Some(hscene_lang::ir::Resolution {
-            width: 64,
-            height: 64,
-        }),
+        resolution: hscene_lang::ir::Resolution::new(64, 64),
         ..Default::default()
     };
     let mut group = c.benchmark_group("render");

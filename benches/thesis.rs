@@ -375,10 +375,7 @@ fn main() -> ExitCode {
         };
         let options = RenderOptions {
             net: Some(Net::Euclidean),
-            resolution: Some(Resolution {
-                width: resolution,
-                height: resolution,
-            }),
+            resolution: Resolution::new(resolution, resolution),
             ..RenderOptions::default()
         };
         let start = Instant::now();

@@ -7,7 +7,7 @@
 use std::path::Path;
 
 use hgeom::{BallShape, ConvexPolygon, Point, Rod, Vertex};
-use hscene_lang::ir::{Camera, Light, Material, Object, PointPosition, Rgb, Scene, Shape};
+use hscene_lang::ir::{Camera, Light, Material, Object, Rgb, Scene, Shape};
 use serde_json::{Value, json};
 
 /// The version of the IR schema.
@@ -86,7 +86,7 @@ fn header(path: &Path, scene: &Scene) -> Value {
         "file": path.display().to_string(),
         "settings": {
             "recursion_depth": s.recursion_depth,
-            "resolution": [s.resolution.width, s.resolution.height],
+            "resolution": [s.resolution.width(), s.resolution.height()],
             "window_size": [s.window.width, s.window.height],
             "net_type": s.net.index(),
             "background": rgb(s.background),
@@ -106,8 +106,8 @@ fn header(path: &Path, scene: &Scene) -> Value {
 
 fn point_entry(p: &hscene_lang::ir::PointRecord) -> Value {
     let (position, ideal) = match p.position {
-        PointPosition::Interior(q) => (q.coords(), false),
-        PointPosition::Ideal(q) => (q.coords(), true),
+        Vertex::Interior(q) => (q.coords(), false),
+        Vertex::Ideal(q) => (q.coords(), true),
     };
     json!({
         "number": p.number,
@@ -220,8 +220,8 @@ fn object(i: usize, o: &Object) -> Value {
     let mut v = json!({
         "number": i + 1,
         "name": o.name,
-        "material": o.material.0 + 1,
-        "frame": isometry(&o.frame),
+        "material": o.material.index() + 1,
+        "frame": isometry(&o.placement),
     });
     let params = match &o.shape {
         Shape::Sphere(s) => {

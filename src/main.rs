@@ -340,7 +340,8 @@ fn render_frame(
         net: args.net.and_then(|n| Net::from_index(u64::from(n))),
         resolution: args
             .resolution
-            .map(|(width, height)| Resolution { width, height }),
+            // The parser refused empty sides.
+            .and_then(|(width, height)| Resolution::new(width, height)),
         threads: args.threads.map(usize::from),
         samples: args.samples,
         seed: args.seed,
@@ -354,7 +355,7 @@ fn render_frame(
             options
                 .resolution
                 .unwrap_or(scene.settings.resolution)
-                .height
+                .height()
         },
         |c| c.height,
     );

@@ -5,8 +5,8 @@
 
 use std::fmt::Write as _;
 
-use hgeom::Point;
-use hscene_lang::ir::{PointPosition, Rgb, Scene};
+use hgeom::{Point, Vertex};
+use hscene_lang::ir::{Rgb, Scene};
 use hscene_lang::symbols::{Definition, SymbolKind};
 use lsp_types::{Hover, HoverContents, HoverParams, MarkupContent, MarkupKind};
 
@@ -106,8 +106,8 @@ fn at_distance(p: Point, eye: Point) -> String {
 fn point(scene: &Scene, number: usize, eye: Point) -> Option<String> {
     let record = scene.points.iter().find(|r| r.number == number)?;
     Some(match record.position {
-        PointPosition::Interior(p) => at_distance(p, eye),
-        PointPosition::Ideal(i) => {
+        Vertex::Interior(p) => at_distance(p, eye),
+        Vertex::Ideal(i) => {
             let c = i.coords();
             format!(
                 "Ideal point (on the absolute) at `({}, {}, {})`, infinitely far from the eye\n",
@@ -149,7 +149,7 @@ fn object(scene: &Scene, name: &str, eye: Point) -> String {
         .iter()
         .filter(|o| o.name.as_deref() == Some(name))
     {
-        let material = o.material.0 + 1;
+        let material = o.material.index() + 1;
         if let Some(s) = o.shape.sphere() {
             let _ = writeln!(
                 out,

@@ -127,14 +127,6 @@ impl RenderOptions {
                 "threads must be from 1 to {MAX_THREADS}, not {threads}"
             )));
         }
-        if self
-            .resolution
-            .is_some_and(|r| r.width == 0 || r.height == 0)
-        {
-            return Err(RenderError::InvalidOption(
-                "resolution must be at least 1x1".into(),
-            ));
-        }
         Ok(())
     }
 }
@@ -388,12 +380,8 @@ fn render_in_pool(
     let camera = CanonicalCamera::new(&scene.camera)?;
     let prepared = PreparedScene::for_camera(scene, &camera)?;
     let net = options.net.unwrap_or(scene.settings.net);
-    let Resolution { width, height } = options.resolution.unwrap_or(scene.settings.resolution);
-    if width == 0 || height == 0 {
-        return Err(RenderError::InvalidOption(
-            "resolution must be at least 1x1".into(),
-        ));
-    }
+    let resolution = options.resolution.unwrap_or(scene.settings.resolution);
+    let (width, height) = (resolution.width(), resolution.height());
     let region = region.unwrap_or(Region {
         x: 0,
         y: 0,
@@ -409,12 +397,7 @@ fn render_in_pool(
             region.width, region.height, region.x, region.y
         )));
     }
-    let window = view_window(
-        scene,
-        net,
-        Resolution { width, height },
-        camera.view_distance,
-    )?;
+    let window = view_window(scene, net, resolution, camera.view_distance)?;
     let frame = Frame {
         net,
         pixel_net: PixelNet::new(net, window, camera.view_distance),

@@ -301,11 +301,11 @@ impl PreparedScene {
     fn staged(scene: &Scene, stages: &[Isometry]) -> Result<PreparedScene, RenderError> {
         let mut objects = Vec::with_capacity(scene.objects.len());
         for (index, o) in scene.objects.iter().enumerate() {
-            if o.material.0 >= scene.materials.len() {
+            if o.material.index() >= scene.materials.len() {
                 return Err(RenderError::InvalidScene(format!(
                     "object {} uses material {}, but there are only {}",
                     index + 1,
-                    o.material.0 + 1,
+                    o.material.index() + 1,
                     scene.materials.len()
                 )));
             }
@@ -317,10 +317,10 @@ impl PreparedScene {
             }
             objects.push(PreparedObject {
                 primitive,
-                material: o.material.0,
+                material: o.material.index(),
                 to_local: stages
                     .iter()
-                    .fold(o.frame, |f, iso| iso.compose(&f))
+                    .fold(o.placement, |f, iso| iso.compose(&f))
                     .inverse(),
             });
         }

@@ -79,10 +79,10 @@ fn the_checker_shows_both_colours() {
 }
 
 /// The texture moves with its object: moving the eye, the target, the up
-/// point, every object (shape and frame) and every light by one isometry
+/// point, every object (shape and placement) and every light by one isometry
 /// leaves the image unchanged, for five random isometries with translation
 /// parts of length 2.5 to 5 (at most 0.1 % of pixels off by more than
-/// 1/255). Moving the shapes but not their frames changes it: the pattern
+/// 1/255). Moving the shapes but not their placements changes it: the pattern
 /// is fixed in the local space, not in the world.
 #[test]
 fn the_texture_moves_with_its_object() {
@@ -95,12 +95,12 @@ fn the_texture_moves_with_its_object() {
         let share = agreement(&draw(&moved_scene), &before, 1.0 / 255.0);
         assert!(share >= 0.999, "isometry {case}: {share}");
 
-        let mut frames_left = moved_scene.clone();
-        for (o, old) in frames_left.objects.iter_mut().zip(&base.objects) {
-            o.frame = old.frame;
+        let mut placements_left = moved_scene.clone();
+        for (o, old) in placements_left.objects.iter_mut().zip(&base.objects) {
+            o.placement = old.placement;
         }
-        let share = agreement(&draw(&frames_left), &before, 1.0 / 255.0);
-        assert!(share < 0.9, "isometry {case}: frames ignored, {share}");
+        let share = agreement(&draw(&placements_left), &before, 1.0 / 255.0);
+        assert!(share < 0.9, "isometry {case}: placements ignored, {share}");
     }
 }
 

@@ -4,7 +4,9 @@
 //! resolved, every transformation applied, every default filled in. The IR
 //! carries no source text and no spans; the renderer needs nothing else.
 
-use hgeom::{IdealPoint, Isometry, Point};
+use std::num::NonZeroU32;
+
+use hgeom::{Isometry, Point, Vertex};
 
 mod shape;
 
@@ -74,13 +76,31 @@ impl Net {
     }
 }
 
-/// Image size in pixels. Invariant: both positive.
+/// Image size in pixels, both sides at least 1.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Resolution {
+    width: NonZeroU32,
+    height: NonZeroU32,
+}
+
+impl Resolution {
+    /// `width` columns by `height` rows; `None` if either is 0.
+    pub const fn new(width: u32, height: u32) -> Option<Resolution> {
+        match (NonZeroU32::new(width), NonZeroU32::new(height)) {
+            (Some(width), Some(height)) => Some(Resolution { width, height }),
+            _ => None,
+        }
+    }
+
     /// Columns.
-    pub width: u32,
+    pub const fn width(self) -> u32 {
+        self.width.get()
+    }
+
     /// Rows.
-    pub height: u32,
+    pub const fn height(self) -> u32 {
+        self.height.get()
+    }
 }
 
 /// Size of the sampled window on the view plane (Euclidean units for nets 0,
@@ -185,8 +205,8 @@ pub enum Pattern {
     Checker,
 }
 
-/// A solid texture, fixed in its object's local frame ([`Object::frame`]),
-/// so it moves with the object.
+/// A solid texture, fixed in its object's local space (placed in the world
+/// by [`Object::placement`]), so it moves with the object.
 ///
 /// Invariant: `scale` positive and finite.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -201,9 +221,28 @@ pub struct Texture {
     pub ambient: Rgb,
 }
 
-/// Index into [`Scene::materials`].
+/// Index into [`Scene::materials`]. Made by the lowering for the materials
+/// it declares, or by [`MaterialId::of`] for an index a material list has.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct MaterialId(pub usize);
+pub struct MaterialId(usize);
+
+impl MaterialId {
+    /// The id of `materials[index]`; `None` if the list is shorter.
+    pub fn of(materials: &[Material], index: usize) -> Option<MaterialId> {
+        (index < materials.len()).then_some(MaterialId(index))
+    }
+
+    /// The id of the material declared `index`-th (from 0), for the
+    /// lowering, which makes the list as it goes.
+    pub(crate) fn declared(index: usize) -> MaterialId {
+        MaterialId(index)
+    }
+
+    /// The position in [`Scene::materials`].
+    pub fn index(self) -> usize {
+        self.0
+    }
+}
 
 /// A point light.
 #[derive(Clone, Debug, PartialEq)]
@@ -236,13 +275,13 @@ pub struct Object {
     /// `edges = t` gives its faces and its edges (a wireframe), a
     /// tessellation one polyhedron per cell; they share the name.
     pub name: Option<String>,
-    /// The object's local frame: the isometry from its local space to the
+    /// The object's placement: the isometry from its local space to the
     /// world. Textures are fixed in the local space. It is the identity for
     /// objects given by world points (polygons, planes, rods, cylinders,
     /// horospheres), the translation from the origin to the centre for a
     /// sphere, the `at` translation for figures and meshes (built about the
     /// origin), each followed by the object's own `@name` transformations.
-    pub frame: Isometry,
+    pub placement: Isometry,
 }
 
 /// The final position of a declared point, for inspection (`--emit ir`).
@@ -252,17 +291,9 @@ pub struct PointRecord {
     pub number: usize,
     /// Name, if declared with one.
     pub name: Option<String>,
-    /// Final position after all transformations.
-    pub position: PointPosition,
-}
-
-/// An h-point or an ideal point.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum PointPosition {
-    /// Inside the ball.
-    Interior(Point),
-    /// On the absolute.
-    Ideal(IdealPoint),
+    /// Final position after all transformations: an h-point, or an ideal
+    /// point on the absolute.
+    pub position: Vertex,
 }
 
 /// A fully resolved scene.

@@ -124,7 +124,7 @@ pub fn fov_window(
             }
         }
     };
-    let aspect = f64::from(resolution.height) / f64::from(resolution.width);
+    let aspect = f64::from(resolution.height()) / f64::from(resolution.width());
     Ok(Window {
         width,
         height: width * aspect,
@@ -135,10 +135,7 @@ pub fn fov_window(
 mod tests {
     use super::*;
 
-    const SQUARE: Resolution = Resolution {
-        width: 100,
-        height: 100,
-    };
+    const SQUARE: Resolution = Resolution::new(100, 100).unwrap();
 
     /// `fov = 60` at `f = 0.1` is the window 0.11547 of net 0; a wide
     /// resolution keeps the pixels square.
@@ -147,10 +144,7 @@ mod tests {
         let w = fov_window(60.0, Net::Euclidean, SQUARE, 0.1).unwrap();
         assert!((w.width - 0.115_470_053_837_925_15).abs() < 1e-15);
         assert_eq!(w.width, w.height);
-        let wide = Resolution {
-            width: 200,
-            height: 100,
-        };
+        let wide = Resolution::new(200, 100).unwrap();
         let w = fov_window(90.0, Net::Euclidean, wide, 0.25).unwrap();
         assert!((w.width - 0.5).abs() < 1e-15 && (w.height - 0.25).abs() < 1e-15);
         assert_eq!(

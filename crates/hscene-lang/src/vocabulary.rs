@@ -6,34 +6,35 @@ pub fn sections() -> &'static [&'static str] {
     &crate::lower::SECTIONS
 }
 
-/// The keys of `Globals`.
+/// The keys of `Globals`, aliases (`eye` for `from`) included.
 pub fn global_keys() -> &'static [&'static str] {
-    crate::lower::GLOBAL_KEYS
+    &crate::lower::GLOBAL_KEYS
 }
 
 /// The fields of a material in `BRDFs`.
 pub fn material_fields() -> &'static [&'static str] {
-    crate::lower::MATERIAL_FIELDS
+    &crate::lower::MATERIAL_FIELDS
 }
 
 /// Object keywords of `Objects` (solids, predefined figures, aliases).
 pub fn object_keywords() -> Vec<&'static str> {
-    crate::lower::objects::object_names()
+    crate::lower::object_names()
 }
 
 /// `key = value` options an object statement may end with.
 pub fn object_options() -> &'static [&'static str] {
-    &crate::lower::objects::OPTION_NAMES
+    &crate::lower::OPTION_NAMES
 }
 
 /// Keywords of `Transformations`.
 pub fn transformations() -> &'static [&'static str] {
-    crate::lower::TRANSFORMATIONS
+    &crate::lower::TRANSFORMATIONS
 }
 
-/// `key = value` options of a light (an area light's radius and samples).
+/// `key = value` options of a light (an area light's radius and samples,
+/// and the distance its colours are the irradiance at).
 pub fn light_options() -> &'static [&'static str] {
-    &["radius", "samples"]
+    &crate::lower::LIGHT_OPTIONS
 }
 
 #[cfg(test)]
@@ -42,6 +43,8 @@ mod tests {
     fn tables_are_filled() {
         assert!(super::sections().contains(&"Points"));
         assert!(super::global_keys().contains(&"resolution"));
+        assert!(super::global_keys().contains(&"eye"));
+        assert!(super::light_options().contains(&"irradiance_at"));
         assert!(super::material_fields().contains(&"shininess"));
         assert!(super::object_keywords().contains(&"Sphere"));
         assert!(super::object_options().contains(&"wireframe"));

@@ -8,10 +8,7 @@
 
 use hgeom::glam::DVec3;
 use hgeom::{Point, Vertex};
-use hscene_lang::ir::{
-    Camera, Material, MaterialId, Net, PointPosition, Resolution, Rgb, Scene, Settings, Shape,
-    Window,
-};
+use hscene_lang::ir::{Camera, Material, Net, Resolution, Rgb, Scene, Settings, Shape, Window};
 use hscene_lang::{Compiled, Diagnostic, LineIndex, Severity, Span, compile};
 use proptest::prelude::*;
 
@@ -179,8 +176,8 @@ fn interior(scene: &Scene, number: usize) -> DVec3 {
     let rec = &scene.points[number - 1];
     assert_eq!(rec.number, number);
     match rec.position {
-        PointPosition::Interior(p) => p.coords(),
-        PointPosition::Ideal(p) => panic!("%{number} is ideal: {p:?}"),
+        Vertex::Interior(p) => p.coords(),
+        Vertex::Ideal(p) => panic!("%{number} is ideal: {p:?}"),
     }
 }
 
@@ -277,10 +274,7 @@ fn appendix_a_compiles_with_one_warning() {
         scene.settings,
         Settings {
             recursion_depth: 1,
-            resolution: Resolution {
-                width: 1200,
-                height: 1200
-            },
+            resolution: Resolution::new(1200, 1200).unwrap(),
             window: Window {
                 width: 0.15,
                 height: 0.15
@@ -317,7 +311,7 @@ fn appendix_a_compiles_with_one_warning() {
     let expected = appendix_expected();
     for (k, (sphere, material)) in spheres.iter().enumerate() {
         assert_eq!(sphere.radius(), 0.05);
-        assert_eq!(*material, MaterialId(0));
+        assert_eq!(material.index(), 0);
         assert_close(
             sphere.center().coords(),
             expected[k + 2],
@@ -326,7 +320,7 @@ fn appendix_a_compiles_with_one_warning() {
         );
     }
     let (dodecahedron, material) = polyhedra[0];
-    assert_eq!(material, MaterialId(1));
+    assert_eq!(material.index(), 1);
     assert_eq!(dodecahedron.faces().len(), 12);
     assert!(dodecahedron.faces().iter().all(|f| f.vertices().len() == 5));
     assert_eq!(dodecahedron.center(), Point::ORIGIN);
@@ -551,10 +545,7 @@ fn empty_file_gets_the_documented_defaults() {
             scene.settings,
             Settings {
                 recursion_depth: 1,
-                resolution: Resolution {
-                    width: 512,
-                    height: 512
-                },
+                resolution: Resolution::new(512, 512).unwrap(),
                 window: Window {
                     width: 0.15,
                     height: 0.15
@@ -597,13 +588,7 @@ fn globals_override_each_default() {
     assert!(c.diagnostics.is_empty(), "{:#?}", c.diagnostics);
     let s = c.scene.unwrap().settings;
     assert_eq!(s.recursion_depth, 3);
-    assert_eq!(
-        s.resolution,
-        Resolution {
-            width: 640,
-            height: 480
-        }
-    );
+    assert_eq!(s.resolution, Resolution::new(640, 480).unwrap());
     assert_eq!(
         s.window,
         Window {
@@ -697,7 +682,7 @@ fn extension_syntax_named_points_and_materials() {
     assert_eq!(scene.objects.len(), 3);
     // `%target`/`%2` and `#glass`/`#2` name the same things.
     assert_eq!(scene.objects[0], scene.objects[1]);
-    assert_eq!(scene.objects[0].material, MaterialId(1));
+    assert_eq!(scene.objects[0].material.index(), 1);
     let Shape::Sphere(s) = &scene.objects[0].shape else {
         panic!("{:?}", scene.objects[0]);
     };
@@ -706,7 +691,7 @@ fn extension_syntax_named_points_and_materials() {
     let Shape::Polygon(poly) = &scene.objects[2].shape else {
         panic!("{:?}", scene.objects[2]);
     };
-    assert_eq!(scene.objects[2].material, MaterialId(0));
+    assert_eq!(scene.objects[2].material.index(), 0);
     let vs: Vec<DVec3> = poly.vertices().iter().map(Vertex::coords).collect();
     assert_eq!(
         vs,
@@ -774,7 +759,7 @@ Objects { Polygon (%1, %2, %3, %4), #1; Polygon ((0,0,1), (0.3,0,0.3), (0,0.3,0.
     let scene = c.scene.unwrap();
     for rec in &scene.points {
         assert!(
-            matches!(rec.position, PointPosition::Ideal(_)),
+            matches!(rec.position, Vertex::Ideal(_)),
             "%{} should be ideal: {:?}",
             rec.number,
             rec.position
@@ -1141,7 +1126,7 @@ fn point_near_the_absolute_warning() {
     // Still an interior point.
     assert!(matches!(
         c.scene.unwrap().points[0].position,
-        PointPosition::Interior(_)
+        Vertex::Interior(_)
     ));
     // Moderately close points are not flagged.
     let ok = "Points { (0.999,0,0); } Lights { %1, (1,1,1), (1,1,1); }";
@@ -1427,7 +1412,7 @@ fn check_compile(src: &str) -> Result<(), TestCaseError> {
     prop_assert_eq!(c.scene.is_some(), !has_error, "{:#?}", c.diagnostics);
     if let Some(scene) = &c.scene {
         for rec in &scene.points {
-            if let PointPosition::Interior(p) = rec.position {
+            if let Vertex::Interior(p) = rec.position {
                 prop_assert!(p.coords().is_finite() && p.gap() > 0.0, "{:?}", rec);
             }
         }

@@ -302,12 +302,12 @@ fn edges_option_gives_faces_and_rods_with_the_edge_material() {
     ));
     assert_eq!(s.objects.len(), 2);
     assert!(matches!(s.objects[0].shape, Shape::Polyhedron(_)));
-    assert_eq!(s.objects[0].material.0, 0);
+    assert_eq!(s.objects[0].material.index(), 0);
     let Shape::Wireframe(rods) = &s.objects[1].shape else {
         panic!()
     };
     assert_eq!(rods.len(), 12);
-    assert_eq!(s.objects[1].material.0, 1);
+    assert_eq!(s.objects[1].material.index(), 1);
     assert_eq!(s.objects[0].name.as_deref(), Some("c"));
     assert_eq!(s.objects[1].name.as_deref(), Some("c"));
 }
@@ -1155,7 +1155,7 @@ proptest! {
         prop_assert_eq!(c.scene.is_some(), !c.has_errors());
         if let Some(scene) = &c.scene {
             for o in &scene.objects {
-                prop_assert!(o.material.0 < scene.materials.len());
+                prop_assert!(o.material.index() < scene.materials.len());
             }
         }
     }

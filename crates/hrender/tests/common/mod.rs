@@ -90,10 +90,7 @@ pub fn flat(r: f64, g: f64, b: f64) -> Material {
 pub fn settings(net: Net, size: u32, window: f64) -> Settings {
     Settings {
         recursion_depth: 1,
-        resolution: Resolution {
-            width: size,
-            height: size,
-        },
+        resolution: Resolution::new(size, size).expect("test resolution"),
         window: Window {
             width: window,
             height: window,
@@ -153,21 +150,28 @@ pub fn checkered(material: Material, scale: f64, colour: Rgb) -> Material {
     }
 }
 
-/// An object with material index `m` and local frame `frame`.
-pub fn obj_in(shape: Shape, m: usize, frame: Isometry) -> Object {
-    Object {
-        frame,
+/// An object of a test scene, its material given by its index in the
+/// materials passed to [`scene`] (which makes the [`Object`]).
+pub struct TestObject {
+    shape: Shape,
+    material: usize,
+    placement: Isometry,
+}
+
+/// An object with material index `m` and placement `placement`.
+pub fn obj_in(shape: Shape, m: usize, placement: Isometry) -> TestObject {
+    TestObject {
+        placement,
         ..obj(shape, m)
     }
 }
 
 /// An object with material index `m`.
-pub fn obj(shape: Shape, m: usize) -> Object {
-    Object {
+pub fn obj(shape: Shape, m: usize) -> TestObject {
+    TestObject {
         shape,
-        material: MaterialId(m),
-        name: None,
-        frame: hgeom::Isometry::IDENTITY,
+        material: m,
+        placement: hgeom::Isometry::IDENTITY,
     }
 }
 
@@ -177,8 +181,17 @@ pub fn scene(
     camera: Camera,
     materials: Vec<Material>,
     lights: Vec<Light>,
-    objects: Vec<Object>,
+    objects: Vec<TestObject>,
 ) -> Scene {
+    let objects = objects
+        .into_iter()
+        .map(|o| Object {
+            shape: o.shape,
+            material: MaterialId::of(&materials, o.material).expect("test material index"),
+            name: None,
+            placement: o.placement,
+        })
+        .collect();
     Scene {
         settings,
         camera,
@@ -245,7 +258,7 @@ pub fn mixed_scene(net: Net, size: u32, window: f64) -> Scene {
 }
 
 /// Apply one isometry to everything in a scene: camera (eye, target, up),
-/// every object (its shape and its local frame, so textures move with it)
+/// every object (its shape and its placement, so textures move with it)
 /// and every light.
 pub fn moved(scene: &Scene, iso: &Isometry) -> Scene {
     let mut s = scene.clone();
@@ -257,7 +270,7 @@ pub fn moved(scene: &Scene, iso: &Isometry) -> Scene {
         l.position = iso.apply(&l.position);
     }
     for o in &mut s.objects {
-        o.frame = iso.compose(&o.frame);
+        o.placement = iso.compose(&o.placement);
         o.shape = match &o.shape {
             Shape::Sphere(x) => Shape::Sphere(x.transformed(iso)),
             Shape::Polygon(x) => Shape::Polygon(x.transformed(iso)),

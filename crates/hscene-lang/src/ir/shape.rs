@@ -78,6 +78,24 @@ impl Shape {
         }
     }
 
+    /// The flat faces of a faceted shape (a polygon is its own face, a
+    /// polyhedron has its faces); empty for every other shape.
+    pub fn faces(&self) -> &[ConvexPolygon] {
+        match self {
+            Shape::Polygon(p) => std::slice::from_ref(p),
+            Shape::Polyhedron(p) => p.faces(),
+            _ => &[],
+        }
+    }
+
+    /// The local frame the shape defines by itself, if any: a sphere's is
+    /// the translation from the origin to its centre, so that a texture is
+    /// centred on the sphere.
+    pub fn natural_placement(&self) -> Option<Isometry> {
+        self.sphere()
+            .map(|s| Isometry::transvection_from_origin(s.center()))
+    }
+
     /// The image of the shape under an isometry (unchecked: ask
     /// [`Shape::is_representable`] of the result).
     pub fn transformed(&self, iso: &Isometry) -> Shape {

@@ -7,7 +7,7 @@
 use crate::diagnostic::{Code, Diagnostic, Span};
 
 use super::Lowerer;
-use super::figures::Figure;
+use super::objects::figures::Figure;
 
 /// Most primitives (faces of polygons and polyhedra, mesh triangles, rods,
 /// and one for each other shape) in one scene. A scene at the cap needs

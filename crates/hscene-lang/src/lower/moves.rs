@@ -14,14 +14,13 @@ use std::collections::HashMap;
 use hgeom::glam::DVec3;
 use hgeom::{HLine, Isometry, Point};
 
-use super::objects::closest;
-use super::{Lowerer, TargetSlot, reference_text};
+use super::Lowerer;
+use super::names::{CAMERA, TargetSlot};
+use super::suggest::{MAX_CANDIDATES, closest};
+use super::text::{quote, reference_text, shorten};
 use crate::diagnostic::{Code, Diagnostic};
 use crate::ir::{Camera, Shape};
 use crate::syntax::{RefTarget, Reference};
-
-/// The name `@camera` refers to; objects and lights may not take it.
-pub(super) const CAMERA: &str = "camera";
 
 /// A transformation of an `@` target, waiting for its target to exist.
 pub(super) struct PendingMove {
@@ -64,7 +63,7 @@ impl Lowerer<'_> {
                     continue;
                 }
             };
-            if name != CAMERA && !self.targets.contains_key(&name) {
+            if name != CAMERA && self.targets.by_name(&name).is_none() {
                 self.undefined_target(&mv.target, &name);
                 continue;
             }
@@ -95,7 +94,7 @@ impl Lowerer<'_> {
                 }
                 continue;
             }
-            let Some((slot, _)) = self.targets.get(&name).cloned() else {
+            let Some(slot) = self.targets.by_name(&name).map(|i| self.targets[i].clone()) else {
                 continue;
             };
             match slot {
@@ -105,7 +104,7 @@ impl Lowerer<'_> {
                             Some(s) => {
                                 let object = &mut self.objects[i].0;
                                 object.shape = s;
-                                object.frame = iso.compose(&object.frame);
+                                object.placement = iso.compose(&object.placement);
                             }
                             None => {
                                 self.out_of_range(&target, "this object");
@@ -128,17 +127,17 @@ impl Lowerer<'_> {
         let mut d = Diagnostic::new(
             Code::UndefinedTarget,
             target.span,
-            format!("no object or light is named {}", super::quote(name)),
+            format!("no object or light is named {}", quote(name)),
         );
         // The camera and the declared targets; none when there are too many
         // to compare (see `suggest.rs`), so this stays linear per error.
         let mut declared: Vec<&str> = Vec::new();
-        if self.targets.len() < super::objects::MAX_CANDIDATES {
-            declared = self.targets.keys().map(String::as_str).collect();
+        if self.targets.name_count() < MAX_CANDIDATES {
+            declared = self.targets.names().collect();
             declared.push(CAMERA);
         }
-        d = if self.point_names.contains_key(name) {
-            let name = super::shorten(name);
+        d = if self.points.by_name(name).is_some() {
+            let name = shorten(name);
             d.with_help(format!(
                 "`{name}` is a point: write `%{name}->...` to move it"
             ))

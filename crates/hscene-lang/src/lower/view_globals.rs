@@ -6,7 +6,7 @@
 use super::Lowerer;
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::{Camera, Fog, Rgb};
-use crate::syntax::{Ident, Value};
+use crate::syntax::Value;
 use crate::view::{FovError, fov_window, max_fov_degrees};
 
 /// The view keys as given, settled once the whole section is read.
@@ -23,14 +23,22 @@ pub(super) struct ViewParts {
     fog_distance_failed: bool,
 }
 
-/// Keys this module handles.
-pub(super) const VIEW_KEYS: &[&str] = &["fov", "fog_color", "fog_distance"];
+/// The view keys this module handles.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum ViewKey {
+    /// `fov`.
+    Fov,
+    /// `fog_color`.
+    FogColor,
+    /// `fog_distance`.
+    FogDistance,
+}
 
 impl Lowerer<'_> {
-    /// One of [`VIEW_KEYS`].
-    pub(super) fn view_global(&mut self, key: &Ident, value: &Value) {
-        match key.text.as_str() {
-            "fov" => {
+    /// One of the view keys.
+    pub(super) fn view_global(&mut self, key: ViewKey, value: &Value) {
+        match key {
+            ViewKey::Fov => {
                 let Some(x) = self.number(value) else { return };
                 if x > 0.0 && x < 180.0 {
                     self.view.fov = Some((x, value.span()));
@@ -45,12 +53,12 @@ impl Lowerer<'_> {
                     );
                 }
             }
-            "fog_color" => {
+            ViewKey::FogColor => {
                 if let Some(c) = self.rgb(value) {
                     self.view.fog_color = Some((c, value.span()));
                 }
             }
-            _ => {
+            ViewKey::FogDistance => {
                 self.view.fog_distance_failed = true;
                 let Some(x) = self.number(value) else { return };
                 if x > 0.0 && x.is_finite() {

@@ -3,9 +3,10 @@
 
 use hgeom::TriangleMesh;
 
-use super::Lowerer;
-use super::ranges::MAX_MESH_SIZE;
 use crate::diagnostic::{Code, Diagnostic};
+use crate::lower::Lowerer;
+use crate::lower::ranges::MAX_MESH_SIZE;
+use crate::lower::text::quote;
 use crate::mesh_file::{self, MeshFileError};
 use crate::syntax::Value;
 
@@ -58,7 +59,7 @@ impl Lowerer<'_> {
                     Diagnostic::new(
                         Code::MeshFileUnreadable,
                         file_span,
-                        format!("cannot read the mesh file {}: {e}", super::quote(file)),
+                        format!("cannot read the mesh file {}: {e}", quote(file)),
                     )
                     .with_help("a relative file name is taken from the scene file's directory"),
                 );
@@ -69,7 +70,7 @@ impl Lowerer<'_> {
                     Diagnostic::new(
                         Code::MeshFileInvalid,
                         file_span,
-                        format!("cannot use the mesh file {}: {e}", super::quote(file)),
+                        format!("cannot use the mesh file {}: {e}", quote(file)),
                     )
                     .with_help("meshes are read from Wavefront OBJ (`.obj`) and PLY (`.ply`, ASCII or binary) files with triangle or polygon faces"),
                 );
@@ -83,7 +84,7 @@ impl Lowerer<'_> {
                     file_span,
                     format!(
                         "the mesh in {} has no extent: all its vertices coincide",
-                        super::quote(file)
+                        quote(file)
                     ),
                 )
                 .with_help("use a file whose vertices span a surface"),

@@ -1,0 +1,253 @@
+//! The `Globals` section: render settings, the camera's points and the
+//! view keys, each `key = value`.
+
+use std::collections::HashMap;
+
+use super::Lowerer;
+use super::camera::CameraKey;
+use super::suggest::did_you_mean;
+use super::text::quote;
+use super::view_globals::ViewKey;
+use crate::diagnostic::{Code, Diagnostic, Span};
+use crate::ir::{Net, Resolution, Rgb, Settings, Window};
+use crate::syntax::{Clause, Ident, Section, Value};
+
+/// Largest accepted image side, to keep allocations sane.
+const MAX_RESOLUTION: u64 = 32_768;
+
+/// Most anti-aliasing samples per pixel a scene may ask for.
+pub const MAX_SAMPLES: u32 = 4096;
+
+/// Most animation frames a scene may declare.
+pub const MAX_FRAMES: u32 = 100_000;
+
+/// Largest accepted pixel count (about 1.6 GB of HDR samples).
+pub const MAX_PIXELS: u64 = 1 << 27;
+
+/// What a global key sets.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Global {
+    RecursionDepth,
+    Resolution,
+    WindowSize,
+    NetType,
+    Samples,
+    Frames,
+    Background,
+    Ambient,
+    Camera(CameraKey),
+    View(ViewKey),
+}
+
+/// One key of `Globals`.
+struct GlobalKey {
+    name: &'static str,
+    sets: Global,
+    /// Another spelling of a key listed before it: accepted, suggested and
+    /// completed, but not listed in the help.
+    alias: bool,
+}
+
+const fn key(name: &'static str, sets: Global) -> GlobalKey {
+    GlobalKey {
+        name,
+        sets,
+        alias: false,
+    }
+}
+
+/// Every key of `Globals`, in the order the help lists them.
+const KEYS: &[GlobalKey] = &[
+    key("recursion_depth", Global::RecursionDepth),
+    key("resolution", Global::Resolution),
+    key("window_size", Global::WindowSize),
+    key("fov", Global::View(ViewKey::Fov)),
+    key("net_type", Global::NetType),
+    key("samples", Global::Samples),
+    key("frames", Global::Frames),
+    key("from", Global::Camera(CameraKey::Eye)),
+    GlobalKey {
+        name: "eye",
+        sets: Global::Camera(CameraKey::Eye),
+        alias: true,
+    },
+    key("to", Global::Camera(CameraKey::Target)),
+    key("up", Global::Camera(CameraKey::Up)),
+    key("background", Global::Background),
+    key("ambient", Global::Ambient),
+    key("fog_color", Global::View(ViewKey::FogColor)),
+    key("fog_distance", Global::View(ViewKey::FogDistance)),
+];
+
+/// Every global key, aliases included, in the order of [`KEYS`].
+pub(crate) const GLOBAL_KEYS: [&str; KEYS.len()] = {
+    let mut names = [""; KEYS.len()];
+    let mut i = 0;
+    while i < KEYS.len() {
+        names[i] = KEYS[i].name;
+        i += 1;
+    }
+    names
+};
+
+/// Whether `name` is the key of the frame count (read before lowering).
+pub(super) fn is_frames_key(name: &str) -> bool {
+    KEYS.iter()
+        .any(|k| k.name == name && k.sets == Global::Frames)
+}
+
+fn keys_help() -> String {
+    let names: Vec<&str> = KEYS.iter().filter(|k| !k.alias).map(|k| k.name).collect();
+    format!("globals are {}", names.join(", "))
+}
+
+/// The default image size.
+const DEFAULT_RESOLUTION: Resolution = match Resolution::new(512, 512) {
+    Some(r) => r,
+    None => panic!("the default resolution is not empty"),
+};
+
+/// Default settings: the thesis's Appendix A values, at a smaller resolution.
+pub(super) fn default_settings() -> Settings {
+    Settings {
+        recursion_depth: 1,
+        resolution: DEFAULT_RESOLUTION,
+        window: Window {
+            width: 0.15,
+            height: 0.15,
+        },
+        net: Net::Euclidean,
+        background: Rgb::BLACK,
+        ambient: Rgb::new(0.1, 0.1, 0.1),
+        samples: 1,
+        frames: 1,
+        fov: None,
+        fog: None,
+    }
+}
+
+impl Lowerer<'_> {
+    pub(super) fn globals_section(&mut self, section: &Section) {
+        let mut seen: HashMap<String, Span> = HashMap::new();
+        for st in &section.statements {
+            for clause in &st.clauses {
+                let Clause::Assign { key, value, .. } = clause else {
+                    self.report(
+                        Diagnostic::new(Code::WrongType, clause.span(), "expected `key = value`")
+                            .with_help(keys_help()),
+                    );
+                    continue;
+                };
+                if seen.insert(key.text.clone(), key.span).is_some() {
+                    self.report(Diagnostic::new(
+                        Code::DuplicateKey,
+                        key.span,
+                        format!("{} is set twice; the last value wins", quote(&key.text)),
+                    ));
+                }
+                self.global(key, value);
+            }
+        }
+    }
+
+    fn global(&mut self, key: &Ident, value: &Value) {
+        let Some(global) = KEYS.iter().find(|k| k.name == key.text) else {
+            self.report(
+                Diagnostic::new(
+                    Code::UnknownKey,
+                    key.span,
+                    format!("unknown global {}", quote(&key.text)),
+                )
+                .with_help(did_you_mean(&key.text, &GLOBAL_KEYS, &keys_help())),
+            );
+            return;
+        };
+        match global.sets {
+            Global::RecursionDepth => {
+                if let Some(n) = self.integer(value, 0, 64, "recursion_depth") {
+                    self.settings.recursion_depth = n as u32;
+                }
+            }
+            Global::Resolution => self.resolution(value),
+            Global::WindowSize => {
+                self.view.window_span = Some(value.span());
+                if let Some(v) = self.tuple_of_numbers(value, 2, "window_size = (width, height)") {
+                    if v.iter().all(|x| *x > 0.0) {
+                        self.settings.window = Window {
+                            width: v[0],
+                            height: v[1],
+                        };
+                    } else {
+                        self.error(
+                            Code::InvalidValue,
+                            value.span(),
+                            "the window size must be positive",
+                        );
+                    }
+                }
+            }
+            Global::NetType => {
+                if let Some(x) = self.number(value) {
+                    match (x.fract() == 0.0 && x >= 0.0).then(|| Net::from_index(x as u64)).flatten() {
+                        Some(net) => self.settings.net = net,
+                        None => self.report(
+                            Diagnostic::new(Code::UnknownNetType, value.span(), format!("unknown net type {x}"))
+                                .with_help("net_type is 0 (Euclidean), 1 (hyperparallel h-lines), 2 (great disk), 3 (h-equidistants) or 4 (h-equidistants, interpolated)"),
+                        ),
+                    }
+                }
+            }
+            Global::Samples => {
+                if let Some(n) = self.integer(value, 1, u64::from(MAX_SAMPLES), "samples") {
+                    self.settings.samples = n as u32;
+                }
+            }
+            Global::Frames => {
+                if let Some(n) = self.integer(value, 1, u64::from(MAX_FRAMES), "frames") {
+                    self.settings.frames = n as u32;
+                }
+            }
+            Global::Background => {
+                self.settings.background = self.rgb(value).unwrap_or(self.settings.background)
+            }
+            Global::Ambient => {
+                self.settings.ambient = self.rgb(value).unwrap_or(self.settings.ambient)
+            }
+            Global::View(key) => self.view_global(key, value),
+            Global::Camera(key) => self.camera_global(key, value),
+        }
+    }
+
+    /// `resolution = (width, height)`.
+    fn resolution(&mut self, value: &Value) {
+        let Some(v) = self.tuple_of_numbers(value, 2, "resolution = (width, height)") else {
+            return;
+        };
+        if v.contains(&0.0) {
+            self.report(
+                Diagnostic::new(
+                    Code::ZeroResolution,
+                    value.span(),
+                    "the resolution must be at least 1x1 pixel",
+                )
+                .with_help("for example `resolution = (800, 600);`"),
+            );
+        } else if let (Some(w), Some(h)) = (
+            self.integer_value(v[0], 1, MAX_RESOLUTION, value.span(), "width"),
+            self.integer_value(v[1], 1, MAX_RESOLUTION, value.span(), "height"),
+        ) {
+            if w * h > MAX_PIXELS {
+                self.error(
+                    Code::InvalidValue,
+                    value.span(),
+                    format!("{w}x{h} is more than {MAX_PIXELS} pixels"),
+                );
+                return;
+            }
+            // Both sides are from 1 to MAX_RESOLUTION, so this is `Some`.
+            if let Some(resolution) = Resolution::new(w as u32, h as u32) {
+                self.settings.resolution = resolution;
+            }
+        }
+    }
+}

@@ -1,0 +1,237 @@
+//! The `Lights` section: point lights and spherical area lights.
+
+use std::collections::HashMap;
+
+use super::Lowerer;
+use super::light_strength;
+use super::names::TargetSlot;
+use super::suggest::did_you_mean;
+use super::text::{and_list, quote};
+use crate::diagnostic::{Code, Diagnostic, Span};
+use crate::ir::Light;
+use crate::syntax::{Clause, Ident, Section, Statement, Value};
+
+/// Largest hyperbolic radius of an area light (a sphere of radius 20 is
+/// already e^20 times larger than its distance to anything inside).
+const MAX_LIGHT_RADIUS: f64 = 20.0;
+
+/// Most shadow rays per shading point for an area light.
+const MAX_LIGHT_SAMPLES: u32 = 4096;
+
+/// Shadow rays per shading point when an area light gives no `samples`.
+const DEFAULT_LIGHT_SAMPLES: u32 = 16;
+
+/// A light option.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum LightKey {
+    Radius,
+    Samples,
+    /// Handled by `light_strength.rs`.
+    IrradianceAt,
+}
+
+/// Every light option with what it means, in the order the help lists them.
+const OPTIONS: &[(&str, LightKey, &str)] = &[
+    (
+        "radius",
+        LightKey::Radius,
+        "hyperbolic, 0 for a point light",
+    ),
+    (
+        "samples",
+        LightKey::Samples,
+        "shadow rays per shading point",
+    ),
+    (
+        light_strength::KEY,
+        LightKey::IrradianceAt,
+        "the colours are the irradiance at this distance",
+    ),
+];
+
+/// The names of the light options, in the order of [`OPTIONS`].
+pub(crate) const LIGHT_OPTIONS: [&str; OPTIONS.len()] = {
+    let mut names = [""; OPTIONS.len()];
+    let mut i = 0;
+    while i < OPTIONS.len() {
+        names[i] = OPTIONS[i].0;
+        i += 1;
+    }
+    names
+};
+
+fn option(name: &str) -> Option<LightKey> {
+    OPTIONS
+        .iter()
+        .find(|(n, ..)| *n == name)
+        .map(|(_, k, _)| *k)
+}
+
+fn options_help() -> String {
+    let described: Vec<String> = OPTIONS
+        .iter()
+        .map(|(name, _, meaning)| format!("`{name}` ({meaning})"))
+        .collect();
+    format!("the options of a light are {}", and_list(&described))
+}
+
+impl Lowerer<'_> {
+    pub(super) fn lights_section(&mut self, section: &Section) {
+        for st in &section.statements {
+            let index = self.light_statement(st);
+            if let Some(label) = &st.label {
+                self.declare_target(label, TargetSlot::Light(index));
+            }
+        }
+    }
+
+    /// Lowers one light; returns its index, or `None` after reporting why not.
+    fn light_statement(&mut self, st: &Statement) -> Option<usize> {
+        const USAGE: &str = "write `%P, (diffuse r, g, b), (specular r, g, b);`, optionally followed by `radius = r, samples = n` for an area light";
+        let mut values: Vec<&Value> = Vec::new();
+        let mut options: Vec<(&Ident, &Value)> = Vec::new();
+        for clause in &st.clauses {
+            match clause {
+                Clause::Value(v) if options.is_empty() => values.push(v),
+                Clause::Assign { key, .. } if values.len() < 3 && option(&key.text).is_none() => {
+                    self.report(
+                        Diagnostic::new(
+                            Code::WrongType,
+                            clause.span(),
+                            "a light's point and colours are plain values, not `key = value`",
+                        )
+                        .with_help(USAGE),
+                    );
+                    return None;
+                }
+                Clause::Assign { key, value, .. } => options.push((key, value)),
+                bad => {
+                    let message = if matches!(bad, Clause::Value(_)) {
+                        "a light's options (`radius = r`, `samples = n`) must come after its point and colours"
+                    } else {
+                        "a light's parts are plain values and `key = value` options, not names"
+                    };
+                    self.report(
+                        Diagnostic::new(Code::WrongType, bad.span(), message).with_help(USAGE),
+                    );
+                    return None;
+                }
+            }
+        }
+        if values.len() != 3 {
+            self.wrong_arity(
+                st.span,
+                format!(
+                    "a light takes 3 values (a point and two colours), got {}",
+                    values.len()
+                ),
+                USAGE,
+            );
+            return None;
+        }
+        let position = self.point_arg(values[0], "a light");
+        let diffuse = self.rgb(values[1]);
+        let specular = self.rgb(values[2]);
+        let (options, strength) = self.take_irradiance_at(options);
+        let (radius, samples) = self.light_options(&options)?;
+        let (position, (diffuse, specular)) = (position?, strength.apply(diffuse?, specular?)?);
+        if !self.light_fits(st.span) {
+            return None;
+        }
+        self.lights.push((
+            Light {
+                position,
+                diffuse,
+                specular,
+                name: st.label.as_ref().map(|l| l.text.clone()),
+                radius,
+                samples,
+            },
+            st.span,
+        ));
+        Some(self.lights.len() - 1)
+    }
+
+    /// The area-light options `radius = r` and `samples = n`: a point light
+    /// (radius 0, one sample) when neither is given, 16 samples when only
+    /// the radius is.
+    fn light_options(&mut self, options: &[(&Ident, &Value)]) -> Option<(f64, u32)> {
+        let mut radius: Option<(f64, Span)> = None;
+        let mut samples: Option<(u32, Span)> = None;
+        let mut seen: HashMap<&str, Span> = HashMap::new();
+        let mut ok = true;
+        for (key, value) in options {
+            if seen.insert(key.text.as_str(), key.span).is_some() {
+                self.report(Diagnostic::new(
+                    Code::DuplicateKey,
+                    key.span,
+                    format!("{} is set twice; the last value wins", quote(&key.text)),
+                ));
+            }
+            match option(&key.text) {
+                Some(LightKey::Radius) => match self.number(value) {
+                    Some(r) if (0.0..=MAX_LIGHT_RADIUS).contains(&r) => {
+                        radius = Some((r, key.span))
+                    }
+                    Some(r) => {
+                        ok = false;
+                        self.report(
+                            Diagnostic::new(
+                                Code::InvalidValue,
+                                value.span(),
+                                format!(
+                                    "a light's radius must be from 0 to {MAX_LIGHT_RADIUS}, got {}",
+                                    hgeom::Compact(r)
+                                ),
+                            )
+                            .with_help("the radius is a hyperbolic length; 0 makes a point light"),
+                        );
+                    }
+                    None => ok = false,
+                },
+                Some(LightKey::Samples) => {
+                    match self.integer(value, 1, u64::from(MAX_LIGHT_SAMPLES), "samples") {
+                        Some(n) => samples = Some((n as u32, key.span)),
+                        None => ok = false,
+                    }
+                }
+                // `irradiance_at` was taken out before (`light_strength.rs`).
+                Some(LightKey::IrradianceAt) | None => {
+                    ok = false;
+                    self.report(
+                        Diagnostic::new(
+                            Code::UnknownKey,
+                            key.span,
+                            format!("unknown light option {}", quote(&key.text)),
+                        )
+                        .with_help(did_you_mean(
+                            &key.text,
+                            &LIGHT_OPTIONS,
+                            &options_help(),
+                        )),
+                    );
+                }
+            }
+        }
+        if !ok {
+            return None;
+        }
+        let r = radius.map_or(0.0, |(r, _)| r);
+        match samples {
+            Some((_, span)) if r == 0.0 => {
+                self.report(
+                    Diagnostic::new(
+                        Code::IneffectiveOption,
+                        span,
+                        "`samples` has no effect on a point light",
+                    )
+                    .with_help("add `radius = 0.05` (a hyperbolic radius) to make it an area light, or remove `samples`"),
+                );
+                Some((0.0, 1))
+            }
+            Some((n, _)) => Some((r, n)),
+            None if r > 0.0 => Some((r, DEFAULT_LIGHT_SAMPLES)),
+            None => Some((0.0, 1)),
+        }
+    }
+}

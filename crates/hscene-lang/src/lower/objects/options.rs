@@ -1,0 +1,304 @@
+//! The `key = value` options that end an object statement: `wireframe`,
+//! `edges` and `edge_material` (the edges of faceted objects as rods),
+//! `at` (where a figure built at the origin goes) and `smooth` (a mesh's
+//! crease angle); and placing the built shapes by them.
+
+use std::collections::HashMap;
+
+use hgeom::{ConvexPolygon, GeomError, Isometry, Point, Rod, Vertex};
+
+use crate::diagnostic::{Code, Diagnostic, Span};
+use crate::ir::{MaterialId, Object, Shape};
+use crate::lower::Lowerer;
+use crate::lower::moves::transform_shape;
+use crate::lower::suggest::closest;
+use crate::syntax::{Ident, Statement, Value};
+
+/// An object option.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum ObjectOption {
+    /// `wireframe = t`: edges only, as rods of radius `t`.
+    Wireframe,
+    /// `edges = t`: faces plus rods of radius `t`.
+    Edges,
+    /// `edge_material = #M`: the rods' material.
+    EdgeMaterial,
+    /// `at = %P`: the figure's centre, moved from the origin.
+    At,
+    /// `smooth = ANGLE`: a mesh's crease angle in degrees.
+    Smooth,
+}
+
+/// Every object option, in the order the help lists them.
+const OPTIONS: &[(&str, ObjectOption)] = &[
+    ("wireframe", ObjectOption::Wireframe),
+    ("edges", ObjectOption::Edges),
+    ("edge_material", ObjectOption::EdgeMaterial),
+    ("at", ObjectOption::At),
+    ("smooth", ObjectOption::Smooth),
+];
+
+/// The names of the object options, in the order of [`OPTIONS`].
+pub(crate) const OPTION_NAMES: [&str; OPTIONS.len()] = {
+    let mut names = [""; OPTIONS.len()];
+    let mut i = 0;
+    while i < OPTIONS.len() {
+        names[i] = OPTIONS[i].0;
+        i += 1;
+    }
+    names
+};
+
+fn option(name: &str) -> Option<ObjectOption> {
+    OPTIONS.iter().find(|(n, _)| *n == name).map(|(_, o)| *o)
+}
+
+/// The options of one statement, after checking.
+#[derive(Default)]
+pub(super) struct ObjectOptions {
+    wireframe: Option<(f64, Span)>,
+    edges: Option<(f64, Span)>,
+    edge_material: Option<MaterialId>,
+    at: Option<(Point, Span)>,
+    pub(super) smooth: Option<f64>,
+}
+
+impl ObjectOptions {
+    /// Whether the faces are drawn (not only the edges).
+    pub(super) fn faces(&self) -> bool {
+        self.wireframe.is_none()
+    }
+
+    /// Whether the edges are drawn.
+    pub(super) fn edges(&self) -> bool {
+        self.wireframe.or(self.edges).is_some()
+    }
+}
+
+impl Lowerer<'_> {
+    /// Checks the options of an object `name` that accepts `accepted`.
+    pub(super) fn object_options(
+        &mut self,
+        name: &Ident,
+        accepted: &[ObjectOption],
+        options: &[(&Ident, &Value)],
+    ) -> Option<ObjectOptions> {
+        let mut out = ObjectOptions::default();
+        let mut ok = true;
+        let mut seen: HashMap<&str, Span> = HashMap::new();
+        for (key, value) in options {
+            let Some(kind) = option(&key.text).filter(|o| accepted.contains(o)) else {
+                ok = false;
+                self.refused_option(name, accepted, key);
+                continue;
+            };
+            if seen.insert(key.text.as_str(), key.span).is_some() {
+                self.report(
+                    Diagnostic::new(
+                        Code::DuplicateKey,
+                        key.span,
+                        format!("`{}` is set twice; the last value wins", key.text),
+                    )
+                    .with_help("remove one of the two"),
+                );
+            }
+            match kind {
+                ObjectOption::Wireframe | ObjectOption::Edges => {
+                    let what = format!("the `{}` thickness", key.text);
+                    match self.positive(value, &what) {
+                        Some(t) if kind == ObjectOption::Wireframe => {
+                            out.wireframe = Some((t, key.span.to(value.span())))
+                        }
+                        Some(t) => out.edges = Some((t, key.span.to(value.span()))),
+                        None => ok = false,
+                    }
+                }
+                ObjectOption::EdgeMaterial => match self.material_arg(value) {
+                    Some(m) => out.edge_material = Some(m),
+                    None => ok = false,
+                },
+                ObjectOption::Smooth => match self.crease_angle(value) {
+                    Some(a) => out.smooth = Some(a),
+                    None => ok = false,
+                },
+                ObjectOption::At => match self.point_arg(value, "the centre (`at`)") {
+                    Some(p) => out.at = Some((p, value.span())),
+                    None => ok = false,
+                },
+            }
+        }
+        if let (Some((_, w)), Some((_, e))) = (out.wireframe, out.edges) {
+            let second = if w.start < e.start { e } else { w };
+            self.report(
+                Diagnostic::new(
+                    Code::ConflictingOptions,
+                    second,
+                    "`wireframe` and `edges` cannot both be given",
+                )
+                .with_help("`wireframe = t` draws only the edges; `edges = t` draws the faces and the edges: keep one"),
+            );
+            ok = false;
+        }
+        let drawn = out.wireframe.is_some() || out.edges.is_some();
+        let useless = options
+            .iter()
+            .find(|(k, _)| option(&k.text) == Some(ObjectOption::EdgeMaterial) && !drawn);
+        if let Some((key, _)) = useless {
+            self.report(
+                Diagnostic::new(
+                    Code::IneffectiveOption,
+                    key.span,
+                    "`edge_material` has no effect without `wireframe` or `edges`",
+                )
+                .with_help("add `edges = 0.01` (faces and edges) or `wireframe = 0.01` (edges only), or remove `edge_material`"),
+            );
+        }
+        ok.then_some(out)
+    }
+
+    /// An option that `name` does not take, or that does not exist.
+    fn refused_option(&mut self, name: &Ident, accepted: &[ObjectOption], key: &Ident) {
+        let mut d = if option(&key.text).is_some() {
+            Diagnostic::new(
+                Code::UnknownKey,
+                key.span,
+                format!("`{}` has no option `{}`", name.text, key.text),
+            )
+        } else {
+            Diagnostic::new(
+                Code::UnknownKey,
+                key.span,
+                format!("unknown object option `{}`", key.text),
+            )
+        };
+        let accepted: Vec<&str> = OPTIONS
+            .iter()
+            .filter(|(_, o)| accepted.contains(o))
+            .map(|(n, _)| *n)
+            .collect();
+        d = match (accepted.is_empty(), closest(&key.text, &accepted)) {
+            (true, _) => d.with_help(format!("`{}` takes no options", name.text)),
+            (false, Some(s)) if s != key.text => d.with_help(format!(
+                "did you mean `{s}`? The options of `{}` are {}",
+                name.text,
+                accepted.join(", ")
+            )),
+            (false, _) => d.with_help(format!(
+                "the options of `{}` are {}",
+                name.text,
+                accepted.join(", ")
+            )),
+        };
+        self.report(d);
+    }
+
+    /// Applies `at`, draws the edges, pushes the IR objects and returns
+    /// their indices.
+    pub(super) fn place(
+        &mut self,
+        mut shapes: Vec<Shape>,
+        material: MaterialId,
+        opts: ObjectOptions,
+        st: &Statement,
+    ) -> Vec<usize> {
+        let name = st.label.as_ref().map(|l| l.text.clone());
+        let mut placement = Isometry::IDENTITY;
+        if let Some((centre, span)) = opts.at {
+            let iso = Isometry::transvection_from_origin(centre);
+            placement = iso;
+            let mut moved = Vec::with_capacity(shapes.len());
+            for s in &shapes {
+                match transform_shape(s, &iso) {
+                    Some(m) => moved.push(m),
+                    None => {
+                        self.report(
+                            Diagnostic::new(
+                                Code::NumericFailure,
+                                span,
+                                "moving the figure here puts part of it so close to the absolute that f64 cannot represent it",
+                            )
+                            .with_help("f64 holds ball points out to about distance 37 from the origin; choose a centre nearer the origin or a smaller figure"),
+                        );
+                        return Vec::new();
+                    }
+                }
+            }
+            shapes = moved;
+        }
+        let thickness = opts.wireframe.or(opts.edges);
+        let rods = match thickness {
+            Some((t, span)) => match wireframe(&shapes, t) {
+                Ok(rods) => Some(rods),
+                Err(e) => {
+                    self.geom_failure(span, "the edges", &e);
+                    return Vec::new();
+                }
+            },
+            None => None,
+        };
+        let mut out = Vec::new();
+        if opts.wireframe.is_none() {
+            for shape in shapes {
+                out.push(self.objects.len());
+                let placement = match shape.natural_placement() {
+                    Some(own) if opts.at.is_none() => own,
+                    _ => placement,
+                };
+                self.objects.push((
+                    Object {
+                        shape,
+                        material,
+                        name: name.clone(),
+                        placement,
+                    },
+                    st.span,
+                ));
+            }
+        }
+        if let Some(rods) = rods {
+            out.push(self.objects.len());
+            self.objects.push((
+                Object {
+                    shape: Shape::Wireframe(rods),
+                    material: opts.edge_material.unwrap_or(material),
+                    name,
+                    placement,
+                },
+                st.span,
+            ));
+        }
+        out
+    }
+}
+
+/// The rods along every edge of the faces, each edge once.
+///
+/// Faces of one polyhedron (and neighbouring cells of a tessellation) share
+/// edges whose end points agree only to rounding, so ends are matched on a
+/// grid of 1e-9 in ball coordinates: much finer than any two distinct
+/// vertices of a scene, much coarser than rounding.
+fn wireframe(shapes: &[Shape], radius: f64) -> Result<Vec<Rod>, GeomError> {
+    type Key = [i64; 3];
+    let key = |v: &Vertex| -> Key {
+        let c = v.coords() * 1e9;
+        [c.x.round() as i64, c.y.round() as i64, c.z.round() as i64]
+    };
+    let mut seen: std::collections::HashSet<(Key, Key)> = std::collections::HashSet::new();
+    let mut rods = Vec::new();
+    let mut add_polygon = |p: &ConvexPolygon, rods: &mut Vec<Rod>| -> Result<(), GeomError> {
+        let vs = p.vertices();
+        for (i, a) in vs.iter().enumerate() {
+            let b = &vs[(i + 1) % vs.len()];
+            let (ka, kb) = (key(a), key(b));
+            let k = if ka <= kb { (ka, kb) } else { (kb, ka) };
+            if seen.insert(k) {
+                rods.push(Rod::new(*a, *b, radius)?);
+            }
+        }
+        Ok(())
+    };
+    for face in shapes.iter().flat_map(Shape::faces) {
+        add_polygon(face, &mut rods)?;
+    }
+    Ok(rods)
+}

@@ -1,0 +1,118 @@
+//! The `Points` section, and points written as literals anywhere:
+//! `(x, y, z)` is an h-point inside the ball or an ideal point on the
+//! absolute.
+
+use hgeom::glam::DVec3;
+use hgeom::{IdealPoint, Point, Vertex};
+
+use super::Lowerer;
+use crate::diagnostic::{Code, Diagnostic, Span};
+use crate::syntax::{BrokenStatement, Clause, Section, Value};
+
+/// How close to the absolute a typed point may come before its decimal
+/// rounding alone moves it by more than about 1e-6 in hyperbolic distance.
+const NEAR_ABSOLUTE_GAP: f64 = 1e-10;
+
+/// How far from the unit sphere a typed point may be and still count as ideal.
+const IDEAL_TOLERANCE: f64 = 1e-12;
+
+/// A declared point: its name as written (also when another point took the
+/// name first) and its position, `None` if it was refused.
+pub(super) struct DeclaredPoint {
+    pub(super) name: Option<String>,
+    pub(super) position: Option<Vertex>,
+}
+
+impl Lowerer<'_> {
+    pub(super) fn points_section(&mut self, section: &Section) {
+        let mut broken = section.broken.iter().peekable();
+        for st in &section.statements {
+            while let Some(b) = broken.next_if(|b| b.span.start < st.span.start) {
+                self.broken_point(b);
+            }
+            let (name, value) = match (st.label.as_ref(), st.clauses.as_slice()) {
+                (label, [Clause::Value(v)]) => (label.cloned(), v),
+                (None, [Clause::Assign { key, value, .. }]) => (Some(key.clone()), value),
+                _ => {
+                    self.report(
+                        Diagnostic::new(
+                            Code::WrongType,
+                            st.span,
+                            "a point is written `(x, y, z);` or `name = (x, y, z);`",
+                        )
+                        .with_label("not a point declaration"),
+                    );
+                    // Keep numbering aligned with what the user counted.
+                    let point = DeclaredPoint {
+                        name: None,
+                        position: None,
+                    };
+                    self.points.push(point, st.span, true);
+                    continue;
+                }
+            };
+            let position = self
+                .point_literal(value)
+                .and_then(|(v, span)| self.classify_point(v, span));
+            let point = DeclaredPoint {
+                name: name.as_ref().map(|n| n.text.clone()),
+                position,
+            };
+            let index = self.points.push(point, st.span, false);
+            if let Some(name) = &name {
+                let declared = self.points.declare(name, index);
+                self.report_refused(declared);
+            }
+        }
+        for b in broken {
+            self.broken_point(b);
+        }
+    }
+
+    /// A point statement that did not parse (already reported) still takes
+    /// its number and name, so later references do not cascade into errors.
+    fn broken_point(&mut self, b: &BrokenStatement) {
+        let name = b.name.as_ref().map(|n| n.text.clone());
+        let point = DeclaredPoint {
+            name: name.clone(),
+            position: None,
+        };
+        let index = self.points.push(point, b.span, true);
+        if let Some(n) = &name {
+            self.points.bind(n, index);
+        }
+    }
+
+    /// The coordinates of a point literal `(x, y, z)`, and where it is.
+    pub(super) fn point_literal(&mut self, value: &Value) -> Option<(DVec3, Span)> {
+        let v = self.tuple_of_numbers(value, 3, "a point `(x, y, z)`")?;
+        Some((DVec3::new(v[0], v[1], v[2]), value.span()))
+    }
+
+    /// Typed coordinates as an ideal point (on the unit sphere) or an
+    /// h-point (inside it); outside the ball is an error.
+    pub(super) fn classify_point(&mut self, v: DVec3, span: Span) -> Option<Vertex> {
+        let norm = v.length();
+        // Ideal first: a point typed on the unit sphere whose f64 norm happens
+        // to round just below 1 must not become a far interior point.
+        if let Ok(ideal) = IdealPoint::new(v, IDEAL_TOLERANCE) {
+            return Some(Vertex::Ideal(ideal));
+        }
+        if let Ok(p) = Point::from_coords(v) {
+            if p.gap() < NEAR_ABSOLUTE_GAP {
+                // gap = 1 - |x|^2 = (1 - |x|)(1 + |x|), about twice 1 - |x| here.
+                self.report(
+                    Diagnostic::new(Code::PointNearAbsolute, span, format!("this point is within {:.1e} of the absolute; decimal rounding alone moves it noticeably", 0.5 * p.gap()))
+                        .with_help("positions this close to the absolute are not reproducible in f64; move it inward or place it with transformations"),
+                );
+            }
+            return Some(Vertex::Interior(p));
+        }
+        self.report(
+            Diagnostic::new(Code::PointOutsideAbsolute, span, format!("point lies outside the absolute: |x| = {norm}"))
+                .with_label("outside the unit ball")
+                .with_help("h-points need |x| < 1 (ideal points |x| = 1); scale the coordinates into the unit ball"),
+        );
+        None
+    }
+}

@@ -1,0 +1,370 @@
+//! The `Transformations` section: h-lines and h-planes declared for later
+//! statements, and the moves of points (`%P->Rotate(L, angle);`,
+//! `Translate`, `Reflect`), applied in statement order. Moves of named
+//! objects, lights and the camera are built here and applied later
+//! (`moves.rs`).
+
+use hgeom::{HPlane, Isometry, Segment, Vertex};
+
+use super::Lowerer;
+use super::moves::PendingMove;
+use super::suggest::did_you_mean;
+use super::text::{and_list, quote, reference_text};
+use crate::diagnostic::{Code, Diagnostic, Span};
+use crate::syntax::{Clause, Ident, RefSigil, Reference, Section, Value};
+
+/// What a transformation keyword does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Transformation {
+    /// `hline (%A, %B);` declares an h-line.
+    Line,
+    /// `hplane (%A, %B, %C);` declares an h-plane.
+    Plane,
+    Rotate,
+    Translate,
+    Reflect,
+}
+
+/// Every transformation keyword, in the order the help lists them.
+const KEYWORDS: &[(&str, Transformation)] = &[
+    ("hline", Transformation::Line),
+    ("hplane", Transformation::Plane),
+    ("Rotate", Transformation::Rotate),
+    ("Translate", Transformation::Translate),
+    ("Reflect", Transformation::Reflect),
+];
+
+/// The transformation keywords, in the order of [`KEYWORDS`].
+pub(crate) const TRANSFORMATIONS: [&str; KEYWORDS.len()] = {
+    let mut names = [""; KEYWORDS.len()];
+    let mut i = 0;
+    while i < KEYWORDS.len() {
+        names[i] = KEYWORDS[i].0;
+        i += 1;
+    }
+    names
+};
+
+fn keyword(name: &str) -> Option<Transformation> {
+    KEYWORDS.iter().find(|(n, _)| *n == name).map(|(_, t)| *t)
+}
+
+/// The translation along `line` by `fraction` of its length: the whole
+/// translation (first point to second) at 1, the identity at 0.
+fn partial_translation(line: &Segment, fraction: f64) -> Result<Isometry, hgeom::GeomError> {
+    if fraction == 1.0 {
+        return Isometry::translation(line);
+    }
+    if fraction == 0.0 {
+        return Ok(Isometry::IDENTITY);
+    }
+    let (a, b) = (line.start(), line.end());
+    let geodesic = hgeom::HLine::through(&Vertex::Interior(a), &Vertex::Interior(b))?;
+    let from = geodesic.foot_parameter(&a);
+    let to = geodesic.foot_parameter(&b);
+    let end = geodesic.point_at(from + fraction * (to - from))?;
+    Isometry::translation(&Segment::new(a, end)?)
+}
+
+impl Lowerer<'_> {
+    pub(super) fn transformations_section(&mut self, section: &Section) {
+        for st in &section.statements {
+            let (first, animate) = match st.clauses.as_slice() {
+                [first] => (Some(first), None),
+                [
+                    first,
+                    Clause::Apply {
+                        target: None,
+                        name,
+                        arg: None,
+                        ..
+                    },
+                ] if name.text == "animate" => (Some(first), Some(name.span)),
+                _ => (None, None),
+            };
+            let Some(Clause::Apply {
+                target,
+                name,
+                arg,
+                span,
+            }) = first
+            else {
+                self.report(
+                    Diagnostic::new(Code::WrongType, st.span, "expected a transformation statement")
+                        .with_help("write `hline (%A, %B);`, `hplane (%A, %B, %C);`, `%P->Rotate(L, angle);`, `%P->Translate(L);` or `%P->Reflect(S);`; a rotation or translation may end in `, animate`"),
+                );
+                continue;
+            };
+            let kind = keyword(&name.text);
+            let is_move = matches!(
+                kind,
+                Some(Transformation::Rotate | Transformation::Translate | Transformation::Reflect)
+            );
+            if let Some(at) = animate
+                && !is_move
+            {
+                self.report(
+                    Diagnostic::new(
+                        Code::NotAnimatable,
+                        at,
+                        format!("`{}` cannot be animated", name.text),
+                    )
+                    .with_help(
+                        "only the transformations `Rotate` and `Translate` can end in `, animate`",
+                    ),
+                );
+            }
+            match (target, kind) {
+                (None, Some(Transformation::Line)) => {
+                    self.declare_line(st.label.as_ref(), name, arg.as_ref(), *span)
+                }
+                (None, Some(Transformation::Plane)) => {
+                    self.declare_plane(st.label.as_ref(), name, arg.as_ref(), *span)
+                }
+                (Some(target), Some(kind)) if is_move => match target.sigil {
+                    RefSigil::At => {
+                        let iso = self.transformation(kind, name, arg.as_ref(), *span, animate);
+                        self.moves.push(PendingMove {
+                            target: target.clone(),
+                            iso,
+                        });
+                    }
+                    RefSigil::Hash => {
+                        self.report(
+                            Diagnostic::new(
+                                Code::WrongType,
+                                target.span,
+                                format!("a material (`{}`) cannot be transformed", reference_text(target)),
+                            )
+                            .with_help("transformations act on points (`%P`), named objects and lights (`@name`) and the camera (`@camera`)"),
+                        );
+                        let _ = self.transformation(kind, name, arg.as_ref(), *span, animate);
+                    }
+                    RefSigil::Percent => {
+                        if let Some(iso) =
+                            self.transformation(kind, name, arg.as_ref(), *span, animate)
+                        {
+                            self.move_point(target, &iso);
+                        } else {
+                            // Still mark the target as used so errors don't cascade into lints.
+                            let _ = self.resolve_point(target);
+                        }
+                    }
+                },
+                (None, Some(_)) => self.report(
+                    Diagnostic::new(
+                        Code::WrongType,
+                        name.span,
+                        format!("`{}` needs a point to act on", name.text),
+                    )
+                    .with_help(format!("write `%P->{}(...)`", name.text)),
+                ),
+                (Some(_), _) | (None, None) => self.report(
+                    Diagnostic::new(
+                        Code::UnknownTransformation,
+                        name.span,
+                        format!("unknown transformation {}", quote(&name.text)),
+                    )
+                    .with_help(did_you_mean(
+                        &name.text,
+                        &TRANSFORMATIONS,
+                        &format!("transformations are {}", and_list(&TRANSFORMATIONS)),
+                    )),
+                ),
+            }
+        }
+    }
+
+    fn declare_line(
+        &mut self,
+        label: Option<&Ident>,
+        name: &Ident,
+        arg: Option<&Value>,
+        span: Span,
+    ) {
+        let segment = match arg {
+            Some(Value::Tuple { items, .. }) if items.len() == 2 => {
+                let a = self.point_arg(&items[0], "an h-line end");
+                let b = self.point_arg(&items[1], "an h-line end");
+                match (a, b) {
+                    (Some(a), Some(b)) => match Segment::new(a, b) {
+                        Ok(s) => Some(s),
+                        Err(_) => {
+                            self.report(
+                                Diagnostic::new(
+                                    Code::DegenerateLine,
+                                    span,
+                                    "the two points of this h-line coincide",
+                                )
+                                .with_help("an h-line needs two distinct points"),
+                            );
+                            None
+                        }
+                    },
+                    _ => None,
+                }
+            }
+            _ => {
+                self.wrong_arity(
+                    span,
+                    format!("`{}` takes two points", name.text),
+                    "write `hline (%A, %B);`",
+                );
+                None
+            }
+        };
+        let index = self.lines.push(segment, span, false);
+        if let Some(label) = label {
+            let declared = self.lines.declare(label, index);
+            self.report_refused(declared);
+        }
+    }
+
+    fn declare_plane(
+        &mut self,
+        label: Option<&Ident>,
+        name: &Ident,
+        arg: Option<&Value>,
+        span: Span,
+    ) {
+        let plane = match arg {
+            Some(Value::Tuple { items, .. }) if items.len() == 3 => {
+                let vs: Vec<Option<Vertex>> = items.iter().map(|v| self.vertex_arg(v)).collect();
+                match (vs[0], vs[1], vs[2]) {
+                    (Some(a), Some(b), Some(c)) => match HPlane::through(&a, &b, &c) {
+                        Ok(p) => Some(p),
+                        Err(_) => {
+                            self.report(
+                                Diagnostic::new(
+                                    Code::DegeneratePlane,
+                                    items[0].span().to(items[2].span()),
+                                    "these three points lie on one h-line, so they do not fix an h-plane",
+                                )
+                                .with_help("choose three points that are not on one h-line (and all distinct)"),
+                            );
+                            None
+                        }
+                    },
+                    _ => None,
+                }
+            }
+            _ => {
+                self.wrong_arity(
+                    span,
+                    format!("`{}` takes three points", name.text),
+                    "write `hplane (%A, %B, %C);`",
+                );
+                None
+            }
+        };
+        let index = self.planes.push(plane, span, false);
+        if let Some(label) = label {
+            let declared = self.planes.declare(label, index);
+            self.report_refused(declared);
+        }
+    }
+
+    /// The isometry of a `Rotate`, `Translate` or `Reflect` statement. With
+    /// `animate` (the span of the `animate` clause), only the fraction of it
+    /// that belongs to this frame: the angle, or the distance along the
+    /// line, times the frame's time in `0..=1`.
+    fn transformation(
+        &mut self,
+        kind: Transformation,
+        name: &Ident,
+        arg: Option<&Value>,
+        span: Span,
+        animate: Option<Span>,
+    ) -> Option<Isometry> {
+        let items: Vec<&Value> = match arg {
+            Some(Value::Tuple { items, .. }) => items.iter().collect(),
+            Some(v) => vec![v],
+            None => Vec::new(),
+        };
+        let fraction = match animate {
+            Some(at) => {
+                self.animations.push(at);
+                self.time
+            }
+            None => 1.0,
+        };
+        match (kind, items.as_slice()) {
+            (Transformation::Rotate, [line, angle]) => {
+                let line = self.resolve_line(line);
+                let angle = self.number(angle);
+                Some(Isometry::rotation_about_segment_unchecked(
+                    &line?,
+                    fraction * angle?,
+                ))
+            }
+            (Transformation::Translate, [line]) => {
+                let line = self.resolve_line(line)?;
+                match partial_translation(&line, fraction) {
+                    Ok(t) => Some(t),
+                    Err(e) => {
+                        self.error(
+                            Code::NumericFailure,
+                            span,
+                            format!("cannot build this translation: {e}"),
+                        );
+                        None
+                    }
+                }
+            }
+            (Transformation::Reflect, [plane]) => {
+                if let Some(at) = animate {
+                    self.report(
+                        Diagnostic::new(Code::NotAnimatable, at, "a reflection cannot be animated")
+                            .with_help("a reflection has no halfway state; animate a rotation or translation instead, or remove `, animate`"),
+                    );
+                }
+                Some(Isometry::reflection(&self.resolve_plane(plane)?))
+            }
+            (kind, _) => {
+                let usage = match kind {
+                    Transformation::Rotate => {
+                        "`%P->Rotate(L, angle);` (L: an h-line number, angle in radians)"
+                    }
+                    Transformation::Translate => {
+                        "`%P->Translate(L);` (along h-line L, from its first point to its second)"
+                    }
+                    _ => "`%P->Reflect(S);` (S: an h-plane number)",
+                };
+                self.wrong_arity(
+                    span,
+                    format!("wrong number of arguments to `{}`", name.text),
+                    format!("write {usage}"),
+                );
+                None
+            }
+        }
+    }
+
+    fn move_point(&mut self, target: &Reference, iso: &Isometry) {
+        let Some(i) = self.resolve_point(target) else {
+            return;
+        };
+        let moved = match self.points[i].position {
+            Some(Vertex::Interior(q)) => match iso.checked_apply(&q) {
+                Ok(p) => Some(Vertex::Interior(p)),
+                Err(_) => {
+                    self.report(
+                        Diagnostic::new(
+                            Code::NumericFailure,
+                            target.span,
+                            format!(
+                                "this moves `{}` so close to the absolute that f64 cannot represent it",
+                                reference_text(target)
+                            ),
+                        )
+                        .with_help("f64 holds ball points out to about distance 37 from the origin; move it less far"),
+                    );
+                    None
+                }
+            },
+            Some(Vertex::Ideal(q)) => Some(Vertex::Ideal(iso.apply_ideal(&q))),
+            None => None,
+        };
+        self.points[i].position = moved;
+    }
+}
