@@ -30,11 +30,6 @@
 //! | `serde_impls` | the `serde` feature's exact, validating forms |
 //! | `fermi` | [`fermi_coordinates`] about the origin and their inverse (solid textures) |
 
-// `!(x > 0.0)` is deliberate throughout: it sends NaN down the failure path,
-// which `x <= 0.0` would not.
-#![allow(clippy::neg_cmp_op_on_partial_ord)]
-#![warn(missing_docs)]
-
 pub mod accurate;
 mod compact;
 mod cylinder;
