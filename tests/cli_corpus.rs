@@ -88,7 +88,13 @@ fn every_subcommand_prints_its_help() {
         );
     }
     for command in &commands {
-        let out = run([command.as_str(), "--help"]);
+        // clap's own `help` takes the command to describe, not `--help`.
+        let args = if command == "help" {
+            vec!["help"]
+        } else {
+            vec![command.as_str(), "--help"]
+        };
+        let out = run(args);
         assert!(out.status.success(), "{command} --help: {out:?}");
         let help = String::from_utf8(out.stdout).unwrap();
         assert!(help.contains("Usage: hscene"), "{command}: {help}");
