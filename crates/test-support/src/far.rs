@@ -113,8 +113,8 @@ pub fn warnings(source: &str) -> Vec<(usize, String)> {
         .collect()
 }
 
-/// Renders a scene source; `None` with the diagnostics when it does not
-/// compile. Returns the image and the numeric failures.
+/// Renders a scene source: the image and the numeric failures counted, or
+/// the error messages joined when it does not compile or render.
 pub fn render_source(source: &str) -> Result<(Image, u64), String> {
     let compiled = hscene_lang::compile(source);
     let Some(scene) = compiled.scene else {
