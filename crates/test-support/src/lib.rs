@@ -10,8 +10,8 @@
 //!
 //! hgeom's own tests use this crate while it depends on hgeom: cargo allows
 //! that cycle for a dev-dependency, and integration tests link the one hgeom
-//! both sides see. Unit tests inside hgeom cannot use it (theirs is a
-//! different build of hgeom).
+//! both sides see. Unit tests inside hgeom see a second build of hgeom, so
+//! only what is made of glam types ([`SplitMix64`]) fits them.
 
 pub mod accuracy;
 #[cfg(feature = "render")]
