@@ -6,7 +6,7 @@
 
 use std::hint::black_box;
 
-use criterion::{Criterion, criterion_group, criterion_main};
+use criterion::{Criterion, criterion_main};
 use hgeom::glam::DVec3;
 use hgeom::{
     ConvexPolygon, HCylinder, HLine, HPlane, HSphere, Horosphere, IdealPoint, Isometry, Platonic,
@@ -184,5 +184,9 @@ fn appendix_render(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, kernels, mesh, appendix_render);
-criterion_main!(benches);
+// `criterion_group!` declares an undocumented `pub fn`; in a private module
+// it is no public item for `missing_docs` to flag.
+mod group {
+    criterion::criterion_group!(benches, super::kernels, super::mesh, super::appendix_render);
+}
+criterion_main!(group::benches);

@@ -16,9 +16,6 @@
 //! the max and median hyperbolic distance between the renderer's primary hit
 //! points and a 320-bit recomputation, on a 48x48 grid of pixels.
 
-#[path = "../crates/hgeom/tests/support/reference.rs"]
-mod reference;
-
 use std::fmt::Write as _;
 use std::process::{Command, ExitCode};
 use std::time::Instant;
@@ -27,7 +24,7 @@ use hgeom::glam::DVec3;
 use hgeom::{HSphere, Point, Ray};
 use hrender::{CanonicalCamera, Nearest, PixelNet, PreparedScene, RenderOptions, Sample};
 use hscene_lang::ir::{Net, Resolution, Scene, Shape};
-use reference::{self as r, R, V4};
+use hscene_test_support::reference::{self as r, R, V4};
 
 /// One benchmark scene.
 struct Case {

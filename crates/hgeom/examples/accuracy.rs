@@ -10,12 +10,9 @@
 //! array of objects with the keys `operation`, `cases`, `max_error`,
 //! `median_error`, `unit` and `ns_per_op`.
 
-#[path = "../tests/support/cases.rs"]
-mod cases;
-#[path = "../tests/support/reference.rs"]
-mod reference;
-
 use std::process::ExitCode;
+
+use hscene_test_support::accuracy as cases;
 
 struct Args {
     json: bool,

@@ -45,11 +45,6 @@
 //! it implements the shared traits for every surface, so nothing but the
 //! crate root refers to it.
 
-// `!(x > 0.0)` is deliberate throughout: it sends NaN down the failure path,
-// which `x <= 0.0` would not.
-#![allow(clippy::neg_cmp_op_on_partial_ord)]
-#![warn(missing_docs)]
-
 pub mod accurate;
 mod bound;
 mod compact;

@@ -11,9 +11,6 @@
 //! derivation (far transformed polygons and planes, spacelike vectors read
 //! as points); they were fixed and are kept as regressions.
 
-#[path = "support/reference.rs"]
-mod reference;
-
 use std::f64::consts::{PI, TAU};
 
 use glam::{DMat3, DVec3, DVec4};
@@ -22,7 +19,8 @@ use hgeom::{
     ConvexPolygon, HCylinder, HLine, HPlane, HSphere, Horosphere, IdealPoint, Isometry, Point, Ray,
     Segment, Vertex, lorentz, mobius,
 };
-use reference::R;
+use hscene_test_support::SplitMix64;
+use hscene_test_support::reference::{self, R};
 
 const EPS: f64 = f64::EPSILON;
 
@@ -30,32 +28,18 @@ const EPS: f64 = f64::EPSILON;
 // Helpers
 // ---------------------------------------------------------------------------
 
-/// SplitMix64, as in the other test files.
-struct Rng(u64);
+/// Points the 320-bit reference reads exactly.
+trait ExactPoints {
+    /// A point at hyperbolic distance in `[lo, hi)` from the origin, with
+    /// its gap recomputed from the (rounded) coordinates, so that the point
+    /// is exactly what its coordinates say (the reference reads coordinates).
+    fn point(&mut self, lo: f64, hi: f64) -> Point;
+}
 
-impl Rng {
-    fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * ((self.next_u64() >> 11) as f64 / (1u64 << 53) as f64)
-    }
-    fn dir(&mut self) -> DVec3 {
-        let z = self.uniform(-1.0, 1.0);
-        let phi = self.uniform(0.0, TAU);
-        let s = (1.0 - z * z).sqrt();
-        DVec3::new(s * phi.cos(), s * phi.sin(), z)
-    }
-    /// A point at hyperbolic distance in `[lo, hi)` from the origin, with its
-    /// gap recomputed from the (rounded) coordinates, so that the point is
-    /// exactly what its coordinates say (the reference reads coordinates).
+impl ExactPoints for SplitMix64 {
     fn point(&mut self, lo: f64, hi: f64) -> Point {
-        let d = self.uniform(lo, hi);
-        let p = Point::at_distance_from_origin(self.dir(), d).unwrap();
+        let d = self.range(lo, hi);
+        let p = Point::at_distance_from_origin(self.direction(), d).unwrap();
         Point::from_coords(p.coords()).unwrap()
     }
 }
@@ -137,11 +121,11 @@ fn compensated_gap_against_naive() {
     let exact = (1.0 - x) * (1.0 + x);
     assert!(((one_minus_norm_sq(v) - exact) / exact).abs() < 2.0 * EPS);
     // Off-axis, where no factorisation helps, against 320 bits.
-    let mut rng = Rng(41);
+    let mut rng = SplitMix64::new(41);
     let (mut worst, mut naive_worst) = (0.0f64, 0.0f64);
     for _ in 0..500 {
-        let g = 10f64.powf(rng.uniform(-15.5, 0.0));
-        let c = rng.dir() * (1.0 - g);
+        let g = 10f64.powf(rng.range(-15.5, 0.0));
+        let c = rng.direction() * (1.0 - g);
         if c.length_squared() >= 1.0 {
             continue;
         }
@@ -159,7 +143,7 @@ fn compensated_gap_against_naive() {
 /// `2/(1 + x0)` on the sheet.
 #[test]
 fn ball_and_hyperboloid_maps_are_inverse() {
-    let mut rng = Rng(1);
+    let mut rng = SplitMix64::new(1);
     for _ in 0..200 {
         let p = rng.point(0.0, 15.0);
         let x = p.to_hyperboloid();
@@ -174,11 +158,11 @@ fn ball_and_hyperboloid_maps_are_inverse() {
 /// `distance_from_origin`'s contract: relative error below 1e-14.
 #[test]
 fn distance_from_origin_matches_the_reference() {
-    let mut rng = Rng(2);
+    let mut rng = SplitMix64::new(2);
     let mut errs = Vec::new();
     for _ in 0..400 {
-        let g = 10f64.powf(rng.uniform(-15.0, 0.0));
-        let c = rng.dir() * (1.0 - g);
+        let g = 10f64.powf(rng.range(-15.0, 0.0));
+        let c = rng.direction() * (1.0 - g);
         let Ok(p) = Point::from_coords(c) else {
             continue;
         };
@@ -196,11 +180,11 @@ fn distance_from_origin_matches_the_reference() {
 /// few ulps, out to the edge of f64.
 #[test]
 fn at_distance_from_origin_matches_the_reference() {
-    let mut rng = Rng(3);
+    let mut rng = SplitMix64::new(3);
     let (mut er, mut eg, mut ed) = (0.0f64, 0.0f64, 0.0f64);
     for _ in 0..400 {
-        let d = rng.uniform(0.0, 37.0);
-        let p = Point::at_distance_from_origin(rng.dir(), d).unwrap();
+        let d = rng.range(0.0, 37.0);
+        let p = Point::at_distance_from_origin(rng.direction(), d).unwrap();
         let half = R::f(0.5 * d);
         let (sh, ch) = (half.sinh(), half.cosh());
         er = er.max(rel(p.coords().length(), &(sh / ch.clone())));
@@ -238,10 +222,10 @@ fn acosh_form_fails_for_tiny_distances_and_asinh_does_not() {
 /// In the plane of `u` and `v`, Möbius addition is `(u+v)/(1 + conj(u) v)`.
 #[test]
 fn mobius_addition_is_the_complex_formula_in_a_plane() {
-    let mut rng = Rng(4);
+    let mut rng = SplitMix64::new(4);
     for _ in 0..200 {
-        let (a, b) = (rng.uniform(0.0, TAU), rng.uniform(0.0, TAU));
-        let (ru, rv) = (rng.uniform(0.0, 0.95), rng.uniform(0.0, 0.95));
+        let (a, b) = (rng.range(0.0, TAU), rng.range(0.0, TAU));
+        let (ru, rv) = (rng.range(0.0, 0.95), rng.range(0.0, 0.95));
         let (u, v) = ((ru * a.cos(), ru * a.sin()), (rv * b.cos(), rv * b.sin()));
         // (u + v) / (1 + conj(u) v), complex arithmetic by hand.
         let num = (u.0 + v.0, u.1 + v.1);
@@ -268,7 +252,7 @@ fn mobius_addition_is_the_complex_formula_in_a_plane() {
 /// unit of that), the position within `10 eps (1/gap_u + 1/gap_v + 1/gap_sum)`.
 #[test]
 fn mobius_addition_matches_the_reference() {
-    let mut rng = Rng(5);
+    let mut rng = SplitMix64::new(5);
     let (mut worst_gap, mut worst_ratio) = (0.0f64, 0.0f64);
     for k in 0..400 {
         let u = rng.point(0.0, 12.0);
@@ -277,7 +261,7 @@ fn mobius_addition_matches_the_reference() {
             rng.point(0.0, 12.0)
         } else {
             let back = Point::from_coords(-u.coords()).unwrap();
-            Point::from_coords(step(&back, rng.dir(), rng.uniform(1e-6, 1.0)).coords()).unwrap()
+            Point::from_coords(step(&back, rng.direction(), rng.range(1e-6, 1.0)).coords()).unwrap()
         };
         let s = mobius::add(&u, &v);
         let exact = mobius_r(&r3(u.coords()), &r3(v.coords()));
@@ -302,20 +286,12 @@ fn mobius_addition_matches_the_reference() {
 /// `(1 + u conj(v)) / (1 + conj(u) v)`, and it is `-(u(+)v) (+) (u (+) (v (+) w))`.
 #[test]
 fn gyration_is_the_complex_rotation() {
-    let mut rng = Rng(6);
+    let mut rng = SplitMix64::new(6);
     for _ in 0..200 {
-        let u = Point::from_coords(DVec3::new(
-            rng.uniform(-0.6, 0.6),
-            rng.uniform(-0.6, 0.6),
-            0.0,
-        ))
-        .unwrap();
-        let v = Point::from_coords(DVec3::new(
-            rng.uniform(-0.6, 0.6),
-            rng.uniform(-0.6, 0.6),
-            0.0,
-        ))
-        .unwrap();
+        let u = Point::from_coords(DVec3::new(rng.range(-0.6, 0.6), rng.range(-0.6, 0.6), 0.0))
+            .unwrap();
+        let v = Point::from_coords(DVec3::new(rng.range(-0.6, 0.6), rng.range(-0.6, 0.6), 0.0))
+            .unwrap();
         let g = mobius::gyration(u.coords(), u.gap(), v.coords(), v.gap());
         let (uc, vc) = (u.coords(), v.coords());
         // z = 1 + conj(u) v; gyr = conj(z) / z.
@@ -344,11 +320,11 @@ fn gyration_is_the_complex_rotation() {
 /// `10 eps (1/gap_a + 1/gap_x + 1/gap_image)` of the exact `a (+) Qx`.
 #[test]
 fn isometry_apply_matches_the_reference() {
-    let mut rng = Rng(7);
+    let mut rng = SplitMix64::new(7);
     let mut worst: f64 = 0.0;
     for _ in 0..300 {
         let a = rng.point(0.0, 12.0);
-        let q = DMat3::from_axis_angle(rng.dir(), rng.uniform(-PI, PI));
+        let q = DMat3::from_axis_angle(rng.direction(), rng.range(-PI, PI));
         let f = Isometry::transvection_from_origin(a).compose(&Isometry::orthogonal_unchecked(q));
         let x = rng.point(0.0, 12.0);
         let img = f.apply(&x);
@@ -369,7 +345,7 @@ fn isometry_apply_matches_the_reference() {
 /// is the hyperboloid mirror `X -> X - 2<X,N>N`.
 #[test]
 fn reflection_is_the_hyperboloid_mirror() {
-    let mut rng = Rng(8);
+    let mut rng = SplitMix64::new(8);
     for _ in 0..200 {
         let pts: Vec<Vertex> = (0..3).map(|_| rng.point(0.0, 2.0).into()).collect();
         let Ok(plane) = HPlane::through(&pts[0], &pts[1], &pts[2]) else {
@@ -392,11 +368,11 @@ fn reflection_is_the_hyperboloid_mirror() {
 /// evaluates `tau_A tau_w tau_{-A}`. They are the same map.
 #[test]
 fn translation_equals_the_two_reflection_definition() {
-    let mut rng = Rng(9);
+    let mut rng = SplitMix64::new(9);
     let mut worst: f64 = 0.0;
     for _ in 0..300 {
         let a = rng.point(0.0, 1.5);
-        let b = step(&a, rng.dir(), rng.uniform(0.05, 3.0));
+        let b = step(&a, rng.direction(), rng.range(0.05, 3.0));
         let seg = Segment::new(a, b).unwrap();
         let t = Isometry::translation(&seg).unwrap();
         let s = Isometry::translation_by_reflections(&seg).unwrap();
@@ -416,12 +392,12 @@ fn translation_equals_the_two_reflection_definition() {
 /// `w -> cos(theta) w + sin(theta) (u x w)` at the start point.
 #[test]
 fn rotation_follows_the_right_hand_rule_about_any_axis() {
-    let mut rng = Rng(10);
+    let mut rng = SplitMix64::new(10);
     for _ in 0..200 {
         let a = rng.point(0.0, 2.0);
-        let b = step(&a, rng.dir(), rng.uniform(0.1, 2.0));
+        let b = step(&a, rng.direction(), rng.range(0.1, 2.0));
         let seg = Segment::new(a, b).unwrap();
-        let theta = rng.uniform(-PI, PI);
+        let theta = rng.range(-PI, PI);
         let rot = Isometry::rotation_about_segment_unchecked(&seg, theta);
         let u = seg.direction_at_start();
         let w = u.any_orthonormal_vector();
@@ -435,10 +411,10 @@ fn rotation_follows_the_right_hand_rule_about_any_axis() {
 /// The Lorentz matrix of `(a, Q)` carries `X(p)` to `X(f(p))`.
 #[test]
 fn lorentz_matrix_agrees_with_apply() {
-    let mut rng = Rng(11);
+    let mut rng = SplitMix64::new(11);
     for _ in 0..200 {
         let a = rng.point(0.0, 3.0);
-        let q = DMat3::from_axis_angle(rng.dir(), rng.uniform(-PI, PI));
+        let q = DMat3::from_axis_angle(rng.direction(), rng.range(-PI, PI));
         let f = Isometry::transvection_from_origin(a).compose(&Isometry::orthogonal_unchecked(q));
         let m = f.to_lorentz();
         let x = rng.point(0.0, 3.0);
@@ -474,10 +450,10 @@ fn lorentz_matrix_agrees_with_apply() {
 /// triangle, anywhere in the ball.
 #[test]
 fn plane_through_three_points_follows_the_right_hand_rule() {
-    let mut rng = Rng(12);
+    let mut rng = SplitMix64::new(12);
     for _ in 0..300 {
         let a = rng.point(0.0, 6.0);
-        let (u, v) = (rng.dir(), rng.dir());
+        let (u, v) = (rng.direction(), rng.direction());
         if u.cross(v).length() < 0.1 {
             continue;
         }
@@ -497,7 +473,7 @@ fn plane_through_three_points_follows_the_right_hand_rule() {
 /// `|c|^2 = 1 + r^2` (the thesis prints `1 + r^2 = sqrt(|c|^2)`, which fails).
 #[test]
 fn ball_shape_is_orthogonal_to_the_absolute() {
-    let mut rng = Rng(13);
+    let mut rng = SplitMix64::new(13);
     for _ in 0..200 {
         let pts: Vec<Point> = (0..3).map(|_| rng.point(0.1, 3.0)).collect();
         let vs: Vec<Vertex> = pts.iter().map(|&p| p.into()).collect();
@@ -524,7 +500,7 @@ fn ball_shape_is_orthogonal_to_the_absolute() {
 /// `cosh s Y + sinh s N` is at signed distance `s`.
 #[test]
 fn signed_distance_is_the_distance_to_the_foot() {
-    let mut rng = Rng(14);
+    let mut rng = SplitMix64::new(14);
     for _ in 0..200 {
         let pts: Vec<Point> = (0..3).map(|_| rng.point(0.0, 2.0)).collect();
         let vs: Vec<Vertex> = pts.iter().map(|&p| p.into()).collect();
@@ -551,14 +527,14 @@ fn signed_distance_is_the_distance_to_the_foot() {
 /// same root as the textbook `tanh t = -<X,N>/<V,N>`.
 #[test]
 fn crossing_from_origin_equals_the_general_formula() {
-    let mut rng = Rng(15);
+    let mut rng = SplitMix64::new(15);
     let mut n = 0;
     for _ in 0..400 {
         let pts: Vec<Vertex> = (0..3).map(|_| rng.point(0.0, 3.0).into()).collect();
         let Ok(plane) = HPlane::through(&pts[0], &pts[1], &pts[2]) else {
             continue;
         };
-        let ray = Ray::from_origin_unchecked(rng.dir());
+        let ray = Ray::from_origin_unchecked(rng.direction());
         let (o, d) = (
             lorentz::dot(ray.origin, plane.normal()),
             lorentz::dot(ray.dir, plane.normal()),
@@ -594,11 +570,11 @@ fn crossing_from_origin_equals_the_general_formula() {
 /// centre factor `(1-T^2)/(1-a^2T^2)`, radius `T(1-a^2)/(1-a^2T^2)`.
 #[test]
 fn euclidean_sphere_matches_the_reference() {
-    let mut rng = Rng(16);
+    let mut rng = SplitMix64::new(16);
     let (mut ec, mut er) = (0.0f64, 0.0f64);
     for _ in 0..400 {
         let c = rng.point(0.0, 30.0);
-        let r = rng.uniform(1e-6, 20.0);
+        let r = rng.range(1e-6, 20.0);
         let s = HSphere::new(c, r).unwrap();
         let (centre, radius) = s.euclidean();
         let half = R::f(0.5 * r);
@@ -623,10 +599,10 @@ fn euclidean_sphere_matches_the_reference() {
 /// origin: the derivation of the formula above.
 #[test]
 fn euclidean_sphere_extremes_are_at_distance_d_plus_minus_r() {
-    let mut rng = Rng(17);
+    let mut rng = SplitMix64::new(17);
     for _ in 0..200 {
         let c = rng.point(0.1, 5.0);
-        let r = rng.uniform(0.01, 3.0);
+        let r = rng.range(0.01, 3.0);
         let (centre, radius) = HSphere::new(c, r).unwrap().euclidean();
         let dist = c.distance_from_origin();
         let u = c.coords().normalize();
@@ -640,12 +616,12 @@ fn euclidean_sphere_extremes_are_at_distance_d_plus_minus_r() {
 /// Both roots of the `e^t` quadratic lie on the sphere.
 #[test]
 fn sphere_roots_solve_the_level_equation() {
-    let mut rng = Rng(18);
+    let mut rng = SplitMix64::new(18);
     for _ in 0..200 {
         let c = rng.point(0.0, 3.0);
-        let r = rng.uniform(0.05, 2.0);
+        let r = rng.range(0.05, 2.0);
         let s = HSphere::new(c, r).unwrap();
-        let ray = Ray::from_origin_unchecked(rng.dir());
+        let ray = Ray::from_origin_unchecked(rng.direction());
         let Some((near, far)) = s.roots(&ray) else {
             continue;
         };
@@ -664,7 +640,7 @@ fn sphere_roots_solve_the_level_equation() {
 /// the canonical-frame distance.
 #[test]
 fn sinh_distance_to_a_line_is_the_lorentz_basis_formula() {
-    let mut rng = Rng(19);
+    let mut rng = SplitMix64::new(19);
     for _ in 0..200 {
         let (a, b) = (rng.point(0.0, 2.0), rng.point(0.0, 2.0));
         let Ok(line) = HLine::through(&a.into(), &b.into()) else {
@@ -683,7 +659,7 @@ fn sinh_distance_to_a_line_is_the_lorentz_basis_formula() {
 /// `HLine::distance_to` against a 320-bit reference (the Gram-matrix form).
 #[test]
 fn line_distance_matches_the_reference() {
-    let mut rng = Rng(20);
+    let mut rng = SplitMix64::new(20);
     let mut worst: f64 = 0.0;
     for _ in 0..300 {
         let (a, b) = (rng.point(0.0, 4.0), rng.point(0.0, 4.0));
@@ -708,9 +684,9 @@ fn line_distance_matches_the_reference() {
 /// `2|u-v|/(2+|u-v|)`.
 #[test]
 fn ideal_line_base_is_the_foot_of_the_perpendicular() {
-    let mut rng = Rng(21);
+    let mut rng = SplitMix64::new(21);
     for _ in 0..200 {
-        let (u, v) = (rng.dir(), rng.dir());
+        let (u, v) = (rng.direction(), rng.direction());
         if (u - v).length() < 1e-3 {
             continue;
         }
@@ -732,16 +708,16 @@ fn ideal_line_base_is_the_foot_of_the_perpendicular() {
 /// from the axis.
 #[test]
 fn cylinder_roots_solve_the_quadric() {
-    let mut rng = Rng(22);
+    let mut rng = SplitMix64::new(22);
     let mut n = 0;
     for _ in 0..300 {
         let (a, b) = (rng.point(0.0, 2.0), rng.point(0.0, 2.0));
         let Ok(line) = HLine::through(&a.into(), &b.into()) else {
             continue;
         };
-        let r = rng.uniform(0.05, 1.0);
+        let r = rng.range(0.05, 1.0);
         let cyl = HCylinder::new(line, r).unwrap();
-        let ray = Ray::from_origin_unchecked(rng.dir());
+        let ray = Ray::from_origin_unchecked(rng.direction());
         let Some((near, far)) = cyl.roots(&ray) else {
             continue;
         };
@@ -768,9 +744,9 @@ fn cylinder_roots_solve_the_quadric() {
 /// sphere with centre `xi/(1+k)` and radius `k/(1+k)`.
 #[test]
 fn horosphere_level_is_the_euclidean_sphere() {
-    let mut rng = Rng(23);
+    let mut rng = SplitMix64::new(23);
     for _ in 0..200 {
-        let xi = IdealPoint::from_direction(rng.dir()).unwrap();
+        let xi = IdealPoint::from_direction(rng.direction()).unwrap();
         let q = rng.point(0.0, 4.0);
         let h = Horosphere::new(xi, &q).unwrap();
         let l = xi.to_hyperboloid();
@@ -779,7 +755,7 @@ fn horosphere_level_is_the_euclidean_sphere() {
         assert!((c - xi.coords() / (1.0 + k)).length() < 1e-12);
         assert!((r - k / (1.0 + k)).abs() < 1e-12);
         for _ in 0..5 {
-            let p = Point::from_coords(c + r * rng.dir()).unwrap_or(q);
+            let p = Point::from_coords(c + r * rng.direction()).unwrap_or(q);
             let level = (p.coords() - xi.coords()).length_squared() / p.gap();
             let xp = p.to_hyperboloid();
             assert!((level - k).abs() < 1e-9 * k.max(1.0), "{level} vs {k}");

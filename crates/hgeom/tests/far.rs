@@ -3,15 +3,12 @@
 //! 25 away (`docs/geometry.md`, section 16.5), at the distance where it used
 //! to fail, against the 320-bit reference where the claim is numeric.
 
-#[path = "support/reference.rs"]
-mod reference;
-
 use glam::{DMat3, DVec3};
 use hgeom::{
     ConvexPolygon, HPlane, HSphere, Horosphere, IdealPoint, Isometry, Point, Ray, Rod, Segment,
     Vertex, lorentz, mobius,
 };
-use reference::R;
+use hscene_test_support::reference::{self, R};
 
 fn at(dir: DVec3, d: f64) -> Point {
     Point::at_distance_from_origin(dir, d).unwrap()

@@ -12,6 +12,7 @@ use glam::{DVec3, DVec4};
 use hgeom::{
     ConvexPolygon, HPlane, Hit, Isometry, Point, Ray, Segment, TriangleMesh, Vertex, lorentz,
 };
+use hscene_test_support::SplitMix64;
 use proptest::prelude::*;
 
 // ---------------------------------------------------------------------------
@@ -29,40 +30,31 @@ fn config() -> ProptestConfig {
     }
 }
 
-/// SplitMix64: reproducible random geometry for the deterministic tests.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * ((self.next() >> 11) as f64 / (1u64 << 53) as f64)
-    }
-
-    fn dir(&mut self) -> DVec3 {
-        unit_from(self.uniform(-1.0, 1.0), self.uniform(0.0, TAU))
-    }
-
-    fn point(&mut self, max: f64) -> Point {
-        let d = self.dir();
-        Point::at_distance_from_origin(d, self.uniform(0.0, max)).unwrap()
-    }
+/// Random geometry for the deterministic tests, drawn from the shared
+/// stream.
+trait RandomGeometry {
+    /// A point at hyperbolic distance in `[0, max)` from the origin, in a
+    /// uniformly random direction (drawn first).
+    fn point(&mut self, max: f64) -> Point;
 
     /// A random isometry moving the origin up to `reach` away, with a random
     /// rotation, and a reflection half of the time.
+    fn placement(&mut self, reach: f64) -> Isometry;
+}
+
+impl RandomGeometry for SplitMix64 {
+    fn point(&mut self, max: f64) -> Point {
+        let d = self.direction();
+        Point::at_distance_from_origin(d, self.range(0.0, max)).unwrap()
+    }
+
     fn placement(&mut self, reach: f64) -> Isometry {
-        let end = Point::at_distance_from_origin(self.dir(), 0.5).unwrap();
+        let end = Point::at_distance_from_origin(self.direction(), 0.5).unwrap();
         let axis = Segment::new(Point::ORIGIN, end).unwrap();
-        let spin = Isometry::rotation_about_segment_unchecked(&axis, self.uniform(-PI, PI));
+        let spin = Isometry::rotation_about_segment_unchecked(&axis, self.range(-PI, PI));
         let shift = Isometry::transvection_from_origin(self.point(reach));
         let f = shift.compose(&spin);
-        if self.next() & 1 == 0 {
+        if self.next_u64() & 1 == 0 {
             let mirror = HPlane::through(
                 &self.point(0.5).into(),
                 &self.point(0.5).into(),
@@ -76,11 +68,6 @@ impl Rng {
             f
         }
     }
-}
-
-fn unit_from(z: f64, phi: f64) -> DVec3 {
-    let s = (1.0 - z * z).max(0.0).sqrt();
-    DVec3::new(s * phi.cos(), s * phi.sin(), z)
 }
 
 /// The ray from `from` towards `to` (ball points).
@@ -142,14 +129,14 @@ fn polygons(mesh: &TriangleMesh) -> Vec<Option<ConvexPolygon>> {
 }
 
 /// Triangles scattered through a ball of radius `reach`, sides up to `size`.
-fn soup(rng: &mut Rng, count: usize, reach: f64, size: f64) -> TriangleMesh {
+fn soup(rng: &mut SplitMix64, count: usize, reach: f64, size: f64) -> TriangleMesh {
     let mut vertices = Vec::with_capacity(3 * count);
     let mut triangles = Vec::with_capacity(count);
     for i in 0..count as u32 {
         let c = Isometry::transvection_from_origin(rng.point(reach));
         for _ in 0..3 {
-            let d = rng.dir();
-            let r = rng.uniform(0.1, 1.0) * size;
+            let d = rng.direction();
+            let r = rng.range(0.1, 1.0) * size;
             vertices.push(c.apply(&Point::at_distance_from_origin(d, r).unwrap()));
         }
         triangles.push([3 * i, 3 * i + 1, 3 * i + 2]);
@@ -160,7 +147,12 @@ fn soup(rng: &mut Rng, count: usize, reach: f64, size: f64) -> TriangleMesh {
 /// A closed, outward-wound icosphere about the origin: the icosahedron
 /// subdivided `levels` times, each vertex at distance `radius * (1 + bump)`
 /// with `bump` uniform in `[-bumps, bumps]` (star-shaped about the origin).
-fn icosphere(rng: &mut Rng, levels: usize, radius: f64, bumps: f64) -> (Vec<Point>, Vec<[u32; 3]>) {
+fn icosphere(
+    rng: &mut SplitMix64,
+    levels: usize,
+    radius: f64,
+    bumps: f64,
+) -> (Vec<Point>, Vec<[u32; 3]>) {
     let g = (1.0 + 5f64.sqrt()) / 2.0;
     let mut dirs: Vec<DVec3> = [
         (-1.0, g, 0.0),
@@ -223,7 +215,7 @@ fn icosphere(rng: &mut Rng, levels: usize, radius: f64, bumps: f64) -> (Vec<Poin
     let points = dirs
         .iter()
         .map(|d| {
-            let r = radius * (1.0 + rng.uniform(-bumps, bumps));
+            let r = radius * (1.0 + rng.range(-bumps, bumps));
             Point::at_distance_from_origin(*d, r).unwrap()
         })
         .collect();
@@ -315,7 +307,7 @@ fn compare_with_polygons(
 
 #[test]
 fn mesh_hits_agree_with_convex_polygons() {
-    let mut rng = Rng(2024);
+    let mut rng = SplitMix64::new(2024);
     let (mut from_origin, mut from_elsewhere): (f64, f64) = (0.0, 0.0);
     let (mut residual_origin, mut residual_elsewhere): (f64, f64) = (0.0, 0.0);
     for case in 0..24 {
@@ -329,7 +321,7 @@ fn mesh_hits_agree_with_convex_polygons() {
             // near the mesh, so most of them hit.
             let aim = Isometry::transvection_from_origin(toward).apply(&rng.point(1.5));
             let ray = if toward.coords() == DVec3::ZERO || k % 4 == 0 {
-                Ray::from_origin_unchecked(rng.dir())
+                Ray::from_origin_unchecked(rng.direction())
             } else {
                 Ray::from_origin_unchecked(aim.coords())
             };
@@ -362,7 +354,7 @@ proptest! {
     /// stated distance along the ray, with a unit normal tangent there.
     #[test]
     fn hits_lie_on_their_triangle(seed in any::<u64>(), reach in 0.0f64..5.0, from in 0.0f64..3.0) {
-        let mut rng = Rng(seed);
+        let mut rng = SplitMix64::new(seed);
         let mesh = soup(&mut rng, 40, 1.0, 0.6).transformed(&rng.placement(reach));
         let centre = mesh.placement().translation_part();
         let there = Isometry::transvection_from_origin(centre);
@@ -402,13 +394,13 @@ proptest! {
     /// ray moved by `f^-1`.
     #[test]
     fn moving_the_mesh_equals_moving_the_ray(seed in any::<u64>(), reach in 0.0f64..3.0) {
-        let mut rng = Rng(seed);
+        let mut rng = SplitMix64::new(seed);
         let mesh = soup(&mut rng, 60, 1.0, 0.5);
         let f = rng.placement(reach);
         let moved = mesh.transformed(&f);
         let back = f.inverse();
         for _ in 0..40 {
-            let ray = Ray::from_ball_unchecked(&rng.point(3.0), rng.dir());
+            let ray = Ray::from_ball_unchecked(&rng.point(3.0), rng.direction());
             let a = moved.intersect_indexed(&ray, 0.0, f64::INFINITY);
             let b = mesh.intersect_indexed(&moved_ray(&back, &ray), 0.0, f64::INFINITY);
             match (a, b) {
@@ -433,7 +425,7 @@ proptest! {
 
 #[test]
 fn bounding_ball_contains_vertices_and_hits() {
-    let mut rng = Rng(77);
+    let mut rng = SplitMix64::new(77);
     for reach in [0.0, 1.0, 3.0, 6.0] {
         let mesh = soup(&mut rng, 100, 1.0, 0.5).transformed(&rng.placement(reach));
         let (c, r) = mesh.bounding_ball();
@@ -443,7 +435,7 @@ fn bounding_ball_contains_vertices_and_hits() {
             assert!(centre.distance(*v) <= r);
         }
         for _ in 0..300 {
-            let ray = Ray::from_origin_unchecked(rng.dir());
+            let ray = Ray::from_origin_unchecked(rng.direction());
             if let Some(hit) = mesh.intersect(&ray, 0.0, f64::INFINITY) {
                 let p = Point::from_hyperboloid(hit.point).unwrap();
                 assert!(centre.distance(p) <= r);
@@ -460,7 +452,7 @@ fn bounding_ball_contains_vertices_and_hits() {
 /// a star-shaped one cross it exactly once.
 #[test]
 fn rays_from_inside_a_closed_mesh_always_hit() {
-    let mut rng = Rng(11);
+    let mut rng = SplitMix64::new(11);
     let mut rays = 0;
     for case in 0..12 {
         let radius = [0.3, 1.0, 2.5][case % 3];
@@ -475,7 +467,7 @@ fn rays_from_inside_a_closed_mesh_always_hit() {
             } else {
                 f.apply(&rng.point(0.5 * radius))
             };
-            let ray = Ray::from_ball_unchecked(&start, rng.dir());
+            let ray = Ray::from_ball_unchecked(&start, rng.direction());
             let hits = all_hits(&mesh, &ray);
             rays += 1;
             assert_eq!(hits.len(), 1, "case {case}, ray {k}: {hits:?}");
@@ -499,7 +491,7 @@ fn rays_from_inside_a_closed_mesh_always_hit() {
 /// triangle test.
 #[test]
 fn rays_through_edges_and_vertices_never_miss() {
-    let mut rng = Rng(5);
+    let mut rng = SplitMix64::new(5);
     let (points, faces) = icosphere(&mut rng, 2, 1.0, 0.1);
     let mesh = TriangleMesh::new(points.clone(), faces.clone()).unwrap();
     let mut targets: Vec<DVec4> = points.iter().map(Point::to_hyperboloid).collect();
@@ -552,7 +544,7 @@ fn rays_through_edges_and_vertices_never_miss() {
 
 #[test]
 fn long_chains_of_moves_stay_accurate() {
-    let mut rng = Rng(99);
+    let mut rng = SplitMix64::new(99);
     let (points, faces) = icosphere(&mut rng, 2, 0.8, 0.1);
     let mesh = TriangleMesh::new(points, faces).unwrap();
     // 1000 random moves (rotations, reflections, translations up to 0.5;
@@ -578,7 +570,7 @@ fn long_chains_of_moves_stay_accurate() {
     // The chain equals the composed isometry applied once.
     let once = mesh.transformed(&total);
     for _ in 0..200 {
-        let ray = Ray::from_ball_unchecked(&rng.point(2.0), rng.dir());
+        let ray = Ray::from_ball_unchecked(&rng.point(2.0), rng.direction());
         let (a, b) = (
             moved.intersect(&ray, 0.0, f64::INFINITY),
             once.intersect(&ray, 0.0, f64::INFINITY),
@@ -598,7 +590,7 @@ fn long_chains_of_moves_stay_accurate() {
     }
     let mut worst: f64 = 0.0;
     for _ in 0..400 {
-        let ray = Ray::from_ball_unchecked(&rng.point(0.3), rng.dir());
+        let ray = Ray::from_ball_unchecked(&rng.point(0.3), rng.direction());
         let a = moved.intersect(&ray, 0.0, f64::INFINITY).unwrap();
         let b = mesh.intersect(&ray, 0.0, f64::INFINITY).unwrap();
         worst = worst.max((a.t - b.t).abs());
@@ -624,7 +616,7 @@ fn long_chains_of_moves_stay_accurate() {
 /// that), watertight there too.
 #[test]
 fn mesh_next_to_the_absolute() {
-    let mut rng = Rng(12);
+    let mut rng = SplitMix64::new(12);
     let (points, faces) = icosphere(&mut rng, 2, 0.5, 0.1);
     let d = 28.3;
     let centre = Point::at_distance_from_origin(DVec3::new(0.3, -0.5, 0.8), d).unwrap();
@@ -660,7 +652,7 @@ fn mesh_next_to_the_absolute() {
     // Watertight there: rays from the moved centre always leave once.
     let inside = seen_from_eye.apply(&Point::ORIGIN);
     for _ in 0..400 {
-        let ray = Ray::from_ball_unchecked(&inside, rng.dir());
+        let ray = Ray::from_ball_unchecked(&inside, rng.direction());
         assert_eq!(all_hits(&seen, &ray).len(), 1);
     }
 }
@@ -674,7 +666,7 @@ fn grazing_rays_along_a_triangle_plane() {
         vec![[0, 1, 2]],
     )
     .unwrap();
-    let mut rng = Rng(17);
+    let mut rng = SplitMix64::new(17);
     let shift = rng.placement(2.0);
     let (mut hits, mut misses) = (0, 0);
     for (mesh, f) in [
@@ -685,8 +677,8 @@ fn grazing_rays_along_a_triangle_plane() {
             ConvexPolygon::new(mesh.vertices().iter().map(|p| Vertex::from(*p)).collect()).unwrap();
         let n = poly.plane().normal();
         for _ in 0..200 {
-            let base = corner(rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5));
-            let phi = rng.uniform(0.0, TAU);
+            let base = corner(rng.range(-0.5, 0.5), rng.range(-0.5, 0.5));
+            let phi = rng.range(0.0, TAU);
             for h in [0.0, 1e-15, 1e-10] {
                 for eps in [0.0, 1e-16, -1e-16, 1e-12, -1e-12, -1e-8] {
                     let start =
@@ -742,17 +734,17 @@ fn grazing_rays_along_a_triangle_plane() {
 /// triangle is hit 1e-9 inside a vertex and missed 1e-9 outside it.
 #[test]
 fn rays_through_a_vertex() {
-    let mut rng = Rng(23);
+    let mut rng = SplitMix64::new(23);
     let mut rays = 0;
     for case in 0..60 {
         let m = 5 + case % 8;
         let mut angles: Vec<f64> = (0..m)
-            .map(|k| (k as f64 + rng.uniform(0.1, 0.9)) * TAU / m as f64)
+            .map(|k| (k as f64 + rng.range(0.1, 0.9)) * TAU / m as f64)
             .collect();
         angles.sort_by(f64::total_cmp);
         let mut points = vec![Point::ORIGIN];
         for a in &angles {
-            let r = rng.uniform(0.2, 1.5);
+            let r = rng.range(0.2, 1.5);
             points.push(
                 Point::at_distance_from_origin(DVec3::new(a.cos(), a.sin(), 0.0), r).unwrap(),
             );
@@ -765,12 +757,11 @@ fn rays_through_a_vertex() {
         let hub = f.apply(&Point::ORIGIN);
         for _ in 0..100 {
             // From either side of the fan's plane, at a random slant.
-            let mut d = rng.dir();
+            let mut d = rng.direction();
             if d.z.abs() < 0.05 {
                 d.z = 0.05f64.copysign(d.z);
             }
-            let start =
-                f.apply(&Point::at_distance_from_origin(d, rng.uniform(0.05, 3.0)).unwrap());
+            let start = f.apply(&Point::at_distance_from_origin(d, rng.range(0.05, 3.0)).unwrap());
             let ray = ray_towards(&start, &hub);
             let hit = fan.intersect(&ray, 0.0, f64::INFINITY);
             let hit = hit.unwrap_or_else(|| panic!("slipped through the hub, case {case}"));
@@ -817,7 +808,7 @@ fn rays_through_a_vertex() {
 /// intersects like the original with the ray moved back.
 #[test]
 fn transformed_shares_a_large_mesh() {
-    let mut rng = Rng(31);
+    let mut rng = SplitMix64::new(31);
     let (points, faces) = icosphere(&mut rng, 4, 1.0, 0.02);
     let mesh = TriangleMesh::new(points, faces).unwrap();
     assert_eq!(mesh.triangle_count(), 5120);
@@ -826,7 +817,7 @@ fn transformed_shares_a_large_mesh() {
     assert_eq!(moved.triangle_count(), 5120);
     let back = f.inverse();
     for _ in 0..200 {
-        let ray = Ray::from_ball_unchecked(&rng.point(3.0), rng.dir());
+        let ray = Ray::from_ball_unchecked(&rng.point(3.0), rng.direction());
         let a = moved.intersect(&ray, 0.0, f64::INFINITY);
         let b = mesh.intersect(&moved_ray(&back, &ray), 0.0, f64::INFINITY);
         assert_eq!(a.is_some(), b.is_some());

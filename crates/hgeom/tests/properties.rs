@@ -14,6 +14,7 @@ use hgeom::{
     ConvexPolygon, HPlane, HSphere, IdealPoint, Isometry, Platonic, Point, Polyhedron, Ray,
     Segment, Vertex, lorentz,
 };
+use hscene_test_support::SplitMix64;
 use proptest::prelude::*;
 
 // ---------------------------------------------------------------------------
@@ -104,30 +105,17 @@ fn assert_hit_finite(hit: &hgeom::Hit) {
     assert!(hit.normal.is_finite(), "normal {hit:?}");
 }
 
-/// A small deterministic generator for the long-chain test (SplitMix64).
-struct SplitMix(u64);
+/// Random points for the deterministic tests, drawn from the shared stream.
+trait RandomPoints {
+    /// A point at hyperbolic distance in `[0, max)` from the origin, in a
+    /// uniformly random direction (drawn first).
+    fn point(&mut self, max: f64) -> Point;
+}
 
-impl SplitMix {
-    fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        let u = (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
-        lo + (hi - lo) * u
-    }
-
-    fn dir(&mut self) -> DVec3 {
-        unit_from(self.uniform(-1.0, 1.0), self.uniform(0.0, TAU))
-    }
-
+impl RandomPoints for SplitMix64 {
     fn point(&mut self, max: f64) -> Point {
-        let u = self.dir();
-        Point::at_distance_from_origin(u, self.uniform(0.0, max)).unwrap()
+        let u = self.direction();
+        Point::at_distance_from_origin(u, self.range(0.0, max)).unwrap()
     }
 }
 
@@ -686,18 +674,18 @@ fn ideal_triangle_hits_inside_misses_outside() {
 /// is at the tangent point. Slightly inward rays hit, outward ones miss.
 #[test]
 fn tangent_rays_to_a_sphere() {
-    let mut rng = SplitMix(7);
+    let mut rng = SplitMix64::new(7);
     for case in 0..300 {
         let c = rng.point(2.0);
-        let radius = rng.uniform(0.01, 2.0);
+        let radius = rng.range(0.01, 2.0);
         let sphere = HSphere::new(c, radius).unwrap();
         let ch = c.to_hyperboloid();
         // An eye outside the sphere (at most ~6 from the origin: beyond, the
         // hyperboloid coordinates of the eye alone carry errors ~eps e^{2d}).
-        let eye = step(&c, rng.dir(), radius + rng.uniform(0.01, 2.0));
+        let eye = step(&c, rng.direction(), radius + rng.range(0.01, 2.0));
         let x = eye.to_hyperboloid();
         let (towards, dist) = lorentz::direction_towards(x, ch).unwrap();
-        let side = orthogonal_tangent(x, towards, rng.dir().extend(0.0));
+        let side = orthogonal_tangent(x, towards, rng.direction().extend(0.0));
         // Right triangle eye - tangent point - centre: sin(alpha) = sinh r / sinh D.
         let alpha = (radius.sinh() / dist.sinh()).asin();
         let t_tangent = (dist.cosh() / radius.cosh()).acosh();
@@ -751,7 +739,7 @@ fn grazing_rays_to_a_polygon() {
         corner(0.0, -0.8),
     ])
     .unwrap();
-    let mut rng = SplitMix(11);
+    let mut rng = SplitMix64::new(11);
     let shift = Isometry::translation(
         &Segment::new(
             Point::ORIGIN,
@@ -776,13 +764,10 @@ fn grazing_rays_to_a_polygon() {
         for _ in 0..200 {
             // A point of the plane z = 0 (moved with the polygon) and an
             // in-plane direction, both pushed off the plane by tiny amounts.
-            let base = Point::from_coords(DVec3::new(
-                rng.uniform(-0.5, 0.5),
-                rng.uniform(-0.5, 0.5),
-                0.0,
-            ))
-            .unwrap();
-            let phi = rng.uniform(0.0, TAU);
+            let base =
+                Point::from_coords(DVec3::new(rng.range(-0.5, 0.5), rng.range(-0.5, 0.5), 0.0))
+                    .unwrap();
+            let phi = rng.range(0.0, TAU);
             for h in [0.0, 1e-15, 1e-10] {
                 for eps in [0.0, 1e-16, -1e-16, 1e-12, -1e-12, -1e-8] {
                     let p = f.apply(&step(&base, DVec3::Z, h));
@@ -831,7 +816,7 @@ fn grazing_rays_to_a_polygon() {
 /// at the Euclidean midpoint (exact to second order).
 #[test]
 fn nearly_coincident_points() {
-    let mut rng = SplitMix(3);
+    let mut rng = SplitMix64::new(3);
     for s in [0.0, 0.1, 0.5, 0.9, 1.0 - 1e-6, 1.0 - 1e-12, 1.0 - 1e-15] {
         // 1 - s^2 = (1 - s)(1 + s), with 1 - s exact for s >= 1/2.
         let gap_x = if s >= 0.5 {
@@ -841,7 +826,7 @@ fn nearly_coincident_points() {
         };
         let x = Point::from_coords(DVec3::new(s, 0.0, 0.0)).unwrap();
         for _ in 0..50 {
-            let u = rng.dir();
+            let u = rng.direction();
             let y = Point::from_coords(x.coords() + u * (0.5e-12 * gap_x)).unwrap();
             let delta = y.coords() - x.coords();
             if delta == DVec3::ZERO {
@@ -929,7 +914,7 @@ fn translation_along_a_segment_of_length_1e_12() {
 /// A sphere of radius 20 (cosh r ~ 2.4e8).
 #[test]
 fn sphere_of_radius_20() {
-    let mut rng = SplitMix(5);
+    let mut rng = SplitMix64::new(5);
     for c in [
         Point::ORIGIN,
         Point::at_distance_from_origin(DVec3::new(1.0, -2.0, 0.5), 3.0).unwrap(),
@@ -947,7 +932,7 @@ fn sphere_of_radius_20() {
             assert!((er - 10f64.tanh()).abs() < 1e-15);
         }
         for _ in 0..100 {
-            let ray = Ray::from_ball_unchecked(&c, rng.dir());
+            let ray = Ray::from_ball_unchecked(&c, rng.direction());
             let hit = sphere.intersect(&ray, 0.0, f64::INFINITY).unwrap();
             assert!((hit.t - 20.0).abs() < 1e-9 * 20.0, "{}", hit.t);
             // The hit point lies 20 from the centre (read back in the ball,
@@ -976,23 +961,23 @@ fn sphere_of_radius_20() {
 /// origin is beyond `cap` the translation runs along the diameter through it,
 /// towards the origin (otherwise the walk drifts off at linear speed and
 /// leaves what f64 can represent within a few hundred steps).
-fn chain_step(rng: &mut SplitMix, current: &Point, cap: f64) -> Isometry {
+fn chain_step(rng: &mut SplitMix64, current: &Point, cap: f64) -> Isometry {
     let axis_start = rng.point(0.3);
-    let axis_dir = rng.dir();
+    let axis_dir = rng.direction();
     let axis = Segment::new(axis_start, step(&axis_start, axis_dir, 0.5)).unwrap();
-    let spin = Isometry::rotation_about_segment_unchecked(&axis, rng.uniform(-PI, PI));
+    let spin = Isometry::rotation_about_segment_unchecked(&axis, rng.range(-PI, PI));
     let moved = spin.apply(current);
     let seg = if moved.distance_from_origin() > cap {
         let home = -moved.coords().normalize();
-        let len = rng.uniform(1.0, 2.0);
+        let len = rng.range(1.0, 2.0);
         Segment::new(
             Point::ORIGIN,
             Point::at_distance_from_origin(home, len).unwrap(),
         )
     } else {
         let start = rng.point(0.3);
-        let dir = rng.dir();
-        Segment::new(start, step(&start, dir, rng.uniform(0.05, 2.0)))
+        let dir = rng.direction();
+        Segment::new(start, step(&start, dir, rng.range(0.05, 2.0)))
     };
     Isometry::translation(&seg.unwrap()).unwrap().compose(&spin)
 }
@@ -1001,7 +986,7 @@ fn chain_step(rng: &mut SplitMix, current: &Point, cap: f64) -> Isometry {
 #[test]
 fn long_chain_drift() {
     for (seed, cap) in [(1u64, 3.0), (2, 10.0), (3, 13.0)] {
-        let mut rng = SplitMix(seed);
+        let mut rng = SplitMix64::new(seed);
         let mut acc = Isometry::IDENTITY;
         let mut steps = Vec::with_capacity(1000);
         let mut peak = 0.0f64;

@@ -1,11 +1,7 @@
 //! hgeom's f64 results against a 320-bit reference (astro-float).
 
-#[path = "support/cases.rs"]
-mod cases;
-#[path = "support/reference.rs"]
-mod reference;
-
-use cases::Rng;
+use hscene_test_support::SplitMix64;
+use hscene_test_support::accuracy as cases;
 
 const N: usize = 200;
 
@@ -29,12 +25,12 @@ fn check(f: cases::Family, bound: f64) {
 
 #[test]
 fn distance_near_the_absolute_is_correct_to_1e_13() {
-    check(cases::distance_boundary(&mut Rng::new(1), N), 1e-13);
+    check(cases::distance_boundary(&mut SplitMix64::new(1), N), 1e-13);
 }
 
 #[test]
 fn distance_of_nearly_coincident_points_is_correct_to_1e_13() {
-    check(cases::distance_near(&mut Rng::new(2), N), 1e-13);
+    check(cases::distance_near(&mut SplitMix64::new(2), N), 1e-13);
 }
 
 /// Every family stays within the bound its rustdoc promises. The bounds are
@@ -93,7 +89,7 @@ fn check_family(f: &cases::Family, bound: f64) {
 /// the bound has room for that spread.
 #[test]
 fn ten_thousand_step_drift_stays_below_2e_9() {
-    let (f, peak) = cases::drift(&mut Rng::new(3), 1, 10_000, 12.0);
+    let (f, peak) = cases::drift(&mut SplitMix64::new(3), 1, 10_000, 12.0);
     eprintln!("peak {peak:.2}, leftover {:.3e}", f.max());
     assert!(peak >= 12.0, "walk only reached {peak}");
     assert!(

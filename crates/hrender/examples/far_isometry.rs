@@ -1,7 +1,7 @@
 //! The far-isometry table: a scene with every kind of object, moved with its
 //! eye and lights by translations of length 10, 15, 20, 25 and 30 in several
 //! directions, rendered on every pixel net and compared with the unmoved
-//! picture (`tests/common/far.rs`).
+//! picture (`hscene_test_support::far`).
 //!
 //! `cargo run --release -p hrender --example far_isometry -- [--size N]
 //! [--dirs K] [--seed S] [--distances 10,15,20,25,30] [--out DIR]`
@@ -11,14 +11,12 @@
 //! same warnings, and the numeric failures counted. With `--out` the unmoved
 //! and the worst moved image of each net are written there to look at.
 
-#[path = "../tests/common/mod.rs"]
-mod common;
-
 use std::path::PathBuf;
 
-use common::far::{NETS, far_case, far_scene_source, render_source};
 use hgeom::glam::DVec3;
 use hrender::{SampleDepth, write_image};
+use hscene_test_support::SplitMix64;
+use hscene_test_support::far::{self, NETS, far_case, far_scene_source, render_source};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut size = 48u32;
@@ -43,7 +41,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             other => return Err(format!("unknown argument {other}").into()),
         }
     }
-    let mut rng = common::Rng(seed);
+    let mut rng = SplitMix64::new(seed);
     let directions: Vec<DVec3> = (0..dirs).map(|_| rng.direction()).collect();
     println!("worst fraction of pixels within 1/255 over {dirs} directions, {size}x{size}");
     println!("| d | net 0 | net 1 | net 2 | net 3 | net 4 | same warnings | failures |");
@@ -119,7 +117,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             eprintln!("  d {d}: {e}");
         }
         if !warnings_ok {
-            let base = common::far::warnings(&far_scene_source(0, size, 0.0, DVec3::Z));
+            let base = far::warnings(&far_scene_source(0, size, 0.0, DVec3::Z));
             eprintln!("  unmoved warnings: {base:?}");
         }
     }

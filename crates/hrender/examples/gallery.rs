@@ -6,14 +6,12 @@
 //! polyhedra, wireframes, horospheres) and to time the renderer on a scene
 //! with many rods.
 
-#[path = "../tests/common/mod.rs"]
-mod common;
-
 use std::path::PathBuf;
 use std::time::Instant;
 
 use hrender::{RenderOptions, SampleDepth, render, write_image};
 use hscene_lang::ir::{Net, Scene};
+use hscene_test_support::scenes;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);
@@ -21,15 +19,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let size: u32 = args.next().map_or(Ok(300), |s| s.parse())?;
     let only = args.next();
     let scenes: Vec<(&str, Scene)> = vec![
-        ("many-rods", common::many_rods_scene(300, size)),
-        ("many-cells", common::many_cells_scene(6, size)),
-        ("mixed", common::mixed_scene(Net::Euclidean, size, 0.2)),
-        ("mixed-net2", common::mixed_scene(Net::GreatDisk, size, 0.6)),
+        ("many-rods", scenes::many_rods_scene(300, size)),
+        ("many-cells", scenes::many_cells_scene(6, size)),
+        ("mixed", scenes::mixed_scene(Net::Euclidean, size, 0.2)),
+        ("mixed-net2", scenes::mixed_scene(Net::GreatDisk, size, 0.6)),
         (
             "mixed-net4",
-            common::mixed_scene(Net::EquidistantInterpolated, size, 0.6),
+            scenes::mixed_scene(Net::EquidistantInterpolated, size, 0.6),
         ),
-        ("solids", common::solids_scene(Net::Euclidean, size, 0.3)),
+        ("solids", scenes::solids_scene(Net::Euclidean, size, 0.3)),
     ];
     for (name, scene) in scenes {
         if only.as_deref().is_some_and(|o| o != name) {

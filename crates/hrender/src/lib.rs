@@ -14,10 +14,6 @@
 //! hyperboloid can no longer resolve) is counted in [`RenderStats`], never
 //! hidden, and no pixel is ever NaN or infinite.
 
-// `!(x > 0.0)` is deliberate: it sends NaN down the failure path, which
-// `x <= 0.0` would not.
-#![allow(clippy::neg_cmp_op_on_partial_ord)]
-
 mod bvh;
 mod camera;
 mod color;

@@ -3,13 +3,12 @@
 //! soft shadows whose penumbra grows with the radius, and render the same
 //! image on any number of threads.
 
-mod common;
-
-use common::*;
 use hgeom::HPlane;
 use hgeom::glam::DVec3;
 use hrender::RenderOptions;
 use hscene_lang::ir::{Light, Material, Net, Rgb, Scene, Shape};
+use hscene_test_support::SplitMix64;
+use hscene_test_support::scenes::*;
 
 /// A grey Lambertian material (no highlights), with a little ambient.
 fn grey() -> Material {
@@ -192,9 +191,9 @@ fn area_lights_are_deterministic_across_threads() {
 fn area_lights_move_with_the_scene() {
     let base = shadow_scene(shadow_light(0.15, 16), true);
     let before = draw(&base);
-    let mut rng = Rng(99);
+    let mut rng = SplitMix64::new(99);
     for case in 0..3 {
-        let iso = rng.isometry(5.0, false);
+        let iso = random_isometry(&mut rng, 5.0, false);
         let share = agreement(&draw(&moved(&base, &iso)), &before, 1.0 / 255.0);
         assert!(share >= 0.999, "isometry {case}: {share}");
     }

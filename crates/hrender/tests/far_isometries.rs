@@ -3,20 +3,18 @@
 //! an ideal point), a cylinder, polygons with edges and an ideal vertex, a
 //! cube with its wireframe — moved with its eye, target, up point and lights
 //! by translations of 10, 15, 20 and 25, renders the unmoved picture on
-//! every pixel net and draws the same warnings (`tests/common/far.rs`;
+//! every pixel net and draws the same warnings (`hscene_test_support::far`;
 //! `cargo run --release -p hrender --example far_isometry` prints the table
 //! out to 30).
 
-mod common;
-
-use common::Rng;
-use common::far::{NETS, far_case, far_scene_source, render_source};
+use hscene_test_support::SplitMix64;
+use hscene_test_support::far::{NETS, far_case, far_scene_source, render_source};
 
 /// Pixels per side: small, for test time; the example renders larger.
 const SIZE: u32 = 32;
 
 fn check_distance(d: f64, seed: u64, min_share: f64) {
-    let dir = Rng(seed).direction();
+    let dir = SplitMix64::new(seed).direction();
     for net in 0..NETS.len() {
         let (base, failures) =
             render_source(&far_scene_source(net, SIZE, 0.0, dir)).expect("unmoved scene");

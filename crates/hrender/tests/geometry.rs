@@ -2,12 +2,11 @@
 //! (thesis Fig. 33), nets 2 and 4 agreeing up to interpolation (thesis
 //! §8.4), and h-lines seen from the eye as straight lines (thesis §6.4.1).
 
-mod common;
-
-use common::*;
 use hgeom::glam::DVec3;
 use hrender::Image;
 use hscene_lang::ir::{Net, Rgb};
+use hscene_test_support::SplitMix64;
+use hscene_test_support::scenes::*;
 
 /// Fraction of pixels whose channels all agree within `tol`; `flip` compares
 /// pixel `(x, y)` of `a` with `(W-1-x, y)` of `b`.
@@ -49,8 +48,10 @@ const WINDOWS: [f64; 5] = [0.12, 0.24, 0.12, 0.24, 0.12];
 /// 1e-12 change of a grazing ray).
 #[test]
 fn isometries_leave_the_image_unchanged_in_every_net() {
-    let mut rng = Rng(2024);
-    let isometries: Vec<_> = (0..5).map(|_| rng.isometry(5.0, false)).collect();
+    let mut rng = SplitMix64::new(2024);
+    let isometries: Vec<_> = (0..5)
+        .map(|_| random_isometry(&mut rng, 5.0, false))
+        .collect();
     for (net, window) in Net::ALL.into_iter().zip(WINDOWS) {
         let base = mixed_scene(net, 96, window);
         let reference = draw(&base);
@@ -71,11 +72,11 @@ fn isometries_leave_the_image_unchanged_in_every_net() {
 /// reflection reverses): the picture is the same, flipped left to right.
 #[test]
 fn reflections_mirror_the_image() {
-    let mut rng = Rng(99);
+    let mut rng = SplitMix64::new(99);
     for net in [Net::Euclidean, Net::EquidistantInterpolated] {
         let base = mixed_scene(net, 64, WINDOWS[net.index() as usize]);
         let reference = draw(&base);
-        let iso = rng.isometry(4.0, true);
+        let iso = random_isometry(&mut rng, 4.0, true);
         assert!(!iso.preserves_orientation());
         let mirrored = draw(&moved(&base, &iso));
         let share = agreement(&reference, &mirrored, 1.0 / 255.0, true);

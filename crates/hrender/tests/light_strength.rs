@@ -2,9 +2,7 @@
 //! `D` receives exactly the colour given, whatever `D` (the intensity is
 //! scaled by `4 pi sinh^2 D`, the fall-off takes it back).
 
-mod common;
-
-use common::draw;
+use hscene_test_support::scenes::draw;
 
 /// A white Lambertian sphere whose near pole is 1.5 from the eye; the light
 /// sits at the eye, so the pole faces it (cos = 1) and its radiance is the

@@ -2,9 +2,7 @@
 //! covers: the hits are those of the flat mesh (docs/geometry.md, "Smooth
 //! meshes").
 
-mod common;
-
-use common::draw;
+use hscene_test_support::scenes::draw;
 
 fn bunny(options: &str) -> hrender::Image {
     let meshes = concat!(env!("CARGO_MANIFEST_DIR"), "/../../scenes/meshes");

@@ -6,12 +6,10 @@
 //! transmission term) and, where possible, no lights, so every pixel's
 //! colour says which object its ray path ended on.
 
-mod common;
-
-use common::*;
 use hgeom::glam::{DVec3, DVec4};
 use hrender::RenderOptions;
 use hscene_lang::ir::{Material, Net, Rgb};
+use hscene_test_support::scenes::*;
 
 /// A material that only mirrors.
 fn mirror() -> Material {

@@ -1,9 +1,6 @@
 //! Every primitive in every net; hard configurations never give a NaN or
 //! infinite pixel; anti-aliasing is deterministic; output is atomic.
 
-mod common;
-
-use common::*;
 use hgeom::glam::DVec3;
 use hgeom::{
     ConvexPolygon, HPlane, Horosphere, Isometry, Platonic, Point, Polyhedron, Rod, Vertex,
@@ -13,6 +10,8 @@ use hrender::{
     write_image, write_image_with,
 };
 use hscene_lang::ir::{Net, Rgb, Scene, Shape};
+use hscene_test_support::SplitMix64;
+use hscene_test_support::scenes::*;
 
 fn run(scene: &Scene, options: &RenderOptions) -> Rendered {
     let out = render(scene, options, &|_| {}).expect("render");
@@ -139,7 +138,7 @@ fn hard_configurations_give_finite_pixels() {
     // The whole mixed scene, eye included, moved 30 from the origin: ball
     // coordinates there hold positions to about 1e-3 only, but every pixel
     // stays finite and nothing fails.
-    let mut rng = Rng(5);
+    let mut rng = SplitMix64::new(5);
     let iso = Isometry::transvection_from_origin(at(rng.direction(), 30.0));
     cases.push((
         "moved to 30",
@@ -239,7 +238,7 @@ fn agreement(a: &Image, b: &Image) -> f64 {
 fn far_isometry_case(d: f64, seed: u64) -> (f64, u64) {
     let base = mixed_scene(Net::Euclidean, 48, 0.12);
     let reference = run(&base, &RenderOptions::default()).image;
-    let mut rng = Rng(seed);
+    let mut rng = SplitMix64::new(seed);
     let iso = Isometry::transvection_from_origin(at(rng.direction(), d));
     let out = run(&moved(&base, &iso), &RenderOptions::default());
     (

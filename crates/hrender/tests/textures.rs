@@ -2,13 +2,12 @@
 //! local Fermi coordinates, odd cells in the texture's colours), so they
 //! move with the object.
 
-mod common;
-
-use common::*;
 use hgeom::glam::{DMat3, DVec3};
 use hgeom::{HPlane, Isometry, from_fermi_coordinates};
 use hrender::Image;
 use hscene_lang::ir::{Material, Net, Rgb, Scene, Shape};
+use hscene_test_support::SplitMix64;
+use hscene_test_support::scenes::*;
 
 /// A light grey material without highlights, so hue tells the cells apart.
 fn pale() -> Material {
@@ -88,9 +87,9 @@ fn the_checker_shows_both_colours() {
 fn the_texture_moves_with_its_object() {
     let base = checker_scene(96);
     let before = draw(&base);
-    let mut rng = Rng(77);
+    let mut rng = SplitMix64::new(77);
     for case in 0..5 {
-        let iso = rng.isometry(5.0, false);
+        let iso = random_isometry(&mut rng, 5.0, false);
         let moved_scene = moved(&base, &iso);
         let share = agreement(&draw(&moved_scene), &before, 1.0 / 255.0);
         assert!(share >= 0.999, "isometry {case}: {share}");

@@ -3,11 +3,9 @@
 //! fog mixes a surface at hyperbolic distance `s` by exactly `exp(-s/D)`,
 //! a far surface and a ray leaving the scene take the fog colour.
 
-mod common;
-
-use common::{agreement, draw};
 use hrender::Image;
 use hscene_lang::ir::Scene;
+use hscene_test_support::scenes::{agreement, draw};
 
 fn compile(src: &str) -> Scene {
     let compiled = hscene_lang::compile(src);

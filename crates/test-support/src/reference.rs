@@ -1,15 +1,14 @@
-//! High-precision reference geometry (320-bit floats, astro-float), used by
-//! the reference tests and the `accuracy` example to measure hgeom's f64
-//! results. Every formula here is the textbook one, evaluated naively: at
-//! 320 bits the cancellations that f64 must avoid cost nothing.
-
-#![allow(dead_code)]
+//! High-precision reference geometry (320-bit floats, astro-float), against
+//! which hgeom's f64 results are measured (hgeom's reference and derivation
+//! tests, the `accuracy` example, the `thesis` benchmark). Every formula here
+//! is the textbook one, evaluated naively: at 320 bits the cancellations that
+//! f64 must avoid cost nothing.
 
 use std::cell::RefCell;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 use astro_float::{BigFloat, Consts, Radix, RoundingMode};
-use glam::{DVec3, DVec4};
+use hgeom::glam::{DVec3, DVec4};
 
 const P: usize = 320;
 const RM: RoundingMode = RoundingMode::ToEven;
@@ -18,43 +17,56 @@ thread_local! {
     static CC: RefCell<Consts> = RefCell::new(Consts::new().expect("astro-float constants"));
 }
 
-/// A 320-bit real.
+/// A 320-bit real. Every operation rounds to nearest, ties to even.
 #[derive(Clone, Debug)]
 pub struct R(BigFloat);
 
 impl R {
+    /// `x` exactly (every f64 is a 320-bit real).
     pub fn f(x: f64) -> R {
         R(BigFloat::from_f64(x, P))
     }
+    /// The nearest f64, through the decimal form (astro-float has no direct
+    /// conversion); panics if the value does not format.
     pub fn to_f64(&self) -> f64 {
         let s = CC.with(|cc| self.0.format(Radix::Dec, RM, &mut cc.borrow_mut()));
         let s = s.expect("format");
         s.parse::<f64>().unwrap_or_else(|_| panic!("parse {s}"))
     }
+    /// The square root.
     pub fn sqrt(&self) -> R {
         R(self.0.sqrt(P, RM))
     }
+    /// The natural logarithm.
     pub fn ln(&self) -> R {
         CC.with(|cc| R(self.0.ln(P, RM, &mut cc.borrow_mut())))
     }
+    /// `e^x`.
     pub fn exp(&self) -> R {
         CC.with(|cc| R(self.0.exp(P, RM, &mut cc.borrow_mut())))
     }
+    /// The inverse hyperbolic sine.
     pub fn asinh(&self) -> R {
         CC.with(|cc| R(self.0.asinh(P, RM, &mut cc.borrow_mut())))
     }
+    /// The hyperbolic sine.
     pub fn sinh(&self) -> R {
         CC.with(|cc| R(self.0.sinh(P, RM, &mut cc.borrow_mut())))
     }
+    /// The hyperbolic cosine.
     pub fn cosh(&self) -> R {
         CC.with(|cc| R(self.0.cosh(P, RM, &mut cc.borrow_mut())))
     }
+    /// The absolute value.
     pub fn abs(&self) -> R {
         R(self.0.abs())
     }
+    /// Whether the value is negative (false for NaN): the sign test the root
+    /// bracketing relies on.
     pub fn is_negative(&self) -> bool {
         self.0.is_negative()
     }
+    /// `self < o`; false when either is NaN.
     pub fn lt(&self, o: &R) -> bool {
         self.0.cmp(&o.0).is_some_and(|c| c < 0)
     }
@@ -99,18 +111,23 @@ impl Neg for R {
 pub struct V4(pub [R; 4]);
 
 impl V4 {
+    /// `v` exactly.
     pub fn from_f64(v: DVec4) -> V4 {
         V4([R::f(v.x), R::f(v.y), R::f(v.z), R::f(v.w)])
     }
+    /// Every component times `k`.
     pub fn scale(&self, k: &R) -> V4 {
         V4(self.0.clone().map(|c| c * k))
     }
+    /// The componentwise sum.
     pub fn add(&self, o: &V4) -> V4 {
         V4(std::array::from_fn(|i| &self.0[i] + &o.0[i]))
     }
+    /// The componentwise difference.
     pub fn sub(&self, o: &V4) -> V4 {
         V4(std::array::from_fn(|i| &self.0[i] - &o.0[i]))
     }
+    /// Each component rounded to the nearest f64.
     pub fn to_f64(&self) -> DVec4 {
         DVec4::new(
             self.0[0].to_f64(),

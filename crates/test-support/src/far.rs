@@ -5,7 +5,7 @@
 //! object and every light — by one hyperbolic translation of length `d`.
 //! The pictures must agree, and so must the warnings of `check`.
 //!
-//! Shared by `tests/far_isometries.rs` (pass/fail at 10..25) and
+//! Shared by hrender's `tests/far_isometries.rs` (pass/fail at 10..25) and
 //! `examples/far_isometry.rs` (the table at 10..30).
 
 use hgeom::glam::DVec3;
@@ -113,8 +113,8 @@ pub fn warnings(source: &str) -> Vec<(usize, String)> {
         .collect()
 }
 
-/// Renders a scene source; `None` with the diagnostics when it does not
-/// compile. Returns the image and the numeric failures.
+/// Renders a scene source: the image and the numeric failures counted, or
+/// the error messages joined when it does not compile or render.
 pub fn render_source(source: &str) -> Result<(Image, u64), String> {
     let compiled = hscene_lang::compile(source);
     let Some(scene) = compiled.scene else {
@@ -160,7 +160,7 @@ pub fn far_case(net: usize, size: u32, d: f64, dir: DVec3, base: &Image) -> FarC
     let moved_warnings = if same_warnings { Vec::new() } else { moved };
     match render_source(&src) {
         Ok((img, failures)) => FarCase {
-            share: super::agreement(base, &img, 1.0 / 255.0),
+            share: crate::scenes::agreement(base, &img, 1.0 / 255.0),
             same_warnings,
             moved_warnings,
             failures,

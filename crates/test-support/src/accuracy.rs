@@ -1,73 +1,58 @@
-//! Families of accuracy cases shared by the reference tests and the
-//! `accuracy` example: each family builds inputs with a small deterministic
-//! generator, runs hgeom in f64, and measures the error against the 320-bit
-//! reference in `reference.rs`.
+//! Families of accuracy cases shared by hgeom's reference tests and its
+//! `accuracy` example: each family draws inputs from a [`SplitMix64`]
+//! stream, runs hgeom in f64, and measures the error against the 320-bit
+//! [`reference`](crate::reference).
 
-#![allow(dead_code)]
-
-use glam::DVec3;
+use hgeom::glam::{self, DVec3};
 use hgeom::{
     ConvexPolygon, HCylinder, HLine, HPlane, HSphere, Horosphere, IdealPoint, Isometry, Point, Ray,
     Rod, Segment, Vertex,
 };
 
+use crate::SplitMix64;
 use crate::reference::{self as r, R, V4};
 
-/// SplitMix64: tiny, deterministic, good enough to spread test inputs.
-pub struct Rng(u64);
-
-impl Rng {
-    pub fn new(seed: u64) -> Rng {
-        Rng(seed)
-    }
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// Uniform in [0, 1).
-    pub fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
-    }
-    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.unit()
-    }
-    /// A uniformly distributed unit vector.
-    pub fn direction(&mut self) -> DVec3 {
-        loop {
-            let v = DVec3::new(
-                self.range(-1.0, 1.0),
-                self.range(-1.0, 1.0),
-                self.range(-1.0, 1.0),
-            );
-            let l = v.length();
-            if l > 0.1 && l <= 1.0 {
-                return v / l;
-            }
+/// A uniformly distributed unit vector by rejection from the cube (three
+/// draws per try): the accuracy cases' own distribution, which their
+/// recorded bounds were measured with.
+fn cube_direction(rng: &mut SplitMix64) -> DVec3 {
+    loop {
+        let v = DVec3::new(
+            rng.range(-1.0, 1.0),
+            rng.range(-1.0, 1.0),
+            rng.range(-1.0, 1.0),
+        );
+        let l = v.length();
+        if l > 0.1 && l <= 1.0 {
+            return v / l;
         }
     }
-    /// A point at a random hyperbolic distance in `[lo, hi)` from the origin,
-    /// in a random direction.
-    pub fn point_in(&mut self, lo: f64, hi: f64) -> Point {
-        let d = self.range(lo, hi);
-        Point::at_distance_from_origin(self.direction(), d).expect("finite distance")
-    }
-    /// A random isometry with translation part at distance up to `max_d`.
-    pub fn isometry(&mut self, max_d: f64) -> Isometry {
-        let a = self.point_in(0.0, max_d);
-        let axis = self.direction();
-        let angle = self.range(-3.0, 3.0);
-        let q = glam::DMat3::from_axis_angle(axis, angle);
-        Isometry::transvection_from_origin(a).compose(&Isometry::orthogonal_unchecked(q))
-    }
+}
+
+/// A point at a random hyperbolic distance in `[lo, hi)` from the origin,
+/// in a random direction.
+fn point_in(rng: &mut SplitMix64, lo: f64, hi: f64) -> Point {
+    let d = rng.range(lo, hi);
+    Point::at_distance_from_origin(cube_direction(rng), d).expect("finite distance")
+}
+
+/// A random isometry with translation part at distance up to `max_d`.
+fn random_isometry(rng: &mut SplitMix64, max_d: f64) -> Isometry {
+    let a = point_in(rng, 0.0, max_d);
+    let axis = cube_direction(rng);
+    let angle = rng.range(-3.0, 3.0);
+    let q = glam::DMat3::from_axis_angle(axis, angle);
+    Isometry::transvection_from_origin(a).compose(&Isometry::orthogonal_unchecked(q))
 }
 
 /// One operation's measured errors, and its speed.
 pub struct Family {
+    /// What was measured, with the range of its inputs; stable, since the
+    /// reference tests look their bounds up by its prefix.
     pub operation: &'static str,
+    /// The unit of every error: "relative" or "hyperbolic distance".
     pub unit: &'static str,
+    /// One error per case that produced a result.
     pub errors: Vec<f64>,
     /// Mean wall time of one f64 call, in nanoseconds (noisy; reported,
     /// never asserted).
@@ -112,9 +97,11 @@ impl Clock {
 }
 
 impl Family {
+    /// The largest error; 0 with no cases.
     pub fn max(&self) -> f64 {
         self.errors.iter().copied().fold(0.0, f64::max)
     }
+    /// The median error (the upper one of an even count); 0 with no cases.
     pub fn median(&self) -> f64 {
         let mut e = self.errors.clone();
         e.sort_by(f64::total_cmp);
@@ -129,12 +116,12 @@ fn rel(got: f64, want: &R) -> f64 {
 
 /// Point pairs near the absolute: gaps `1 - |x|` log-uniform in
 /// `[1e-15, 1]`, distances up to ~70.
-pub fn boundary_pairs(rng: &mut Rng, n: usize) -> Vec<(Point, Point)> {
+pub fn boundary_pairs(rng: &mut SplitMix64, n: usize) -> Vec<(Point, Point)> {
     (0..n)
         .map(|_| {
             let mut p = || {
                 let g = 10f64.powf(rng.range(-15.0, 0.0));
-                let dir = rng.direction();
+                let dir = cube_direction(rng);
                 Point::from_coords(dir * (1.0 - g)).unwrap_or(Point::ORIGIN)
             };
             (p(), p())
@@ -163,16 +150,16 @@ fn distance_family(operation: &'static str, pairs: &[(Point, Point)]) -> Family 
 }
 
 /// Relative error of `distance` on pairs near the absolute.
-pub fn distance_boundary(rng: &mut Rng, n: usize) -> Family {
+pub fn distance_boundary(rng: &mut SplitMix64, n: usize) -> Family {
     distance_family("distance (1-|x| down to 1e-15)", &boundary_pairs(rng, n))
 }
 
 /// Pairs `1e-12` apart (Euclidean) anywhere in the ball.
-pub fn near_pairs(rng: &mut Rng, n: usize) -> Vec<(Point, Point)> {
+pub fn near_pairs(rng: &mut SplitMix64, n: usize) -> Vec<(Point, Point)> {
     (0..n)
         .map(|_| {
-            let a = rng.point_in(0.0, 6.0);
-            let step = rng.direction() * 1e-12;
+            let a = point_in(rng, 0.0, 6.0);
+            let step = cube_direction(rng) * 1e-12;
             let b = Point::from_coords(a.coords() + step).unwrap_or(a);
             (a, b)
         })
@@ -180,23 +167,23 @@ pub fn near_pairs(rng: &mut Rng, n: usize) -> Vec<(Point, Point)> {
 }
 
 /// Relative error of `distance` on nearly coincident points.
-pub fn distance_near(rng: &mut Rng, n: usize) -> Family {
+pub fn distance_near(rng: &mut SplitMix64, n: usize) -> Family {
     distance_family("distance (points 1e-12 apart)", &near_pairs(rng, n))
 }
 
 /// Segments with ends up to distance `reach` from the origin.
-pub fn segments(rng: &mut Rng, n: usize, reach: f64) -> Vec<Segment> {
+pub fn segments(rng: &mut SplitMix64, n: usize, reach: f64) -> Vec<Segment> {
     (0..n)
         .filter_map(|_| {
-            let a = rng.point_in(0.0, reach);
-            let b = rng.point_in(0.0, reach);
+            let a = point_in(rng, 0.0, reach);
+            let b = point_in(rng, 0.0, reach);
             Segment::new(a, b).ok()
         })
         .collect()
 }
 
 /// Hyperbolic distance from `T(start)` to `end` for the translation along a segment.
-pub fn translation(rng: &mut Rng, n: usize) -> Family {
+pub fn translation(rng: &mut SplitMix64, n: usize) -> Family {
     let mut clock = Clock::default();
     let errors = segments(rng, n, 8.0)
         .iter()
@@ -214,14 +201,14 @@ pub fn translation(rng: &mut Rng, n: usize) -> Family {
 }
 
 /// Hyperbolic distance from `R(R(x))` to `x` for reflections in random planes.
-pub fn reflection_involution(rng: &mut Rng, n: usize) -> Family {
+pub fn reflection_involution(rng: &mut SplitMix64, n: usize) -> Family {
     let mut clock = Clock::default();
     let errors = (0..n)
         .filter_map(|_| {
-            let pts: Vec<Vertex> = (0..3).map(|_| rng.point_in(0.0, 4.0).into()).collect();
+            let pts: Vec<Vertex> = (0..3).map(|_| point_in(rng, 0.0, 4.0).into()).collect();
             let plane = HPlane::through(&pts[0], &pts[1], &pts[2]).ok()?;
             let refl = Isometry::reflection(&plane);
-            let x = rng.point_in(0.0, 6.0);
+            let x = point_in(rng, 0.0, 6.0);
             let twice = clock.run(|| refl.apply(&refl.apply(&x)));
             Some(r::distance(twice.coords(), x.coords()).to_f64())
         })
@@ -238,21 +225,21 @@ pub fn reflection_involution(rng: &mut Rng, n: usize) -> Family {
 /// from the origin and stays there: a random isometry while the composite's
 /// translation part is within `cap`, else a transvection of length 1..2
 /// pulling it back towards the origin.
-pub fn walk_step(rng: &mut Rng, current: &Point, cap: f64) -> Isometry {
+pub fn walk_step(rng: &mut SplitMix64, current: &Point, cap: f64) -> Isometry {
     if current.distance_from_origin() > cap {
         let home = -current.coords().normalize();
         let len = rng.range(1.0, 2.0);
         let p = Point::at_distance_from_origin(home, len).expect("short step");
         Isometry::transvection_from_origin(p)
     } else {
-        rng.isometry(2.0)
+        random_isometry(rng, 2.0)
     }
 }
 
 /// Leftover translation after composing `steps` random isometries and then
 /// their inverses in reverse order, for a walk capped at `cap`; also returns
 /// the peak distance the composite reached.
-pub fn drift(rng: &mut Rng, chains: usize, steps: usize, cap: f64) -> (Family, f64) {
+pub fn drift(rng: &mut SplitMix64, chains: usize, steps: usize, cap: f64) -> (Family, f64) {
     let mut peak: f64 = 0.0;
     let mut errors = Vec::new();
     let mut ns = 0.0;
@@ -294,9 +281,9 @@ type HitCase = Option<(DVec3, f64, Box<dyn Fn(&V4) -> R>)>;
 
 fn hit_family(
     operation: &'static str,
-    rng: &mut Rng,
+    rng: &mut SplitMix64,
     n: usize,
-    mut case: impl FnMut(&mut Rng, &mut Clock) -> HitCase,
+    mut case: impl FnMut(&mut SplitMix64, &mut Clock) -> HitCase,
 ) -> Family {
     let mut clock = Clock::default();
     let mut errors = Vec::new();
@@ -319,17 +306,18 @@ fn hit_family(
 }
 
 /// A direction from the origin that passes near `target`.
-fn aim(rng: &mut Rng, target: &Point, spread: f64) -> DVec3 {
-    (target.coords().normalize() + rng.direction() * spread).normalize()
+fn aim(rng: &mut SplitMix64, target: &Point, spread: f64) -> DVec3 {
+    (target.coords().normalize() + cube_direction(rng) * spread).normalize()
 }
 
-pub fn sphere_hits(rng: &mut Rng, n: usize) -> Family {
+/// Arc length error of ray-h-sphere hits, centres 0.5 to 12 away.
+pub fn sphere_hits(rng: &mut SplitMix64, n: usize) -> Family {
     hit_family(
         "ray-sphere hit (centres up to 12 away)",
         rng,
         n,
         |rng, clock| {
-            let c = rng.point_in(0.5, 12.0);
+            let c = point_in(rng, 0.5, 12.0);
             let radius = c.distance_from_origin() * rng.range(0.01, 0.4);
             let s = HSphere::new(c, radius).ok()?;
             let dir = aim(rng, &c, 0.05);
@@ -346,17 +334,18 @@ pub fn sphere_hits(rng: &mut Rng, n: usize) -> Family {
     )
 }
 
-pub fn plane_hits(rng: &mut Rng, n: usize) -> Family {
+/// Arc length error of ray-h-plane hits, planes 0.5 to 10 away.
+pub fn plane_hits(rng: &mut SplitMix64, n: usize) -> Family {
     hit_family(
         "ray-plane hit (planes up to 10 away)",
         rng,
         n,
         |rng, clock| {
-            let centre = rng.point_in(0.5, 10.0);
+            let centre = point_in(rng, 0.5, 10.0);
             let pts: Vec<Point> = (0..3)
                 .map(|_| {
                     let off = Isometry::transvection_from_origin(centre);
-                    off.apply(&rng.point_in(0.2, 1.0))
+                    off.apply(&point_in(rng, 0.2, 1.0))
                 })
                 .collect();
             let verts: Vec<Vertex> = pts.iter().map(|&p| p.into()).collect();
@@ -374,13 +363,14 @@ pub fn plane_hits(rng: &mut Rng, n: usize) -> Family {
     )
 }
 
-pub fn polygon_hits(rng: &mut Rng, n: usize) -> Family {
+/// Arc length error of ray-polygon hits, polygons 0.5 to 8 away.
+pub fn polygon_hits(rng: &mut SplitMix64, n: usize) -> Family {
     hit_family(
         "ray-polygon hit (polygons up to 8 away)",
         rng,
         n,
         |rng, clock| {
-            let centre = rng.point_in(0.5, 8.0);
+            let centre = point_in(rng, 0.5, 8.0);
             let off = Isometry::transvection_from_origin(centre);
             let verts: Vec<Vertex> = [(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)]
                 .iter()
@@ -407,14 +397,16 @@ pub fn polygon_hits(rng: &mut Rng, n: usize) -> Family {
     )
 }
 
-pub fn cylinder_hits(rng: &mut Rng, n: usize) -> Family {
+/// Arc length error of ray-h-cylinder hits, axes through points 0.5 to 8
+/// away.
+pub fn cylinder_hits(rng: &mut SplitMix64, n: usize) -> Family {
     hit_family(
         "ray-cylinder hit (closed form; axes up to 8 away)",
         rng,
         n,
         |rng, clock| {
-            let a = rng.point_in(0.5, 8.0);
-            let b = rng.point_in(0.5, 8.0);
+            let a = point_in(rng, 0.5, 8.0);
+            let b = point_in(rng, 0.5, 8.0);
             let radius = rng.range(0.01, 0.5);
             let cyl = HCylinder::new(HLine::through(&a.into(), &b.into()).ok()?, radius).ok()?;
             let mid = Point::from_coords((a.coords() + b.coords()) * 0.5).ok()?;
@@ -433,14 +425,15 @@ pub fn cylinder_hits(rng: &mut Rng, n: usize) -> Family {
     )
 }
 
-pub fn rod_hits(rng: &mut Rng, n: usize) -> Family {
+/// Arc length error of ray-rod hits on tubes and caps, ends 0.5 to 6 away.
+pub fn rod_hits(rng: &mut SplitMix64, n: usize) -> Family {
     hit_family(
         "ray-rod hit (tube and caps, ends up to 6 away)",
         rng,
         n,
         |rng, clock| {
-            let a = rng.point_in(0.5, 6.0);
-            let b = rng.point_in(0.5, 6.0);
+            let a = point_in(rng, 0.5, 6.0);
+            let b = point_in(rng, 0.5, 6.0);
             let radius = rng.range(0.01, 0.3);
             let rod = Rod::new(a.into(), b.into(), radius).ok()?;
             let dir = if rng.unit() < 0.5 {
@@ -466,17 +459,19 @@ pub fn rod_hits(rng: &mut Rng, n: usize) -> Family {
     )
 }
 
-pub fn horosphere_hits(rng: &mut Rng, n: usize) -> Family {
+/// Arc length error of ray-horosphere hits, horospheres through points up
+/// to 10 away.
+pub fn horosphere_hits(rng: &mut SplitMix64, n: usize) -> Family {
     hit_family(
         "ray-horosphere hit (through points up to 10 away)",
         rng,
         n,
         |rng, clock| {
-            let xi_dir = rng.direction();
+            let xi_dir = cube_direction(rng);
             let xi = IdealPoint::from_direction(xi_dir).ok()?;
-            let q = rng.point_in(0.0, 10.0);
+            let q = point_in(rng, 0.0, 10.0);
             let h = Horosphere::new(xi, &q).ok()?;
-            let dir = (xi_dir + rng.direction() * 0.5).normalize();
+            let dir = (xi_dir + cube_direction(rng) * 0.5).normalize();
             let ray = Ray::from_origin_unchecked(dir);
             let hit = clock.run(|| h.intersect(&ray, 0.0, f64::INFINITY))?;
             let l = r::ideal(xi.coords());
@@ -527,7 +522,7 @@ fn det4(x: &V4, a: &V4, b: &V4, c: &V4) -> R {
 
 /// Every family, in report order.
 pub fn all(seed: u64, n: usize) -> Vec<Family> {
-    let mut rng = Rng::new(seed);
+    let mut rng = SplitMix64::new(seed);
     vec![
         distance_boundary(&mut rng, n),
         distance_near(&mut rng, n),

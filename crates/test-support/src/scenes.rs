@@ -1,11 +1,8 @@
 //! Scene builders shared by the renderer's integration tests and examples.
 //!
 //! Scenes are built directly from the IR types, so the tests do not depend on
-//! the concrete syntax of the scene language.
-
-#![allow(dead_code)]
-
-pub mod far;
+//! the concrete syntax of the scene language. Every builder panics on
+//! invalid geometry: its inputs are the tests' own constants.
 
 use hgeom::glam::{DMat3, DVec3};
 use hgeom::{
@@ -16,6 +13,8 @@ use hscene_lang::ir::{
     Camera, Light, Material, MaterialId, Net, Object, Pattern, Resolution, Rgb, Scene, Settings,
     Shape, Texture, Window,
 };
+
+use crate::SplitMix64;
 
 /// Renders with `options`, checking that no pixel failed or is non-finite.
 pub fn draw_with(scene: &Scene, options: &hrender::RenderOptions) -> hrender::Image {
@@ -203,19 +202,24 @@ pub fn scene(
     }
 }
 
+/// An h-sphere of centre `c` and hyperbolic radius `r`.
 pub fn sphere(c: Point, r: f64) -> Shape {
     Shape::Sphere(HSphere::new(c, r).expect("test sphere"))
 }
 
+/// A rod of hyperbolic radius `r` from `a` to `b`.
 pub fn rod(a: Point, b: Point, r: f64) -> Shape {
     Shape::Rod(Rod::new(a.into(), b.into(), r).expect("test rod"))
 }
 
+/// The h-cylinder of hyperbolic radius `r` about the h-line through `a` and
+/// `b`.
 pub fn cylinder(a: Point, b: Point, r: f64) -> Shape {
     let line = HLine::through(&a.into(), &b.into()).expect("test line");
     Shape::Cylinder(HCylinder::new(line, r).expect("test cylinder"))
 }
 
+/// The convex polygon with vertices `vs`, in order.
 pub fn polygon(vs: Vec<Vertex>) -> Shape {
     Shape::Polygon(ConvexPolygon::new(vs).expect("test polygon"))
 }
@@ -288,54 +292,24 @@ pub fn moved(scene: &Scene, iso: &Isometry) -> Scene {
     s
 }
 
-/// A small deterministic generator (SplitMix64) for test data.
-pub struct Rng(pub u64);
-
-impl Rng {
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
+/// A random isometry: a rotation (orientation-reversing when `mirror`)
+/// followed by a transvection of hyperbolic length between `max_shift / 2`
+/// and `max_shift`.
+pub fn random_isometry(rng: &mut SplitMix64, max_shift: f64, mirror: bool) -> Isometry {
+    let axis = rng.direction();
+    let angle = rng.range(0.0, std::f64::consts::TAU);
+    let mut q = DMat3::from_axis_angle(axis, angle);
+    if mirror {
+        q *= DMat3::from_diagonal(DVec3::new(1.0, 1.0, -1.0));
     }
-
-    /// Uniform in `[0, 1)`.
-    pub fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    /// Uniform in `[lo, hi)`.
-    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.unit()
-    }
-
-    /// A uniformly distributed unit vector.
-    pub fn direction(&mut self) -> DVec3 {
-        let z = self.range(-1.0, 1.0);
-        let phi = self.range(0.0, std::f64::consts::TAU);
-        let s = (1.0 - z * z).sqrt();
-        DVec3::new(s * phi.cos(), s * phi.sin(), z)
-    }
-
-    /// A random isometry: a rotation (orientation-reversing when `mirror`)
-    /// followed by a transvection of hyperbolic length up to `max_shift`.
-    pub fn isometry(&mut self, max_shift: f64, mirror: bool) -> Isometry {
-        let axis = self.direction();
-        let angle = self.range(0.0, std::f64::consts::TAU);
-        let mut q = DMat3::from_axis_angle(axis, angle);
-        if mirror {
-            q *= DMat3::from_diagonal(DVec3::new(1.0, 1.0, -1.0));
-        }
-        let shift = at(self.direction(), self.range(0.5 * max_shift, max_shift));
-        Isometry::transvection_from_origin(shift).compose(&Isometry::orthogonal_unchecked(q))
-    }
+    let shift = at(rng.direction(), rng.range(0.5 * max_shift, max_shift));
+    Isometry::transvection_from_origin(shift).compose(&Isometry::orthogonal_unchecked(q))
 }
 
 /// Many rods: `n` rods with random ends in a shell in front of the eye, as
 /// separate objects, plus the same number again as one wireframe.
 pub fn many_rods_scene(n: usize, size: u32) -> Scene {
-    let mut rng = Rng(7);
+    let mut rng = SplitMix64::new(7);
     let materials = vec![
         matte(0.9, 0.6, 0.2),
         matte(0.3, 0.6, 0.9),
