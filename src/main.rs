@@ -257,12 +257,22 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
     if args.frame.is_some() || frames == 1 {
         return render_frame(args, &scene, &args.output, stderr_tty, &auto_ev);
     }
-    // Every frame, each compiled on its own: the animated transformations
-    // are applied per frame. Diagnostics were shown for frame 0; those of
-    // later frames are shown only if they are errors.
+    // The scene was compiled once: every frame comes from it
+    // (`Scene::frame`), except in a scene whose animated transformations
+    // move points, where what is built from them changes shape and each
+    // frame is compiled on its own. Diagnostics were shown for frame 0;
+    // those of later frames are shown only if they are errors.
     for k in 0..frames {
         let scene = if k == 0 {
             scene.clone()
+        } else if !scene.animation.moves_points {
+            match scene.frame(k) {
+                Ok(s) => s,
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    return ExitCode::from(EXIT_SCENE_ERRORS);
+                }
+            }
         } else {
             let compiled = hscene_lang::compile_with(&source, &compile_options(&args.scene, k));
             match compiled.scene {

@@ -8,8 +8,10 @@ use std::num::NonZeroU32;
 
 use hgeom::{Isometry, Point, Vertex};
 
+pub(crate) mod animation;
 mod shape;
 
+pub use animation::{Animation, FrameError, Motion, Track, TrackBase, compose, frame_time};
 pub use shape::{BoxedSurface, Shape, Surfaces};
 
 /// A linear RGB triple.
@@ -313,4 +315,7 @@ pub struct Scene {
     pub points: Vec<PointRecord>,
     /// Which animation frame this is (0-based, below `settings.frames`).
     pub frame: u32,
+    /// What moves from frame to frame: [`Scene::frame`] gives any frame
+    /// of the animation from this one.
+    pub animation: Animation,
 }

@@ -38,7 +38,7 @@ use std::path::Path;
 use hgeom::{HPlane, Segment};
 
 use crate::diagnostic::{Code, Diagnostic, LineIndex, Span};
-use crate::ir::{Light, Material, Object, PointRecord, Scene, Settings};
+use crate::ir::{Animation, Light, Material, Object, PointRecord, Scene, Settings, frame_time};
 use crate::syntax::{Clause, Section, SourceFile, Value};
 
 pub(crate) use globals::GLOBAL_KEYS;
@@ -93,6 +93,8 @@ struct Lowerer<'d> {
     time: f64,
     /// The `animate` clauses seen.
     animations: Vec<Span>,
+    /// What moves from frame to frame (`apply_moves` fills the tracks).
+    animation: Animation,
     /// Primitives so far, and whether the cap was reported (`budget.rs`).
     primitives: u64,
     primitive_cap_reported: bool,
@@ -115,12 +117,9 @@ pub(crate) fn lower(
     let mut lw = Lowerer {
         base_dir: options.base_dir.as_deref(),
         frame,
-        time: if frames > 1 {
-            f64::from(frame) / f64::from(frames - 1)
-        } else {
-            0.0
-        },
+        time: frame_time(frame, frames),
         animations: Vec::new(),
+        animation: Animation::default(),
         diags,
         points: names::Table::default(),
         materials: names::Table::default(),
@@ -203,6 +202,7 @@ pub(crate) fn lower(
             })
             .collect(),
         frame: lw.frame,
+        animation: lw.animation,
     })
 }
 

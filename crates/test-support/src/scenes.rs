@@ -199,6 +199,7 @@ pub fn scene(
         objects,
         points: Vec::new(),
         frame: 0,
+        animation: Default::default(),
     }
 }
 

@@ -114,6 +114,13 @@ impl Shape {
         }
     }
 
+    /// The image of the shape under an isometry, or `None` if some part of
+    /// it leaves what f64 can represent.
+    pub fn moved(&self, iso: &Isometry) -> Option<Shape> {
+        let moved = self.transformed(iso);
+        moved.is_representable().then_some(moved)
+    }
+
     /// True if every surface of the shape is representable in f64
     /// (`hgeom::Shape::is_representable`).
     pub fn is_representable(&self) -> bool {

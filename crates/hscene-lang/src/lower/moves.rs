@@ -8,26 +8,27 @@
 //! exists, and the isometries are applied to it in statement order: an
 //! object is built from the final positions of its points, then moved by
 //! its own transformations, first to last (composed, then applied once).
+//! A target with an animated transformation becomes a track of the IR's
+//! animation, which keeps its state before the moves so that any frame can
+//! be computed from the compiled scene (`ir::Scene::frame`).
 
 use std::collections::HashMap;
-
-use hgeom::glam::DVec3;
-use hgeom::{HLine, Isometry, Point};
 
 use super::Lowerer;
 use super::names::{CAMERA, TargetSlot};
 use super::suggest::{MAX_CANDIDATES, closest};
 use super::text::{quote, reference_text, shorten};
 use crate::diagnostic::{Code, Diagnostic};
-use crate::ir::{Camera, Shape};
+use crate::ir::animation::{move_camera, move_object};
+use crate::ir::{Camera, Motion, Track, TrackBase, compose};
 use crate::syntax::{RefTarget, Reference};
 
 /// A transformation of an `@` target, waiting for its target to exist.
 pub(super) struct PendingMove {
     pub(super) target: Reference,
-    /// `None` when the isometry could not be built (already reported); the
+    /// `None` when the motion could not be built (already reported); the
     /// target is still resolved so that a misspelt name is reported too.
-    pub(super) iso: Option<Isometry>,
+    pub(super) motion: Option<Motion>,
 }
 
 impl Lowerer<'_> {
@@ -40,12 +41,12 @@ impl Lowerer<'_> {
     /// can represent, the target's last transformation is blamed.
     pub(super) fn apply_moves(&mut self, camera: &mut Option<Camera>) {
         let moves = std::mem::take(&mut self.moves);
-        // Per target, in order of first use: the composed isometry (`None`
-        // if one of them failed to build, which was reported) and the last
+        // Per target, in order of first use: its motions (`None` if one of
+        // them failed to build, which was reported) and the last
         // statement's target reference.
         let mut order: Vec<String> = Vec::new();
-        let mut composed: HashMap<String, (Option<Isometry>, Reference)> = HashMap::new();
-        for mv in &moves {
+        let mut collected: HashMap<String, (Option<Vec<Motion>>, Reference)> = HashMap::new();
+        for mv in moves {
             let name = match &mv.target.target {
                 RefTarget::Name(n) => n.clone(),
                 RefTarget::Index(_) => {
@@ -67,30 +68,47 @@ impl Lowerer<'_> {
                 self.undefined_target(&mv.target, &name);
                 continue;
             }
-            match composed.get_mut(&name) {
-                Some((acc, last)) => {
-                    *acc = match (acc.as_ref(), &mv.iso) {
-                        // `a.compose(b)` applies `b` first.
-                        (Some(a), Some(b)) => Some(b.compose(a)),
+            match collected.get_mut(&name) {
+                Some((motions, last)) => {
+                    *motions = match (motions.take(), mv.motion) {
+                        (Some(mut all), Some(m)) => {
+                            all.push(m);
+                            Some(all)
+                        }
                         _ => None,
                     };
-                    *last = mv.target.clone();
+                    *last = mv.target;
                 }
                 None => {
                     order.push(name.clone());
-                    composed.insert(name, (mv.iso, mv.target.clone()));
+                    collected.insert(name, (mv.motion.map(|m| vec![m]), mv.target));
                 }
             }
         }
         for name in order {
-            let Some((Some(iso), target)) = composed.remove(&name) else {
+            let Some((Some(motions), target)) = collected.remove(&name) else {
                 continue;
             };
+            // Every motion was built at this frame's time, so this succeeds.
+            let Ok(iso) = compose(&motions, self.time) else {
+                self.out_of_range(&target, "this target");
+                continue;
+            };
+            let animated = motions.iter().any(Motion::is_animated);
+            let mut track = |base: TrackBase| {
+                if animated {
+                    self.animation.tracks.push(Track {
+                        base,
+                        motions: motions.clone(),
+                    });
+                }
+            };
             if name == CAMERA {
-                if let Some(cam) = camera.as_mut()
-                    && move_camera(cam, &iso).is_none()
-                {
-                    self.out_of_range(&target, "the camera");
+                if let Some(cam) = camera.as_mut() {
+                    track(TrackBase::Camera(*cam));
+                    if move_camera(cam, &iso).is_none() {
+                        self.out_of_range(&target, "the camera");
+                    }
                 }
                 continue;
             }
@@ -99,13 +117,13 @@ impl Lowerer<'_> {
             };
             match slot {
                 TargetSlot::Objects(indices) => {
+                    track(TrackBase::Objects {
+                        objects: indices.iter().map(|&i| self.objects[i].0.clone()).collect(),
+                        indices: indices.clone(),
+                    });
                     for i in indices {
-                        match transform_shape(&self.objects[i].0.shape, &iso) {
-                            Some(s) => {
-                                let object = &mut self.objects[i].0;
-                                object.shape = s;
-                                object.placement = iso.compose(&object.placement);
-                            }
+                        match move_object(&self.objects[i].0, &iso) {
+                            Some(moved) => self.objects[i].0 = moved,
                             None => {
                                 self.out_of_range(&target, "this object");
                                 break;
@@ -113,10 +131,14 @@ impl Lowerer<'_> {
                         }
                     }
                 }
-                TargetSlot::Light(Some(i)) => match iso.checked_apply(&self.lights[i].0.position) {
-                    Ok(p) => self.lights[i].0.position = p,
-                    Err(_) => self.out_of_range(&target, "this light"),
-                },
+                TargetSlot::Light(Some(i)) => {
+                    let position = self.lights[i].0.position;
+                    track(TrackBase::Light { index: i, position });
+                    match iso.checked_apply(&position) {
+                        Ok(p) => self.lights[i].0.position = p,
+                        Err(_) => self.out_of_range(&target, "this light"),
+                    }
+                }
                 // The light had errors of its own.
                 TargetSlot::Light(None) => {}
             }
@@ -161,39 +183,4 @@ impl Lowerer<'_> {
             ),
         );
     }
-}
-
-/// Moves the eye, the target and the up point. A camera with the default
-/// up direction (`+y` at the eye) first gets an explicit up point on the
-/// geodesic leaving the eye in that direction, so that the direction turns
-/// with the camera. `None` if a point leaves what f64 can represent.
-fn move_camera(cam: &mut Camera, iso: &Isometry) -> Option<()> {
-    if cam.up.is_none() {
-        cam.up = default_up_point(&cam.eye);
-    }
-    let eye = iso.checked_apply(&cam.eye).ok()?;
-    let target = iso.checked_apply(&cam.target).ok()?;
-    let up = match &cam.up {
-        Some(u) => Some(iso.checked_apply(u).ok()?),
-        None => None,
-    };
-    *cam = Camera { eye, target, up };
-    Some(())
-}
-
-/// A point towards which the default up direction (`+y` at the eye) points.
-fn default_up_point(eye: &Point) -> Option<Point> {
-    let line = HLine::from_point_direction(eye, DVec3::Y).ok()?;
-    // Any point on the geodesic gives the same direction; a short step stays
-    // representable even for an eye far out.
-    [1.0, 0.1, 1e-3]
-        .into_iter()
-        .find_map(|s| line.point_at(s).ok())
-}
-
-/// The image of a shape under an isometry, or `None` if some part of it
-/// leaves what f64 can represent.
-pub(super) fn transform_shape(shape: &Shape, iso: &Isometry) -> Option<Shape> {
-    let moved = shape.transformed(iso);
-    moved.is_representable().then_some(moved)
 }

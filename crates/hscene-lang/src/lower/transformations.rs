@@ -11,6 +11,7 @@ use super::moves::PendingMove;
 use super::suggest::did_you_mean;
 use super::text::{and_list, quote, reference_text};
 use crate::diagnostic::{Code, Diagnostic, Span};
+use crate::ir::Motion;
 use crate::syntax::{Clause, Ident, RefSigil, Reference, Section, Value};
 
 /// What a transformation keyword does.
@@ -47,23 +48,6 @@ pub(crate) const TRANSFORMATIONS: [&str; KEYWORDS.len()] = {
 
 fn keyword(name: &str) -> Option<Transformation> {
     KEYWORDS.iter().find(|(n, _)| *n == name).map(|(_, t)| *t)
-}
-
-/// The translation along `line` by `fraction` of its length: the whole
-/// translation (first point to second) at 1, the identity at 0.
-fn partial_translation(line: &Segment, fraction: f64) -> Result<Isometry, hgeom::GeomError> {
-    if fraction == 1.0 {
-        return Isometry::translation(line);
-    }
-    if fraction == 0.0 {
-        return Ok(Isometry::IDENTITY);
-    }
-    let (a, b) = (line.start(), line.end());
-    let geodesic = hgeom::HLine::through(&Vertex::Interior(a), &Vertex::Interior(b))?;
-    let from = geodesic.foot_parameter(&a);
-    let to = geodesic.foot_parameter(&b);
-    let end = geodesic.point_at(from + fraction * (to - from))?;
-    Isometry::translation(&Segment::new(a, end)?)
 }
 
 impl Lowerer<'_> {
@@ -123,10 +107,10 @@ impl Lowerer<'_> {
                 }
                 (Some(target), Some(kind)) if is_move => match target.sigil {
                     RefSigil::At => {
-                        let iso = self.transformation(kind, name, arg.as_ref(), *span, animate);
+                        let motion = self.transformation(kind, name, arg.as_ref(), *span, animate);
                         self.moves.push(PendingMove {
                             target: target.clone(),
-                            iso,
+                            motion,
                         });
                     }
                     RefSigil::Hash => {
@@ -141,10 +125,18 @@ impl Lowerer<'_> {
                         let _ = self.transformation(kind, name, arg.as_ref(), *span, animate);
                     }
                     RefSigil::Percent => {
-                        if let Some(iso) =
-                            self.transformation(kind, name, arg.as_ref(), *span, animate)
-                        {
-                            self.move_point(target, &iso);
+                        let motion = self.transformation(kind, name, arg.as_ref(), *span, animate);
+                        if let Some(motion) = motion {
+                            // What is built from a moving point changes shape
+                            // between frames: each frame is compiled alone.
+                            self.animation.moves_points |= motion.is_animated();
+                            match motion.at(self.time) {
+                                Ok(iso) => self.move_point(target, &iso),
+                                // Checked when the motion was built.
+                                Err(_) => {
+                                    let _ = self.resolve_point(target);
+                                }
+                            }
                         } else {
                             // Still mark the target as used so errors don't cascade into lints.
                             let _ = self.resolve_point(target);
@@ -264,10 +256,11 @@ impl Lowerer<'_> {
         }
     }
 
-    /// The isometry of a `Rotate`, `Translate` or `Reflect` statement. With
-    /// `animate` (the span of the `animate` clause), only the fraction of it
-    /// that belongs to this frame: the angle, or the distance along the
-    /// line, times the frame's time in `0..=1`.
+    /// The motion of a `Rotate`, `Translate` or `Reflect` statement: fixed,
+    /// or with `animate` (the span of the `animate` clause) a rotation or
+    /// translation of which frame `k` takes the fraction `k / (N - 1)`. An
+    /// animated translation is built at this frame's time here, so that one
+    /// that cannot be built is reported.
     fn transformation(
         &mut self,
         kind: Transformation,
@@ -275,32 +268,36 @@ impl Lowerer<'_> {
         arg: Option<&Value>,
         span: Span,
         animate: Option<Span>,
-    ) -> Option<Isometry> {
+    ) -> Option<Motion> {
         let items: Vec<&Value> = match arg {
             Some(Value::Tuple { items, .. }) => items.iter().collect(),
             Some(v) => vec![v],
             None => Vec::new(),
         };
-        let fraction = match animate {
+        let animated = match animate {
             Some(at) => {
                 self.animations.push(at);
-                self.time
+                true
             }
-            None => 1.0,
+            None => false,
         };
         match (kind, items.as_slice()) {
             (Transformation::Rotate, [line, angle]) => {
                 let line = self.resolve_line(line);
                 let angle = self.number(angle);
-                Some(Isometry::rotation_about_segment_unchecked(
-                    &line?,
-                    fraction * angle?,
-                ))
+                let (axis, angle) = (line?, angle?);
+                Some(if animated {
+                    Motion::Rotate { axis, angle }
+                } else {
+                    Motion::Fixed(Isometry::rotation_about_segment_unchecked(&axis, angle))
+                })
             }
             (Transformation::Translate, [line]) => {
-                let line = self.resolve_line(line)?;
-                match partial_translation(&line, fraction) {
-                    Ok(t) => Some(t),
+                let along = self.resolve_line(line)?;
+                let motion = Motion::Translate { along };
+                match motion.at(if animated { self.time } else { 1.0 }) {
+                    Ok(_) if animated => Some(motion),
+                    Ok(whole) => Some(Motion::Fixed(whole)),
                     Err(e) => {
                         self.error(
                             Code::NumericFailure,
@@ -318,7 +315,9 @@ impl Lowerer<'_> {
                             .with_help("a reflection has no halfway state; animate a rotation or translation instead, or remove `, animate`"),
                     );
                 }
-                Some(Isometry::reflection(&self.resolve_plane(plane)?))
+                Some(Motion::Fixed(Isometry::reflection(
+                    &self.resolve_plane(plane)?,
+                )))
             }
             (kind, _) => {
                 let usage = match kind {

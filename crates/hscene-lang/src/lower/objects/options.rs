@@ -10,7 +10,6 @@ use hgeom::{ConvexPolygon, GeomError, Isometry, Point, Rod, Vertex};
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::{MaterialId, Object, Shape};
 use crate::lower::Lowerer;
-use crate::lower::moves::transform_shape;
 use crate::lower::suggest::closest;
 use crate::syntax::{Ident, Statement, Value};
 
@@ -208,7 +207,7 @@ impl Lowerer<'_> {
             placement = iso;
             let mut moved = Vec::with_capacity(shapes.len());
             for s in &shapes {
-                match transform_shape(s, &iso) {
+                match s.moved(&iso) {
                     Some(m) => moved.push(m),
                     None => {
                         self.report(

@@ -1,0 +1,252 @@
+//! Animation compiled once: the transformations of named objects, lights
+//! and the camera, kept as motions that any frame can be asked of
+//! ([`Scene::frame`]) without compiling the scene again.
+//!
+//! A target's transformations are applied in statement order, composed into
+//! one isometry and applied once; an animated one (`, animate`) contributes
+//! the fraction `k / (N - 1)` of its angle or distance in frame `k` of `N`.
+//! A target with at least one animated transformation is a [`Track`]: its
+//! state before its transformations is kept, and each frame composes the
+//! motions at that frame's time and applies them to it, exactly as the
+//! lowering of that frame alone would.
+
+use hgeom::glam::DVec3;
+use hgeom::{GeomError, HLine, Isometry, Point, Segment, Vertex};
+
+use super::{Camera, Object, Scene};
+
+/// One transformation of a target, as written.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Motion {
+    /// Applied in full in every frame (not animated, or a reflection).
+    Fixed(Isometry),
+    /// A rotation about the h-line through the segment's points, by the
+    /// frame's time times `angle` (radians).
+    Rotate {
+        /// Two points of the axis.
+        axis: Segment,
+        /// The whole angle, reached in the last frame.
+        angle: f64,
+    },
+    /// The translation along the segment's h-line by the frame's time times
+    /// its length: the identity at time 0, the whole translation (first
+    /// point to second) at 1.
+    Translate {
+        /// From where to where the whole translation goes.
+        along: Segment,
+    },
+}
+
+impl Motion {
+    /// The isometry at `time` in `0..=1`.
+    pub fn at(&self, time: f64) -> Result<Isometry, GeomError> {
+        match self {
+            Motion::Fixed(iso) => Ok(*iso),
+            Motion::Rotate { axis, angle } => Ok(Isometry::rotation_about_segment_unchecked(
+                axis,
+                time * angle,
+            )),
+            Motion::Translate { along } => partial_translation(along, time),
+        }
+    }
+
+    /// True unless the motion is the same in every frame.
+    pub fn is_animated(&self) -> bool {
+        !matches!(self, Motion::Fixed(_))
+    }
+}
+
+/// The translation along `line` by `fraction` of its length: the whole
+/// translation (first point to second) at 1, the identity at 0.
+fn partial_translation(line: &Segment, fraction: f64) -> Result<Isometry, GeomError> {
+    if fraction == 1.0 {
+        return Isometry::translation(line);
+    }
+    if fraction == 0.0 {
+        return Ok(Isometry::IDENTITY);
+    }
+    let (a, b) = (line.start(), line.end());
+    let geodesic = HLine::through(&Vertex::Interior(a), &Vertex::Interior(b))?;
+    let from = geodesic.foot_parameter(&a);
+    let to = geodesic.foot_parameter(&b);
+    let end = geodesic.point_at(from + fraction * (to - from))?;
+    Isometry::translation(&Segment::new(a, end)?)
+}
+
+/// The composition of `motions` at `time`: the first applied first.
+pub fn compose(motions: &[Motion], time: f64) -> Result<Isometry, GeomError> {
+    let mut isos = motions.iter().map(|m| m.at(time));
+    let first = isos.next().unwrap_or(Ok(Isometry::IDENTITY))?;
+    // `a.compose(b)` applies `b` first.
+    isos.try_fold(first, |acc, iso| Ok(iso?.compose(&acc)))
+}
+
+/// What a track moves, as it was before its transformations.
+#[derive(Clone, Debug, PartialEq)]
+pub enum TrackBase {
+    /// The objects one statement declared.
+    Objects {
+        /// Their indices in [`Scene::objects`].
+        indices: Vec<usize>,
+        /// The objects before their transformations, in the same order.
+        objects: Vec<Object>,
+    },
+    /// A light's position (`Scene::lights[index]`).
+    Light {
+        /// Index in [`Scene::lights`].
+        index: usize,
+        /// The position before its transformations.
+        position: Point,
+    },
+    /// The camera before its transformations.
+    Camera(Camera),
+}
+
+/// A target with at least one animated transformation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Track {
+    /// The target before its transformations.
+    pub base: TrackBase,
+    /// Its transformations in statement order; at least one is animated.
+    pub motions: Vec<Motion>,
+}
+
+/// The animation of a scene: how many frames, and what moves.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Animation {
+    /// The targets that move from frame to frame.
+    pub tracks: Vec<Track>,
+    /// True when animated transformations act on points (`%P->...,
+    /// animate`): what is built from those points changes shape between
+    /// frames, so each frame must be compiled from the source
+    /// (`hscene_lang::Options::frame`); [`Scene::frame`] refuses.
+    pub moves_points: bool,
+}
+
+/// Why [`Scene::frame`] cannot give a frame.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum FrameError {
+    /// Past the last frame.
+    #[error("frame {frame} is past the last frame ({last})")]
+    PastEnd {
+        /// The frame asked for.
+        frame: u32,
+        /// The last frame.
+        last: u32,
+    },
+    /// The scene animates points; compile the frame from the source.
+    #[error("the scene animates points, so frame {frame} must be compiled from the source")]
+    NeedsSource {
+        /// The frame asked for.
+        frame: u32,
+    },
+    /// A transformation takes its target beyond what f64 represents, or
+    /// cannot be built, in this frame.
+    #[error("in frame {frame}, {what} leaves what f64 can represent")]
+    OutOfRange {
+        /// The frame.
+        frame: u32,
+        /// What moved: `object 3`, `light 1`, `the camera`.
+        what: String,
+    },
+}
+
+/// The time of frame `k` of `frames`: `k / (frames - 1)`, 0 for a still.
+pub fn frame_time(frame: u32, frames: u32) -> f64 {
+    if frames > 1 {
+        f64::from(frame) / f64::from(frames - 1)
+    } else {
+        0.0
+    }
+}
+
+impl Scene {
+    /// The scene in animation frame `k` (0-based, below `settings.frames`),
+    /// from this compiled scene, whichever frame it was compiled for: the
+    /// tracks' motions at frame `k`'s time applied to their targets.
+    pub fn frame(&self, k: u32) -> Result<Scene, FrameError> {
+        let frames = self.settings.frames;
+        if k >= frames {
+            return Err(FrameError::PastEnd {
+                frame: k,
+                last: frames.saturating_sub(1),
+            });
+        }
+        if self.animation.moves_points && k != self.frame {
+            return Err(FrameError::NeedsSource { frame: k });
+        }
+        let time = frame_time(k, frames);
+        let mut scene = self.clone();
+        scene.frame = k;
+        for track in &self.animation.tracks {
+            let out_of_range = |what: String| FrameError::OutOfRange { frame: k, what };
+            let base_name = match &track.base {
+                TrackBase::Objects { indices, .. } => {
+                    format!("object {}", indices.first().map_or(0, |i| i + 1))
+                }
+                TrackBase::Light { index, .. } => format!("light {}", index + 1),
+                TrackBase::Camera(_) => "the camera".to_string(),
+            };
+            let iso = compose(&track.motions, time).map_err(|_| out_of_range(base_name.clone()))?;
+            match &track.base {
+                TrackBase::Objects { indices, objects } => {
+                    for (&i, base) in indices.iter().zip(objects) {
+                        let moved = move_object(base, &iso)
+                            .ok_or_else(|| out_of_range(format!("object {}", i + 1)))?;
+                        scene.objects[i] = moved;
+                    }
+                }
+                TrackBase::Light { index, position } => {
+                    scene.lights[*index].position = iso
+                        .checked_apply(position)
+                        .map_err(|_| out_of_range(base_name))?;
+                }
+                TrackBase::Camera(base) => {
+                    let mut camera = *base;
+                    move_camera(&mut camera, &iso).ok_or_else(|| out_of_range(base_name))?;
+                    scene.camera = camera;
+                }
+            }
+        }
+        Ok(scene)
+    }
+}
+
+/// The object moved by `iso`: its shape moved, its placement composed;
+/// `None` if the shape leaves what f64 can represent.
+pub(crate) fn move_object(object: &Object, iso: &Isometry) -> Option<Object> {
+    Some(Object {
+        shape: object.shape.moved(iso)?,
+        material: object.material,
+        name: object.name.clone(),
+        placement: iso.compose(&object.placement),
+    })
+}
+
+/// Moves the eye, the target and the up point. A camera with the default
+/// up direction (`+y` at the eye) first gets an explicit up point on the
+/// geodesic leaving the eye in that direction, so that the direction turns
+/// with the camera. `None` if a point leaves what f64 can represent.
+pub(crate) fn move_camera(cam: &mut Camera, iso: &Isometry) -> Option<()> {
+    if cam.up.is_none() {
+        cam.up = default_up_point(&cam.eye);
+    }
+    let eye = iso.checked_apply(&cam.eye).ok()?;
+    let target = iso.checked_apply(&cam.target).ok()?;
+    let up = match &cam.up {
+        Some(u) => Some(iso.checked_apply(u).ok()?),
+        None => None,
+    };
+    *cam = Camera { eye, target, up };
+    Some(())
+}
+
+/// A point towards which the default up direction (`+y` at the eye) points.
+fn default_up_point(eye: &Point) -> Option<Point> {
+    let line = HLine::from_point_direction(eye, DVec3::Y).ok()?;
+    // Any point on the geodesic gives the same direction; a short step stays
+    // representable even for an eye far out.
+    [1.0, 0.1, 1e-3]
+        .into_iter()
+        .find_map(|s| line.point_at(s).ok())
+}
