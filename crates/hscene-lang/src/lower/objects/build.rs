@@ -26,19 +26,33 @@ impl Lowerer<'_> {
         values: &[&Value],
         smooth: Option<f64>,
     ) -> Option<Vec<Shape>> {
-        match (kind, args) {
-            (ObjectKeyword::Sphere, [Arg::Point(c), Arg::Number(r)]) => HSphere::new(*c, *r)
-                .map_err(|e| self.geom_failure(values[1].span(), "this sphere", &e))
-                .ok()
-                .map(|s| vec![Shape::Sphere(s)]),
-            (ObjectKeyword::Polygon, [Arg::Vertices(vs)]) => {
+        // Exhaustive over the keywords, so a new keyword without a case here
+        // does not compile; the arguments were checked against the keyword's
+        // row, so a mismatch (`None`) follows an error already reported.
+        match kind {
+            ObjectKeyword::Sphere => {
+                let [Arg::Point(c), Arg::Number(r)] = args else {
+                    return None;
+                };
+                HSphere::new(*c, *r)
+                    .map_err(|e| self.geom_failure(values[1].span(), "this sphere", &e))
+                    .ok()
+                    .map(|s| vec![Shape::Sphere(s)])
+            }
+            ObjectKeyword::Polygon => {
+                let [Arg::Vertices(vs)] = args else {
+                    return None;
+                };
                 let Value::Tuple { items, span } = values[0] else {
                     return None;
                 };
                 self.convex_polygon(vs.clone(), items, *span)
                     .map(|p| vec![Shape::Polygon(p)])
             }
-            (ObjectKeyword::Rod, [Arg::Vertex(a), Arg::Vertex(b), Arg::Number(r)]) => {
+            ObjectKeyword::Rod => {
+                let [Arg::Vertex(a), Arg::Vertex(b), Arg::Number(r)] = args else {
+                    return None;
+                };
                 match Rod::new(*a, *b, *r) {
                     Ok(rod) => Some(vec![Shape::Rod(rod)]),
                     Err(e) => {
@@ -47,7 +61,10 @@ impl Lowerer<'_> {
                     }
                 }
             }
-            (ObjectKeyword::Cylinder, [Arg::Vertex(a), Arg::Vertex(b), Arg::Number(r)]) => {
+            ObjectKeyword::Cylinder => {
+                let [Arg::Vertex(a), Arg::Vertex(b), Arg::Number(r)] = args else {
+                    return None;
+                };
                 match HLine::through(a, b).and_then(|l| HCylinder::new(l, *r)) {
                     Ok(c) => Some(vec![Shape::Cylinder(c)]),
                     Err(e) => {
@@ -56,7 +73,10 @@ impl Lowerer<'_> {
                     }
                 }
             }
-            (ObjectKeyword::Plane, [Arg::Vertex(a), Arg::Vertex(b), Arg::Vertex(c)]) => {
+            ObjectKeyword::Plane => {
+                let [Arg::Vertex(a), Arg::Vertex(b), Arg::Vertex(c)] = args else {
+                    return None;
+                };
                 // A triangle's plane is oriented by the right-hand rule on its
                 // vertex order, the rule polygons follow too.
                 match ConvexPolygon::new(vec![*a, *b, *c]) {
@@ -74,7 +94,10 @@ impl Lowerer<'_> {
                     }
                 }
             }
-            (ObjectKeyword::Horosphere, [Arg::Ideal(c), Arg::Point(p)]) => {
+            ObjectKeyword::Horosphere => {
+                let [Arg::Ideal(c), Arg::Point(p)] = args else {
+                    return None;
+                };
                 match Horosphere::new(*c, p) {
                     Ok(h) => Some(vec![Shape::Horosphere(h)]),
                     Err(e) => {
@@ -83,10 +106,17 @@ impl Lowerer<'_> {
                     }
                 }
             }
-            (ObjectKeyword::Mesh, [Arg::File(file), Arg::Number(size)]) => self
-                .mesh(file, *size, values, smooth)
-                .map(|m| vec![Shape::Mesh(m)]),
-            (ObjectKeyword::Platonic(k), [Arg::Number(size)]) => {
+            ObjectKeyword::Mesh => {
+                let [Arg::File(file), Arg::Number(size)] = args else {
+                    return None;
+                };
+                self.mesh(file, *size, values, smooth)
+                    .map(|m| vec![Shape::Mesh(m)])
+            }
+            ObjectKeyword::Platonic(k) => {
+                let [Arg::Number(size)] = args else {
+                    return None;
+                };
                 match Polyhedron::platonic(k, *size) {
                     Ok(p) => Some(vec![Shape::Polyhedron(p)]),
                     Err(e) => {
@@ -99,17 +129,17 @@ impl Lowerer<'_> {
                     }
                 }
             }
-            (ObjectKeyword::Figure(f), args) => match figures::build(f, args) {
-                Ok(shapes) => Some(shapes),
-                Err(FigureError::Geom(e)) => {
-                    self.figure_failure(f, name, values, &e);
-                    None
+            ObjectKeyword::Figure(f) => {
+                match figures::build(f, args) {
+                    Ok(shapes) => Some(shapes),
+                    Err(FigureError::Geom(e)) => {
+                        self.figure_failure(f, name, values, &e);
+                        None
+                    }
+                    // The arguments were checked against the same table.
+                    Err(FigureError::Arguments) => None,
                 }
-                // The arguments were checked against the same table.
-                Err(FigureError::Arguments) => None,
-            },
-            // The arguments were checked against the same table.
-            _ => None,
+            }
         }
     }
 
