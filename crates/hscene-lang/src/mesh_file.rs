@@ -13,82 +13,16 @@
 //! The loader knows about files, the layout about hyperbolic space; neither
 //! knows about spans or diagnostics.
 
-use std::fmt;
 use std::path::Path;
 
-use hgeom::Point;
 use hgeom::glam::DVec3;
 
+mod data;
 mod normals;
 mod obj;
 
-/// The vertices and triangles read from a mesh file, in file coordinates.
-///
-/// Invariants: every coordinate is finite, every index is below
-/// `positions.len()`, and there is at least one triangle.
-#[derive(Clone, Debug, PartialEq)]
-pub struct MeshData {
-    /// Vertex positions as written in the file.
-    pub positions: Vec<DVec3>,
-    /// Triangles as vertex indices, in the file's winding order.
-    pub triangles: Vec<[u32; 3]>,
-    /// Vertex normals as written in the file (OBJ `vn`, PLY `nx ny nz`),
-    /// finite, of any length.
-    pub normals: Vec<DVec3>,
-    /// For each triangle, each corner's index into `normals`, or
-    /// `u32::MAX` where the file gives none; empty when it gives none at
-    /// all.
-    pub corner_normals: Vec<[u32; 3]>,
-}
-
-/// Largest mesh file read, in bytes (64 MiB): several million triangles,
-/// far more than a scene can hold (see `docs/limits.md`).
-pub const MAX_MESH_FILE_BYTES: u64 = 64 << 20;
-
-/// Why a mesh file could not be used.
-#[derive(Debug)]
-pub enum MeshFileError {
-    /// The file could not be opened or read.
-    Io(std::io::Error),
-    /// The path names something other than a regular file (a directory, a
-    /// device such as `/dev/zero`, a FIFO, a socket).
-    NotAFile,
-    /// The file is larger than [`MAX_MESH_FILE_BYTES`].
-    TooLarge {
-        /// Its size in bytes.
-        size: u64,
-    },
-    /// The extension is neither `.obj` nor `.ply`.
-    UnknownFormat,
-    /// The file is not valid OBJ/PLY, or lacks what a mesh needs. The text
-    /// names a position and a kind of problem, never the file's content.
-    Invalid(String),
-}
-
-impl MeshFileError {
-    fn invalid_at(line: usize, problem: &str) -> MeshFileError {
-        MeshFileError::Invalid(format!("line {line}: {problem}"))
-    }
-}
-
-impl fmt::Display for MeshFileError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            MeshFileError::Io(e) => write!(f, "{e}"),
-            MeshFileError::NotAFile => f.write_str("it is not a regular file"),
-            MeshFileError::TooLarge { size } => write!(
-                f,
-                "it has {size} bytes, more than the limit of {MAX_MESH_FILE_BYTES}"
-            ),
-            MeshFileError::UnknownFormat => {
-                f.write_str("the file name does not end in .obj or .ply")
-            }
-            MeshFileError::Invalid(why) => f.write_str(why),
-        }
-    }
-}
-
-impl std::error::Error for MeshFileError {}
+use data::fan;
+pub use data::{MAX_MESH_FILE_BYTES, MeshData, MeshFileError};
 
 /// The formats a mesh is read from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -165,79 +99,6 @@ fn read_bounded(path: &Path) -> Result<Vec<u8>, MeshFileError> {
         });
     }
     Ok(bytes)
-}
-
-impl MeshData {
-    /// Checks the invariants of [`MeshData`].
-    fn check(&self) -> Result<(), MeshFileError> {
-        if let Some(i) = self.positions.iter().position(|p| !p.is_finite()) {
-            return Err(MeshFileError::Invalid(format!(
-                "vertex {} has a coordinate that is not a finite number",
-                i + 1
-            )));
-        }
-        let n = self.positions.len();
-        if let Some((i, t)) = self
-            .triangles
-            .iter()
-            .enumerate()
-            .find(|(_, t)| t.iter().any(|&v| v as usize >= n))
-        {
-            return Err(MeshFileError::Invalid(format!(
-                "face {} refers to vertex {} but the file has {n} vertices",
-                i + 1,
-                t.iter().map(|&v| v as usize).max().unwrap_or(0) + 1
-            )));
-        }
-        if self.triangles.is_empty() {
-            return Err(MeshFileError::Invalid("the file has no faces".into()));
-        }
-        Ok(())
-    }
-
-    /// The centre of the bounding box and the largest distance of a vertex
-    /// from it (`None` if every vertex is the same point).
-    pub fn bounding_ball(&self) -> Option<(DVec3, f64)> {
-        let (lo, hi) = self.positions.iter().fold(
-            (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
-            |(lo, hi), p| (lo.min(*p), hi.max(*p)),
-        );
-        let centre = 0.5 * (lo + hi);
-        let radius = self
-            .positions
-            .iter()
-            .map(|p| (*p - centre).length())
-            .fold(0.0, f64::max);
-        (radius > 0.0 && radius.is_finite()).then_some((centre, radius))
-    }
-
-    /// The vertices laid out in the ball: centred, scaled to unit size, and
-    /// mapped by geodesic polar coordinates so that the farthest vertex is
-    /// at hyperbolic distance `size` from the origin (see the module docs).
-    /// `None` if the mesh has no extent.
-    pub fn layout(&self, size: f64) -> Option<Vec<Point>> {
-        let (centre, radius) = self.bounding_ball()?;
-        self.positions
-            .iter()
-            .map(|p| {
-                let u = (*p - centre) / radius;
-                let len = u.length();
-                if len == 0.0 {
-                    return Some(Point::ORIGIN);
-                }
-                Point::at_distance_from_origin(u, size * len).ok()
-            })
-            .collect()
-    }
-}
-
-/// Splits a polygon `face` (vertex indices in order) into a fan.
-fn fan(face: &[u32], out: &mut Vec<[u32; 3]>) {
-    if let Some((&first, rest)) = face.split_first() {
-        for pair in rest.windows(2) {
-            out.push([first, pair[0], pair[1]]);
-        }
-    }
 }
 
 fn parse_ply(bytes: &[u8]) -> Result<MeshData, MeshFileError> {

@@ -12,7 +12,7 @@ use hgeom::GivenNormals;
 use hgeom::glam::{DVec3, DVec4};
 use std::collections::HashMap;
 
-use super::MeshData;
+use super::data::MeshData;
 
 impl MeshData {
     /// The file's normals at the laid-out vertices, as hyperboloid tangent

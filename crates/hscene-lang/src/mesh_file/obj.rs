@@ -6,7 +6,7 @@
 
 use hgeom::glam::DVec3;
 
-use super::{MeshData, MeshFileError, fan};
+use super::data::{MeshData, MeshFileError, fan};
 
 /// Parses OBJ text (any line-end convention) into positions and triangles.
 /// Face indices are 1-based, or negative to count back from the last vertex
