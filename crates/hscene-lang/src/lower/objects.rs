@@ -18,13 +18,13 @@ mod mesh;
 pub(super) mod options;
 
 use super::Lowerer;
-use super::budget::figure_estimate;
 use super::names::TargetSlot;
 use super::suggest::closest;
 use super::text::quote;
 use crate::diagnostic::{Code, Diagnostic};
 use crate::syntax::{Clause, Ident, Section, Statement, Value};
 use args::Arg;
+use figures::figure_estimate;
 use keywords::{ObjectKeyword, keyword, object_names};
 
 impl Lowerer<'_> {

@@ -98,3 +98,23 @@ pub(super) fn limits(f: Figure) -> &'static str {
         _ => "see the figure's entry in docs/language.md for the values it admits",
     }
 }
+
+/// Cells of `Tessellation435 d` for `d = 0..=7`.
+const TESSELLATION_CELLS: [u64; 8] = [1, 7, 37, 163, 661, 2643, 10497, 41511];
+
+/// Primitives a figure will have at most, where that is large enough to
+/// matter and known before building it: its faces if they are drawn and
+/// its edges as rods if they are drawn (each edge counted for every cell,
+/// an upper bound); 0 otherwise (it is counted once built).
+pub(super) fn figure_estimate(f: Figure, depth: Option<f64>, faces: bool, edges: bool) -> u64 {
+    match (f, depth) {
+        // Six faces and twelve edges per cube; the depth was checked
+        // against 0..=7.
+        (Figure::Tessellation435, Some(d)) => {
+            TESSELLATION_CELLS.get(d as usize).map_or(u64::MAX, |c| {
+                c * (6 * u64::from(faces) + 12 * u64::from(edges))
+            })
+        }
+        _ => 0,
+    }
+}
