@@ -3,9 +3,7 @@
 
 use super::Lowerer;
 use super::camera::CameraKey;
-use super::suggest::did_you_mean;
-use super::table::{self, Row, SeenKeys, words};
-use super::text::quote;
+use super::table::{self, Row, SeenKeys, unknown_word, words};
 use super::view_globals::ViewKey;
 use crate::diagnostic::{Code, Diagnostic};
 use crate::ir::{Net, Resolution, Rgb, Settings, Window};
@@ -145,14 +143,13 @@ impl Lowerer<'_> {
 
     fn global(&mut self, key: &Ident, value: &Value) {
         let Some(global) = table::find(KEYS, &key.text) else {
-            self.report(
-                Diagnostic::new(
-                    Code::UnknownKey,
-                    key.span,
-                    format!("unknown global {}", quote(&key.text)),
-                )
-                .with_help(did_you_mean(&key.text, &GLOBAL_KEYS, &keys_help())),
-            );
+            self.report(unknown_word(
+                Code::UnknownKey,
+                key,
+                "global",
+                &GLOBAL_KEYS,
+                &keys_help(),
+            ));
             return;
         };
         match global.sets {

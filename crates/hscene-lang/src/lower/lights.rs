@@ -3,9 +3,8 @@
 use super::Lowerer;
 use super::light_strength;
 use super::names::TargetSlot;
-use super::suggest::did_you_mean;
-use super::table::{self, SeenKeys, words};
-use super::text::{and_list, quote};
+use super::table::{self, SeenKeys, unknown_word, words};
+use super::text::and_list;
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::Light;
 use crate::syntax::{Clause, Ident, Section, Statement, Value};
@@ -182,18 +181,13 @@ impl Lowerer<'_> {
                 // `irradiance_at` was taken out before (`light_strength.rs`).
                 Some(LightKey::IrradianceAt) | None => {
                     ok = false;
-                    self.report(
-                        Diagnostic::new(
-                            Code::UnknownKey,
-                            key.span,
-                            format!("unknown light option {}", quote(&key.text)),
-                        )
-                        .with_help(did_you_mean(
-                            &key.text,
-                            &LIGHT_OPTIONS,
-                            &options_help(),
-                        )),
-                    );
+                    self.report(unknown_word(
+                        Code::UnknownKey,
+                        key,
+                        "light option",
+                        &LIGHT_OPTIONS,
+                        &options_help(),
+                    ));
                 }
             }
         }

@@ -1,9 +1,7 @@
 //! The `BRDFs` section: Phong materials and their checker textures.
 
 use super::Lowerer;
-use super::suggest::did_you_mean;
-use super::table::{self, SeenKeys, words};
-use super::text::quote;
+use super::table::{self, SeenKeys, unknown_word, words};
 use crate::diagnostic::{Code, Diagnostic};
 use crate::ir::{Material, Pattern, Rgb, Texture};
 use crate::syntax::{BrokenStatement, Clause, Section, Value};
@@ -115,18 +113,13 @@ impl Lowerer<'_> {
                 }
                 match table::find(FIELDS, &key.text) {
                     Some((_, field)) => self.material_field(*field, value, &mut m, &mut checker),
-                    None => self.report(
-                        Diagnostic::new(
-                            Code::UnknownKey,
-                            key.span,
-                            format!("unknown material field {}", quote(&key.text)),
-                        )
-                        .with_help(did_you_mean(
-                            &key.text,
-                            &MATERIAL_FIELDS,
-                            &fields_help(),
-                        )),
-                    ),
+                    None => self.report(unknown_word(
+                        Code::UnknownKey,
+                        key,
+                        "material field",
+                        &MATERIAL_FIELDS,
+                        &fields_help(),
+                    )),
                 }
             }
             m.texture = checker.scale.map(|scale| Texture {

@@ -6,6 +6,7 @@
 
 use std::collections::HashMap;
 
+use super::suggest::did_you_mean;
 use super::text::quote;
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::syntax::Ident;
@@ -48,6 +49,23 @@ macro_rules! words {
     }};
 }
 pub(super) use words;
+
+/// The error for `word`, which is not in a table of `words` (a `what`):
+/// `help`, after the nearest of `words` if it is a plausible typo.
+pub(super) fn unknown_word(
+    code: Code,
+    word: &Ident,
+    what: &str,
+    words: &[&str],
+    help: &str,
+) -> Diagnostic {
+    Diagnostic::new(
+        code,
+        word.span,
+        format!("unknown {what} {}", quote(&word.text)),
+    )
+    .with_help(did_you_mean(&word.text, words, help))
+}
 
 /// The keys one `key = value` list has set so far.
 #[derive(Default)]

@@ -8,9 +8,8 @@ use hgeom::{HPlane, Isometry, Segment, Vertex};
 
 use super::Lowerer;
 use super::moves::PendingMove;
-use super::suggest::did_you_mean;
-use super::table::{self, words};
-use super::text::{and_list, quote, reference_text};
+use super::table::{self, unknown_word, words};
+use super::text::{and_list, reference_text};
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::Motion;
 use crate::syntax::{Clause, Ident, RefSigil, Reference, Section, Value};
@@ -144,18 +143,13 @@ impl Lowerer<'_> {
                     )
                     .with_help(format!("write `%P->{}(...)`", name.text)),
                 ),
-                (Some(_), _) | (None, None) => self.report(
-                    Diagnostic::new(
-                        Code::UnknownTransformation,
-                        name.span,
-                        format!("unknown transformation {}", quote(&name.text)),
-                    )
-                    .with_help(did_you_mean(
-                        &name.text,
-                        &TRANSFORMATIONS,
-                        &format!("transformations are {}", and_list(&TRANSFORMATIONS)),
-                    )),
-                ),
+                (Some(_), _) | (None, None) => self.report(unknown_word(
+                    Code::UnknownTransformation,
+                    name,
+                    "transformation",
+                    &TRANSFORMATIONS,
+                    &format!("transformations are {}", and_list(&TRANSFORMATIONS)),
+                )),
             }
         }
     }
