@@ -103,7 +103,7 @@ fn items(doc: &Document, offset: usize) -> Vec<CompletionItem> {
             words(vocabulary::material_fields(), CompletionItemKind::PROPERTY)
         }
         Context::StatementStart("Objects") => {
-            words(&vocabulary::object_keywords(), CompletionItemKind::KEYWORD)
+            words(vocabulary::object_keywords(), CompletionItemKind::KEYWORD)
         }
         Context::AfterComma("Objects") => {
             words(vocabulary::object_options(), CompletionItemKind::PROPERTY)
