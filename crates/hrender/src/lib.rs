@@ -194,8 +194,8 @@ pub fn render_region(
     pool.install(|| render_in_pool(scene, options, region, progress))
 }
 
-/// Everything a row of pixels needs, shared by all rows.
-struct Frame<'a> {
+/// One render: everything a row of pixels needs, shared by all rows.
+struct RenderJob<'a> {
     net: Net,
     pixel_net: PixelNet,
     window: Window,
@@ -207,7 +207,7 @@ struct Frame<'a> {
     background: Color,
 }
 
-impl Frame<'_> {
+impl RenderJob<'_> {
     /// The colour of one net sample, and whether it had a numeric failure;
     /// area lights draw their sample points from `stream`.
     fn shade(
@@ -394,7 +394,7 @@ fn render_in_pool(
         )));
     }
     let window = view_window(scene, net, resolution, camera.view_distance)?;
-    let frame = Frame {
+    let job = RenderJob {
         net,
         pixel_net: PixelNet::new(net, window, camera.view_distance),
         window,
@@ -418,7 +418,7 @@ fn render_in_pool(
         .into_par_iter()
         .map(|j| {
             let mut stats = TraceStats::default();
-            let (row, failed) = frame.row(j, columns.clone(), &mut stats);
+            let (row, failed) = job.row(j, columns.clone(), &mut stats);
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(n);
             (row, failed, stats)
