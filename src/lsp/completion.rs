@@ -8,8 +8,8 @@ use hscene_lang::tokens::{TokenKind, tokenize};
 use hscene_lang::vocabulary;
 use lsp_types::{CompletionItem, CompletionItemKind, CompletionParams, CompletionResponse};
 
-use super::RequestError;
 use super::documents::{Document, Documents};
+use super::request_error::RequestError;
 
 pub fn complete(
     docs: &Documents,

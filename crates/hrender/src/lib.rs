@@ -43,7 +43,7 @@ pub use camera::CanonicalCamera;
 pub use color::Color;
 pub use display::{DisplayTransform, Encoding, ToneMap, srgb_decode, srgb_encode};
 pub use error::RenderError;
-pub use exposure::{AUTO_KEY, DARK_LEVEL, auto_exposure, is_almost_black, luminance};
+pub use exposure::{AUTO_KEY, DARK_LEVEL, MAX_EXPOSURE, auto_exposure, is_almost_black, luminance};
 pub use image::Image;
 pub use nets::{PixelNet, Sample};
 pub use output::{ImageFormat, SampleDepth, check_depth, write_image, write_image_with};
@@ -60,10 +60,6 @@ pub const MAX_SAMPLES: u32 = hscene_lang::MAX_SAMPLES;
 /// Most worker threads a render starts: far above any core count a render
 /// can use, far below what exhausts the system's thread limit.
 pub const MAX_THREADS: usize = 1024;
-
-/// Largest exposure correction, in stops, either way: `2^64` already maps
-/// the faintest visible radiance onto the brightest.
-pub const MAX_EXPOSURE: f64 = 64.0;
 
 /// Overrides of the scene's own settings, and execution options.
 #[derive(Clone, Debug)]
