@@ -49,8 +49,7 @@ pub fn auto_exposure(image: &Image) -> f64 {
     let ev = (AUTO_KEY / average).log2();
     // Keep a stop of headroom below f32::MAX for the brightest sample.
     let ceiling = (f64::from(f32::MAX) / peak).log2() - 1.0;
-    ev.min(ceiling)
-        .clamp(-MAX_EXPOSURE, MAX_EXPOSURE)
+    ev.min(ceiling).clamp(-MAX_EXPOSURE, MAX_EXPOSURE)
 }
 
 /// A pixel is dark when every channel, as stored by `display`, is below
