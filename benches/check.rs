@@ -98,24 +98,22 @@ fn check(c: &mut Criterion) {
         big.lines().count()
     );
 
-    let mut group = c.benchmark_group("compile");
-    for (name, src) in [
+    let inputs = [
         ("thesis-appendix-a", APPENDIX),
         ("generated-1MB", big.as_str()),
-    ] {
-        group.throughput(Throughput::BytesDecimal(src.len() as u64));
-        group.bench_function(name, |b| b.iter(|| hscene_lang::compile(black_box(src))));
-    }
-    group.finish();
-
+    ];
+    per_byte(c, "compile", &inputs, hscene_lang::compile);
     // The parser alone (scanner and pest), to separate it from lowering.
-    let mut group = c.benchmark_group("parse");
-    for (name, src) in [
-        ("thesis-appendix-a", APPENDIX),
-        ("generated-1MB", big.as_str()),
-    ] {
+    per_byte(c, "parse", &inputs, hscene_lang::parse);
+}
+
+/// The benchmark group `group`: `run` on each named input, in bytes per
+/// second.
+fn per_byte<T>(c: &mut Criterion, group: &str, inputs: &[(&str, &str)], run: impl Fn(&str) -> T) {
+    let mut group = c.benchmark_group(group);
+    for &(name, src) in inputs {
         group.throughput(Throughput::BytesDecimal(src.len() as u64));
-        group.bench_function(name, |b| b.iter(|| hscene_lang::parse(black_box(src))));
+        group.bench_function(name, |b| b.iter(|| run(black_box(src))));
     }
     group.finish();
 }

@@ -86,13 +86,13 @@ pub fn run(code: &str) -> ExitCode {
                 e.example,
                 e.fix
             );
-            crate::print_bytes(text.as_bytes())
+            crate::exit::print_bytes(text.as_bytes())
         }
         _ => {
             eprintln!(
                 "error: no diagnostic code `{code}`; the codes are listed in docs/diagnostics.md"
             );
-            ExitCode::from(crate::EXIT_USAGE_OR_IO)
+            ExitCode::from(crate::exit::EXIT_USAGE_OR_IO)
         }
     }
 }

@@ -6,7 +6,8 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use crate::cli::{ColorChoice, FmtArgs, Format};
-use crate::{EXIT_SCENE_ERRORS, EXIT_USAGE_OR_IO, report};
+use crate::exit::{EXIT_SCENE_ERRORS, EXIT_USAGE_OR_IO};
+use crate::report;
 
 /// What became of one file.
 enum Outcome {

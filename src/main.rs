@@ -3,6 +3,7 @@
 
 mod cli;
 mod emit;
+mod exit;
 mod explain;
 mod fmt_cmd;
 mod input;
@@ -18,15 +19,12 @@ use clap::Parser;
 use hrender::{DisplayTransform, Encoding, RenderOptions, SampleDepth, ToneMap};
 use hscene_lang::ir::{Net, Resolution};
 
+use exit::{EXIT_SCENE_ERRORS, EXIT_USAGE_OR_IO, print_bytes};
+
 use cli::{
     CheckArgs, Cli, ColorChoice, Command, Depth, Emit, EncodingArg, ExposureArg, Format,
     RenderArgs, ToneMapArg,
 };
-
-/// Exit status: the scene has errors.
-const EXIT_SCENE_ERRORS: u8 = 1;
-/// Exit status: usage or I/O error.
-const EXIT_USAGE_OR_IO: u8 = 2;
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
@@ -53,15 +51,6 @@ fn main() -> ExitCode {
                 Err(_) => ExitCode::from(EXIT_USAGE_OR_IO),
             }
         }
-    }
-}
-
-/// Writes to stdout; a reader that stops early (`| head`) is not an error.
-fn print_bytes(bytes: &[u8]) -> ExitCode {
-    match std::io::stdout().lock().write_all(bytes) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
-        Err(_) => ExitCode::from(EXIT_USAGE_OR_IO),
     }
 }
 

@@ -51,7 +51,7 @@ fn grammar_keywords_are_the_compilers() {
     );
     assert_eq!(
         alternation(&g, "support.class.object.hscene"),
-        set(&vocabulary::object_keywords()),
+        set(vocabulary::object_keywords()),
         "objects: {}",
         vocabulary::object_keywords().join("|")
     );

@@ -8,8 +8,8 @@ use hscene_lang::tokens::{TokenKind, tokenize};
 use hscene_lang::vocabulary;
 use lsp_types::{CompletionItem, CompletionItemKind, CompletionParams, CompletionResponse};
 
-use super::RequestError;
 use super::documents::{Document, Documents};
+use super::request_error::RequestError;
 
 pub fn complete(
     docs: &Documents,
@@ -103,7 +103,7 @@ fn items(doc: &Document, offset: usize) -> Vec<CompletionItem> {
             words(vocabulary::material_fields(), CompletionItemKind::PROPERTY)
         }
         Context::StatementStart("Objects") => {
-            words(&vocabulary::object_keywords(), CompletionItemKind::KEYWORD)
+            words(vocabulary::object_keywords(), CompletionItemKind::KEYWORD)
         }
         Context::AfterComma("Objects") => {
             words(vocabulary::object_options(), CompletionItemKind::PROPERTY)

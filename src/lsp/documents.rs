@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use hscene_lang::symbols::SymbolIndex;
 use lsp_types::Uri;
 
-use super::RequestError;
+use super::request_error::RequestError;
 
 /// One open document, analysed when it was opened or changed.
 pub struct Document {

@@ -2,9 +2,9 @@
 
 use lsp_types::{DocumentFormattingParams, Range, TextEdit};
 
-use super::RequestError;
 use super::documents::Documents;
 use super::position::position;
+use super::request_error::RequestError;
 
 /// One edit replacing the whole text, or none when it is already formatted.
 /// A scene with syntax errors is not formatted (the diagnostics say why).

@@ -10,9 +10,9 @@ use hscene_lang::ir::{Rgb, Scene};
 use hscene_lang::symbols::{Definition, SymbolKind};
 use lsp_types::{Hover, HoverContents, HoverParams, MarkupContent, MarkupKind};
 
-use super::RequestError;
 use super::documents::{Document, Documents};
 use super::position::range;
+use super::request_error::RequestError;
 
 pub fn hover(docs: &Documents, p: HoverParams) -> Result<Option<Hover>, RequestError> {
     let (doc, offset) = docs.at(&p.text_document_position_params)?;

@@ -13,6 +13,7 @@ mod hover;
 mod navigation;
 mod outline;
 mod position;
+mod request_error;
 
 use std::process::ExitCode;
 
@@ -32,6 +33,7 @@ use lsp_types::{
 };
 
 use documents::Documents;
+use request_error::RequestError;
 
 /// Runs the server until the client says `exit` (or closes stdin).
 pub fn run() -> ExitCode {
@@ -40,7 +42,7 @@ pub fn run() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("hscene lsp: {e}");
-            ExitCode::from(crate::EXIT_USAGE_OR_IO)
+            ExitCode::from(crate::exit::EXIT_USAGE_OR_IO)
         }
     };
     drop(connection);
@@ -48,7 +50,7 @@ pub fn run() -> ExitCode {
         Ok(()) => code,
         Err(e) => {
             eprintln!("hscene lsp: {e}");
-            ExitCode::from(crate::EXIT_USAGE_OR_IO)
+            ExitCode::from(crate::exit::EXIT_USAGE_OR_IO)
         }
     }
 }
@@ -178,22 +180,6 @@ fn handle_request(docs: &Documents, req: Request) -> Response {
     match result {
         Ok(value) => Response::new_ok(id, value),
         Err(e) => Response::new_err(id, e.code as i32, e.message),
-    }
-}
-
-/// A request that cannot be answered.
-pub struct RequestError {
-    pub code: ErrorCode,
-    pub message: String,
-}
-
-impl RequestError {
-    /// The request is well formed but asks for something impossible.
-    pub fn failed(message: impl Into<String>) -> Self {
-        RequestError {
-            code: ErrorCode::RequestFailed,
-            message: message.into(),
-        }
     }
 }
 

@@ -11,9 +11,9 @@ use lsp_types::{
     TextEdit, WorkspaceEdit,
 };
 
-use super::RequestError;
 use super::documents::Documents;
 use super::position::range;
+use super::request_error::RequestError;
 
 /// The declaration of the reference (or declared name) under the cursor.
 pub fn definition(

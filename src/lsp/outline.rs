@@ -3,9 +3,9 @@
 use hscene_lang::symbols::SymbolKind as Kind;
 use lsp_types::{DocumentSymbol, DocumentSymbolParams, DocumentSymbolResponse, SymbolKind};
 
-use super::RequestError;
 use super::documents::Documents;
 use super::position::range;
+use super::request_error::RequestError;
 
 pub fn document_symbols(
     docs: &Documents,

@@ -34,17 +34,17 @@ impl CanonicalCamera {
     /// to the right, y upwards, z away from the eye (the convention of the
     /// thesis and of POV-Ray).
     pub fn new(camera: &Camera) -> Result<CanonicalCamera, RenderError> {
-        let frame =
+        let canonical =
             hscene_lang::view::canonical_frame(camera).ok_or(RenderError::DegenerateCamera)?;
         Ok(CanonicalCamera {
-            to_canonical: frame.to_canonical,
-            stages: frame.stages,
-            view_distance: frame.view_distance,
+            to_canonical: canonical.to_canonical,
+            stages: canonical.stages,
+            view_distance: canonical.view_distance,
         })
     }
 
-    /// The view target's image, on the +z axis.
-    pub fn target_in_frame(&self, camera: &Camera) -> Point {
+    /// The view target's image in the canonical frame, on the +z axis.
+    pub fn canonical_target(&self, camera: &Camera) -> Point {
         self.apply(&camera.target)
     }
 
@@ -86,7 +86,7 @@ mod tests {
         };
         let c = CanonicalCamera::new(&cam).unwrap();
         assert!(c.to_canonical.apply(&cam.eye).coords().length() < 1e-15);
-        let t = c.target_in_frame(&cam).coords();
+        let t = c.canonical_target(&cam).coords();
         assert!(t.x.abs() < 1e-14 && t.y.abs() < 1e-14 && t.z > 0.0);
         let u = c.to_canonical.apply(&cam.up.unwrap()).coords();
         assert!(u.y > 0.0 && u.x.abs() < 1e-14);

@@ -7,10 +7,11 @@ use thiserror::Error;
 /// Why a render or an image write failed.
 #[derive(Debug, Error)]
 pub enum RenderError {
-    /// The camera's view and up directions do not define a frame.
+    /// The camera's view and up directions do not define the canonical frame.
     #[error("the camera's view and up directions are degenerate")]
     DegenerateCamera,
-    /// Something is too far from the eye for f64 to represent in its frame.
+    /// Something is too far from the eye for f64 to represent in the
+    /// canonical frame.
     #[error("{what} is too far from the eye (beyond distance ~37) to be represented in f64")]
     OutOfRange {
         /// Which object or light.

@@ -3,7 +3,12 @@
 //! geometric mean of the luminance onto the key value, a photographer's
 //! 18 % mid-grey.
 
+use crate::display::DisplayTransform;
 use crate::image::Image;
+
+/// Largest exposure correction, in stops, either way: `2^64` already maps
+/// the faintest visible radiance onto the brightest.
+pub const MAX_EXPOSURE: f64 = 64.0;
 
 /// The luminance the log-average is mapped to.
 pub const AUTO_KEY: f64 = 0.18;
@@ -26,7 +31,7 @@ pub fn luminance(p: [f32; 3]) -> f64 {
 /// background would otherwise decide the exposure of a small object) to
 /// [`AUTO_KEY`]: `log2(0.18 / exp(mean(ln(1e-4 + Y))))`. An image with no
 /// such pixel gets 0. The result never scales a finite sample past the
-/// largest f32 and stays within +-[`crate::MAX_EXPOSURE`].
+/// largest f32 and stays within +-[`MAX_EXPOSURE`].
 pub fn auto_exposure(image: &Image) -> f64 {
     let (mut sum, mut n, mut peak) = (0.0, 0u64, 0.0f64);
     for p in image.pixels() {
@@ -44,8 +49,7 @@ pub fn auto_exposure(image: &Image) -> f64 {
     let ev = (AUTO_KEY / average).log2();
     // Keep a stop of headroom below f32::MAX for the brightest sample.
     let ceiling = (f64::from(f32::MAX) / peak).log2() - 1.0;
-    ev.min(ceiling)
-        .clamp(-crate::MAX_EXPOSURE, crate::MAX_EXPOSURE)
+    ev.min(ceiling).clamp(-MAX_EXPOSURE, MAX_EXPOSURE)
 }
 
 /// A pixel is dark when every channel, as stored by `display`, is below
@@ -56,7 +60,7 @@ pub const DARK_LEVEL: f64 = 16.0 / 255.0;
 /// pixels have a channel at or above [`DARK_LEVEL`] once tone-mapped and
 /// encoded by `display`. A cheap, documented criterion for the render
 /// warning; an empty image is not "almost black".
-pub fn is_almost_black(image: &Image, display: crate::DisplayTransform) -> bool {
+pub fn is_almost_black(image: &Image, display: DisplayTransform) -> bool {
     let lit = image
         .pixels()
         .iter()
@@ -93,7 +97,7 @@ mod tests {
     /// there is 0.063).
     #[test]
     fn almost_black_needs_one_percent_of_visible_pixels() {
-        let srgb = crate::DisplayTransform::default();
+        let srgb = DisplayTransform::default();
         let mut px = vec![[0.004f32; 3]; 200];
         assert!(is_almost_black(
             &Image::from_pixels(200, 1, px.clone()),
@@ -109,7 +113,7 @@ mod tests {
             &Image::from_pixels(200, 1, px.clone()),
             srgb
         ));
-        let linear = crate::DisplayTransform {
+        let linear = DisplayTransform {
             encoding: crate::Encoding::Linear,
             ..srgb
         };

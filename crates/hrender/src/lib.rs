@@ -43,7 +43,7 @@ pub use camera::CanonicalCamera;
 pub use color::Color;
 pub use display::{DisplayTransform, Encoding, ToneMap, srgb_decode, srgb_encode};
 pub use error::RenderError;
-pub use exposure::{AUTO_KEY, DARK_LEVEL, auto_exposure, is_almost_black, luminance};
+pub use exposure::{AUTO_KEY, DARK_LEVEL, MAX_EXPOSURE, auto_exposure, is_almost_black, luminance};
 pub use image::Image;
 pub use nets::{PixelNet, Sample};
 pub use output::{ImageFormat, SampleDepth, check_depth, write_image, write_image_with};
@@ -60,10 +60,6 @@ pub const MAX_SAMPLES: u32 = hscene_lang::MAX_SAMPLES;
 /// Most worker threads a render starts: far above any core count a render
 /// can use, far below what exhausts the system's thread limit.
 pub const MAX_THREADS: usize = 1024;
-
-/// Largest exposure correction, in stops, either way: `2^64` already maps
-/// the faintest visible radiance onto the brightest.
-pub const MAX_EXPOSURE: f64 = 64.0;
 
 /// Overrides of the scene's own settings, and execution options.
 #[derive(Clone, Debug)]
@@ -194,8 +190,8 @@ pub fn render_region(
     pool.install(|| render_in_pool(scene, options, region, progress))
 }
 
-/// Everything a row of pixels needs, shared by all rows.
-struct Frame<'a> {
+/// One render: everything a row of pixels needs, shared by all rows.
+struct RenderJob<'a> {
     net: Net,
     pixel_net: PixelNet,
     window: Window,
@@ -207,7 +203,7 @@ struct Frame<'a> {
     background: Color,
 }
 
-impl Frame<'_> {
+impl RenderJob<'_> {
     /// The colour of one net sample, and whether it had a numeric failure;
     /// area lights draw their sample points from `stream`.
     fn shade(
@@ -394,7 +390,7 @@ fn render_in_pool(
         )));
     }
     let window = view_window(scene, net, resolution, camera.view_distance)?;
-    let frame = Frame {
+    let job = RenderJob {
         net,
         pixel_net: PixelNet::new(net, window, camera.view_distance),
         window,
@@ -418,7 +414,7 @@ fn render_in_pool(
         .into_par_iter()
         .map(|j| {
             let mut stats = TraceStats::default();
-            let (row, failed) = frame.row(j, columns.clone(), &mut stats);
+            let (row, failed) = job.row(j, columns.clone(), &mut stats);
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(n);
             (row, failed, stats)

@@ -184,10 +184,7 @@ fn encode_png(
     out: &mut BufWriter<&File>,
     path: &Path,
 ) -> Result<(), RenderError> {
-    let err = |e: png::EncodingError| RenderError::Encode {
-        path: path.to_path_buf(),
-        message: e.to_string(),
-    };
+    let err = encode_error::<png::EncodingError>(path);
     let mut enc = png::Encoder::new(out, image.width(), image.height());
     enc.set_color(png::ColorType::Rgb);
     if display.encoding == Encoding::Srgb {
@@ -239,10 +236,7 @@ fn encode_tiff(
     out: &mut BufWriter<&File>,
     path: &Path,
 ) -> Result<(), RenderError> {
-    let err = |e: tiff::TiffError| RenderError::Encode {
-        path: path.to_path_buf(),
-        message: e.to_string(),
-    };
+    let err = encode_error::<tiff::TiffError>(path);
     let mut enc = TiffEncoder::new(out).map_err(err)?;
     let (w, h) = (image.width(), image.height());
     let profile = match (depth, display.encoding) {
@@ -286,10 +280,15 @@ fn encode_exr(image: &Image, out: &mut BufWriter<&File>, path: &Path) -> Result<
     exr_image
         .write()
         .to_buffered(out)
-        .map_err(|e| RenderError::Encode {
-            path: path.to_path_buf(),
-            message: e.to_string(),
-        })
+        .map_err(encode_error(path))
+}
+
+/// The error of an encoder writing `path`, in the encoder's words.
+fn encode_error<E: std::fmt::Display>(path: &Path) -> impl Fn(E) -> RenderError + Copy + '_ {
+    |e| RenderError::Encode {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    }
 }
 
 #[cfg(test)]

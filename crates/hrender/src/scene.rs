@@ -180,7 +180,7 @@ impl Primitive {
         }
     }
 
-    /// True if every part can be traced exactly in this frame.
+    /// True if every part can be traced exactly in the canonical frame.
     fn is_traceable(&self) -> bool {
         match self {
             Primitive::Single(s) => s.is_traceable(),
@@ -224,7 +224,7 @@ pub struct PreparedObject {
     /// Index into the materials.
     pub material: usize,
     /// From the canonical frame to the object's local space, where its
-    /// texture is fixed: `(to_canonical ∘ frame)^-1`.
+    /// texture is fixed: `(to_canonical ∘ placement)^-1`.
     pub to_local: Isometry,
 }
 
@@ -281,7 +281,7 @@ impl PreparedScene {
     /// bounding hierarchy.
     ///
     /// Fails if something lies so far from the eye (beyond distance ~37)
-    /// that f64 cannot represent it in the eye's frame: that is reported,
+    /// that f64 cannot represent it in the canonical frame: that is reported,
     /// not silently dropped.
     pub fn new(scene: &Scene, to_canonical: &Isometry) -> Result<PreparedScene, RenderError> {
         PreparedScene::staged(scene, std::slice::from_ref(to_canonical))

@@ -26,6 +26,7 @@ mod ranges;
 mod resolve;
 mod seen_from;
 mod suggest;
+mod table;
 mod text;
 mod transformations;
 mod values;
@@ -45,7 +46,7 @@ pub(crate) use globals::GLOBAL_KEYS;
 pub use globals::{MAX_FRAMES, MAX_PIXELS, MAX_SAMPLES};
 pub(crate) use lights::LIGHT_OPTIONS;
 pub(crate) use materials::MATERIAL_FIELDS;
-pub(crate) use objects::keywords::object_names;
+pub(crate) use objects::keywords::OBJECT_KEYWORDS;
 pub(crate) use objects::options::OPTION_NAMES;
 pub(crate) use transformations::TRANSFORMATIONS;
 
@@ -152,7 +153,7 @@ pub(crate) fn lower(
         let meant = |s: &&Section| {
             s.name.text == name
                 || (!SECTIONS.contains(&s.name.text.as_str())
-                    && section_meant(&s.name.text) == Some(name))
+                    && suggest::meant(&s.name.text, &SECTIONS) == Some(name))
         };
         for section in file.sections.iter().filter(meant) {
             if section.name.text != name {
@@ -227,18 +228,6 @@ fn declared_frames(file: &SourceFile) -> u32 {
         .map_or(1, |x| x as u32)
 }
 
-/// The known section an unknown section name was probably meant to be.
-fn section_meant(name: &str) -> Option<&'static str> {
-    SECTIONS
-        .iter()
-        .find(|s| s.eq_ignore_ascii_case(name))
-        .or_else(|| {
-            let s = suggest::closest(name, &SECTIONS)?;
-            SECTIONS.iter().find(|t| **t == s)
-        })
-        .copied()
-}
-
 impl Lowerer<'_> {
     fn report(&mut self, d: Diagnostic) {
         self.diags.push(d);
@@ -270,7 +259,7 @@ impl Lowerer<'_> {
                     section.name.span,
                     format!("unknown section {}", text::quote(name)),
                 );
-                d = match section_meant(name) {
+                d = match suggest::meant(name, &SECTIONS) {
                     Some(s) if s.eq_ignore_ascii_case(name) => d.with_help(format!(
                         "section names are case-sensitive: did you mean `{s}`? (its contents are checked as `{s}`)"
                     )),

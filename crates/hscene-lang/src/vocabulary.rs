@@ -17,8 +17,8 @@ pub fn material_fields() -> &'static [&'static str] {
 }
 
 /// Object keywords of `Objects` (solids, predefined figures, aliases).
-pub fn object_keywords() -> Vec<&'static str> {
-    crate::lower::object_names()
+pub fn object_keywords() -> &'static [&'static str] {
+    &crate::lower::OBJECT_KEYWORDS
 }
 
 /// `key = value` options an object statement may end with.

@@ -397,6 +397,22 @@ pub fn polygon_hits(rng: &mut SplitMix64, n: usize) -> Family {
     )
 }
 
+/// A tube about the points `a` and `b`, each 0.5 to `reach` from the
+/// origin, of radius 0.01 to `max_radius`, drawn in that order.
+fn tube(rng: &mut SplitMix64, reach: f64, max_radius: f64) -> (Point, Point, f64) {
+    let a = point_in(rng, 0.5, reach);
+    let b = point_in(rng, 0.5, reach);
+    (a, b, rng.range(0.01, max_radius))
+}
+
+/// A tube as the reference sees it: `a` and `b` on the hyperboloid and
+/// `sinh^2` of the radius.
+fn tube_reference(a: &Point, b: &Point, radius: f64) -> (V4, V4, R) {
+    let (ah, bh) = (r::hyperboloid(a.coords()), r::hyperboloid(b.coords()));
+    let s = R::f(radius).sinh();
+    (ah, bh, &s * &s)
+}
+
 /// Arc length error of ray-h-cylinder hits, axes through points 0.5 to 8
 /// away.
 pub fn cylinder_hits(rng: &mut SplitMix64, n: usize) -> Family {
@@ -405,17 +421,13 @@ pub fn cylinder_hits(rng: &mut SplitMix64, n: usize) -> Family {
         rng,
         n,
         |rng, clock| {
-            let a = point_in(rng, 0.5, 8.0);
-            let b = point_in(rng, 0.5, 8.0);
-            let radius = rng.range(0.01, 0.5);
+            let (a, b, radius) = tube(rng, 8.0, 0.5);
             let cyl = HCylinder::new(HLine::through(&a.into(), &b.into()).ok()?, radius).ok()?;
             let mid = Point::from_coords((a.coords() + b.coords()) * 0.5).ok()?;
             let dir = aim(rng, &mid, 0.1);
             let ray = Ray::from_origin_unchecked(dir);
             let hit = clock.run(|| cyl.intersect(&ray, 1e-9, f64::INFINITY))?;
-            let (ah, bh) = (r::hyperboloid(a.coords()), r::hyperboloid(b.coords()));
-            let s = R::f(radius).sinh();
-            let s2 = &s * &s;
+            let (ah, bh, s2) = tube_reference(&a, &b, radius);
             Some((
                 dir,
                 hit.t,
@@ -432,9 +444,7 @@ pub fn rod_hits(rng: &mut SplitMix64, n: usize) -> Family {
         rng,
         n,
         |rng, clock| {
-            let a = point_in(rng, 0.5, 6.0);
-            let b = point_in(rng, 0.5, 6.0);
-            let radius = rng.range(0.01, 0.3);
+            let (a, b, radius) = tube(rng, 6.0, 0.3);
             let rod = Rod::new(a.into(), b.into(), radius).ok()?;
             let dir = if rng.unit() < 0.5 {
                 aim(rng, &a, 0.02)
@@ -447,9 +457,7 @@ pub fn rod_hits(rng: &mut SplitMix64, n: usize) -> Family {
             };
             let ray = Ray::from_origin_unchecked(dir);
             let hit = clock.run(|| rod.intersect(&ray, 1e-9, f64::INFINITY))?;
-            let (ah, bh) = (r::hyperboloid(a.coords()), r::hyperboloid(b.coords()));
-            let s = R::f(radius).sinh();
-            let s2 = &s * &s;
+            let (ah, bh, s2) = tube_reference(&a, &b, radius);
             Some((
                 dir,
                 hit.t,

@@ -276,19 +276,7 @@ pub fn moved(scene: &Scene, iso: &Isometry) -> Scene {
     }
     for o in &mut s.objects {
         o.placement = iso.compose(&o.placement);
-        o.shape = match &o.shape {
-            Shape::Sphere(x) => Shape::Sphere(x.transformed(iso)),
-            Shape::Polygon(x) => Shape::Polygon(x.transformed(iso)),
-            Shape::Polyhedron(x) => Shape::Polyhedron(x.transformed(iso)),
-            Shape::Plane(x) => Shape::Plane(x.transformed(iso)),
-            Shape::Rod(x) => Shape::Rod(x.transformed(iso)),
-            Shape::Cylinder(x) => Shape::Cylinder(x.transformed(iso)),
-            Shape::Horosphere(x) => Shape::Horosphere(x.transformed(iso)),
-            Shape::Wireframe(rods) => {
-                Shape::Wireframe(rods.iter().map(|r| r.transformed(iso)).collect())
-            }
-            Shape::Mesh(x) => Shape::Mesh(x.transformed(iso)),
-        };
+        o.shape = o.shape.transformed(iso);
     }
     s
 }

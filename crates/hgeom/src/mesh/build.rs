@@ -172,8 +172,9 @@ mod tests {
     use glam::DVec3;
 
     use super::*;
-    use crate::mesh::test_support::{Rng, p};
+    use crate::mesh::test_support::p;
     use crate::ray::Ray;
+    use hscene_test_support::SplitMix64;
 
     #[test]
     fn degenerate_triangles_are_dropped_and_counted() {
@@ -250,9 +251,9 @@ mod tests {
         // Carried back next to the origin, it is the triangle it was.
         let back = mesh.transformed(&there.inverse());
         let direct = TriangleMesh::new(corners.to_vec(), vec![[0, 1, 2]]).unwrap();
-        let mut rng = Rng(2);
+        let mut rng = SplitMix64::new(2);
         for _ in 0..200 {
-            let ray = Ray::from_origin_unchecked(rng.dir() + DVec3::splat(0.8));
+            let ray = Ray::from_origin_unchecked(rng.direction() + DVec3::splat(0.8));
             let (a, b) = (
                 back.intersect(&ray, 0.0, f64::INFINITY),
                 direct.intersect(&ray, 0.0, f64::INFINITY),

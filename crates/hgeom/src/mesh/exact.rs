@@ -95,16 +95,16 @@ fn cross(a: (f64, f64), b: (f64, f64)) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::mesh::test_support::Rng;
+    use hscene_test_support::SplitMix64;
 
     #[test]
     fn cross_is_exactly_antisymmetric_and_exact_in_sign() {
-        let mut rng = Rng(5);
+        let mut rng = SplitMix64::new(5);
         for _ in 0..10_000 {
-            let a = (rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
+            let a = (rng.range(-1.0, 1.0), rng.range(-1.0, 1.0));
             // Nearly parallel vectors: the naive difference cancels.
-            let s = rng.uniform(0.5, 2.0);
-            let b = (a.0 * s + rng.uniform(-1e-16, 1e-16), a.1 * s);
+            let s = rng.range(0.5, 2.0);
+            let b = (a.0 * s + rng.range(-1e-16, 1e-16), a.1 * s);
             assert_eq!(cross(a, b), -cross(b, a));
             assert_eq!(cross(a, a), 0.0);
         }

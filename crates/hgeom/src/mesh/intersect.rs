@@ -264,21 +264,22 @@ mod tests {
     use super::*;
     use crate::isometry::Isometry;
     use crate::lorentz;
-    use crate::mesh::test_support::{Rng, p, soup};
+    use crate::mesh::test_support::{p, random_point, soup};
     use crate::point::Point;
     use crate::polygon::ConvexPolygon;
+    use hscene_test_support::SplitMix64;
 
     #[test]
     fn bvh_equals_brute_force() {
-        let mut rng = Rng(7);
+        let mut rng = SplitMix64::new(7);
         for (reach, size) in [(1.5, 0.15), (3.0, 0.4), (0.5, 0.05)] {
             let mesh = soup(&mut rng, 2000, reach, size);
             let mut hits = 0;
             for k in 0..600 {
                 let ray = if k % 2 == 0 {
-                    Ray::from_origin_unchecked(rng.dir())
+                    Ray::from_origin_unchecked(rng.direction())
                 } else {
-                    Ray::from_ball_unchecked(&rng.point(reach + 1.0), rng.dir())
+                    Ray::from_ball_unchecked(&random_point(&mut rng, reach + 1.0), rng.direction())
                 };
                 let t_min = if k % 3 == 0 { 0.0 } else { 1e-9 };
                 let t_max = if k % 5 == 0 { 1.0 } else { f64::INFINITY };
@@ -346,10 +347,10 @@ mod tests {
     #[test]
     fn bvh_equals_brute_force_at_edges_and_vertices() {
         let (points, faces) = octasphere(4, 1.2);
-        let mut rng = Rng(13);
-        let f = Isometry::transvection_from_origin(rng.point(2.0)).compose(
+        let mut rng = SplitMix64::new(13);
+        let f = Isometry::transvection_from_origin(random_point(&mut rng, 2.0)).compose(
             &Isometry::rotation_about_segment_unchecked(
-                &crate::segment::Segment::new(Point::ORIGIN, rng.point(1.0)).unwrap(),
+                &crate::segment::Segment::new(Point::ORIGIN, random_point(&mut rng, 1.0)).unwrap(),
                 1.0,
             ),
         );
@@ -370,7 +371,7 @@ mod tests {
         }
         for x in &targets {
             let target = Point::from_hyperboloid(*x / (-lorentz::dot(*x, *x)).sqrt()).unwrap();
-            let outside = f.apply(&rng.point(0.4)).coords();
+            let outside = f.apply(&random_point(&mut rng, 0.4)).coords();
             let starts = [centre, Point::from_coords(outside).unwrap()];
             for start in starts {
                 let dir = crate::segment::Segment::new(start, target)
@@ -386,10 +387,10 @@ mod tests {
 
     #[test]
     fn blocks_agrees_with_intersect() {
-        let mut rng = Rng(3);
+        let mut rng = SplitMix64::new(3);
         let mesh = soup(&mut rng, 300, 1.0, 0.3);
         for _ in 0..500 {
-            let ray = Ray::from_ball_unchecked(&rng.point(2.0), rng.dir());
+            let ray = Ray::from_ball_unchecked(&random_point(&mut rng, 2.0), rng.direction());
             let hit = mesh.intersect(&ray, 0.0, f64::INFINITY);
             assert_eq!(mesh.blocks(&ray, 0.0, f64::INFINITY), hit.is_some());
             if let Some(h) = hit {
@@ -415,14 +416,14 @@ mod tests {
         let mesh = TriangleMesh::new(vec![a, b, c], vec![[0, 1, 2]]).unwrap();
         let poly = ConvexPolygon::new(vec![a.into(), b.into(), c.into()]).unwrap();
         let corners = [a, b, c].map(|v| v.to_hyperboloid());
-        let mut rng = Rng(9);
+        let mut rng = SplitMix64::new(9);
         let (mut hits, mut disagree) = (0, 0);
         for k in 0..4000 {
             // Aim at the triangle and around it, so edges are crossed often.
-            let w = [0, 1, 2].map(|_| rng.uniform(-0.2, 1.0));
+            let w = [0, 1, 2].map(|_| rng.range(-0.2, 1.0));
             let aim = w[0] * corners[0] + w[1] * corners[1] + w[2] * corners[2];
             let ray = if k % 2 == 0 || !(aim.w > 0.0 && lorentz::dot(aim, aim) < 0.0) {
-                Ray::from_origin_unchecked(rng.dir())
+                Ray::from_origin_unchecked(rng.direction())
             } else {
                 Ray::from_origin_unchecked(aim.truncate())
             };

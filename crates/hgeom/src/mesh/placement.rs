@@ -185,13 +185,14 @@ fn settled_isometry(iso: Isometry) -> Isometry {
 mod tests {
     use super::*;
     use crate::lorentz;
-    use crate::mesh::test_support::{Rng, p, soup};
+    use crate::mesh::test_support::{p, random_point, soup};
     use crate::plane::HPlane;
     use crate::ray::Ray;
+    use hscene_test_support::SplitMix64;
 
     #[test]
     fn moves_share_the_data_and_reverse_the_winding_of_reflections() {
-        let mut rng = Rng(1);
+        let mut rng = SplitMix64::new(1);
         let mesh = soup(&mut rng, 50, 1.0, 0.3);
         let plane = HPlane::through(
             &p(0.1, 0.0, 0.0).into(),
@@ -214,7 +215,7 @@ mod tests {
         // winding.
         let vs = moved.vertices();
         for _ in 0..300 {
-            let ray = Ray::from_ball_unchecked(&rng.point(2.0), rng.dir());
+            let ray = Ray::from_ball_unchecked(&random_point(&mut rng, 2.0), rng.direction());
             if let Some((hit, i)) = moved.intersect_indexed(&ray, 0.0, f64::INFINITY) {
                 let [a, b, c] = tris[i].map(|k| crate::point::Vertex::from(vs[k as usize]));
                 let n = HPlane::through(&a, &b, &c).unwrap().normal();

@@ -26,8 +26,7 @@ impl Lowerer<'_> {
         if self.primitives.saturating_add(more) <= MAX_PRIMITIVES {
             return true;
         }
-        if !self.primitive_cap_reported {
-            self.primitive_cap_reported = true;
+        if !std::mem::replace(&mut self.primitive_cap_reported, true) {
             self.report(
                 Diagnostic::new(
                     Code::TooManyPrimitives,
@@ -48,8 +47,7 @@ impl Lowerer<'_> {
         if self.lights.len() < MAX_LIGHTS {
             return true;
         }
-        if !self.light_cap_reported {
-            self.light_cap_reported = true;
+        if !std::mem::replace(&mut self.light_cap_reported, true) {
             self.report(
                 Diagnostic::new(
                     Code::TooManyPrimitives,

@@ -1,14 +1,11 @@
 //! The `Globals` section: render settings, the camera's points and the
 //! view keys, each `key = value`.
 
-use std::collections::HashMap;
-
 use super::Lowerer;
 use super::camera::CameraKey;
-use super::suggest::did_you_mean;
-use super::text::quote;
+use super::table::{self, Row, SeenKeys, unknown_word, words};
 use super::view_globals::ViewKey;
-use crate::diagnostic::{Code, Diagnostic, Span};
+use crate::diagnostic::{Code, Diagnostic};
 use crate::ir::{Net, Resolution, Rgb, Settings, Window};
 use crate::syntax::{Clause, Ident, Section, Value};
 
@@ -48,6 +45,12 @@ struct GlobalKey {
     alias: bool,
 }
 
+impl Row for GlobalKey {
+    fn word(&self) -> &'static str {
+        self.name
+    }
+}
+
 const fn key(name: &'static str, sets: Global) -> GlobalKey {
     GlobalKey {
         name,
@@ -80,15 +83,7 @@ const KEYS: &[GlobalKey] = &[
 ];
 
 /// Every global key, aliases included, in the order of [`KEYS`].
-pub(crate) const GLOBAL_KEYS: [&str; KEYS.len()] = {
-    let mut names = [""; KEYS.len()];
-    let mut i = 0;
-    while i < KEYS.len() {
-        names[i] = KEYS[i].name;
-        i += 1;
-    }
-    names
-};
+pub(crate) const GLOBAL_KEYS: [&str; KEYS.len()] = words!(KEYS, name);
 
 /// Whether `name` is the key of the frame count (read before lowering).
 pub(super) fn is_frames_key(name: &str) -> bool {
@@ -128,7 +123,7 @@ pub(super) fn default_settings() -> Settings {
 
 impl Lowerer<'_> {
     pub(super) fn globals_section(&mut self, section: &Section) {
-        let mut seen: HashMap<String, Span> = HashMap::new();
+        let mut seen = SeenKeys::default();
         for st in &section.statements {
             for clause in &st.clauses {
                 let Clause::Assign { key, value, .. } = clause else {
@@ -138,12 +133,8 @@ impl Lowerer<'_> {
                     );
                     continue;
                 };
-                if seen.insert(key.text.clone(), key.span).is_some() {
-                    self.report(Diagnostic::new(
-                        Code::DuplicateKey,
-                        key.span,
-                        format!("{} is set twice; the last value wins", quote(&key.text)),
-                    ));
+                if let Some(twice) = seen.again(key) {
+                    self.report(twice);
                 }
                 self.global(key, value);
             }
@@ -151,15 +142,14 @@ impl Lowerer<'_> {
     }
 
     fn global(&mut self, key: &Ident, value: &Value) {
-        let Some(global) = KEYS.iter().find(|k| k.name == key.text) else {
-            self.report(
-                Diagnostic::new(
-                    Code::UnknownKey,
-                    key.span,
-                    format!("unknown global {}", quote(&key.text)),
-                )
-                .with_help(did_you_mean(&key.text, &GLOBAL_KEYS, &keys_help())),
-            );
+        let Some(global) = table::find(KEYS, &key.text) else {
+            self.report(unknown_word(
+                Code::UnknownKey,
+                key,
+                "global",
+                &GLOBAL_KEYS,
+                &keys_help(),
+            ));
             return;
         };
         match global.sets {

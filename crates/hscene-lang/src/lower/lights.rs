@@ -1,12 +1,10 @@
 //! The `Lights` section: point lights and spherical area lights.
 
-use std::collections::HashMap;
-
 use super::Lowerer;
 use super::light_strength;
 use super::names::TargetSlot;
-use super::suggest::did_you_mean;
-use super::text::{and_list, quote};
+use super::table::{self, SeenKeys, unknown_word, words};
+use super::text::and_list;
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::Light;
 use crate::syntax::{Clause, Ident, Section, Statement, Value};
@@ -50,21 +48,10 @@ const OPTIONS: &[(&str, LightKey, &str)] = &[
 ];
 
 /// The names of the light options, in the order of [`OPTIONS`].
-pub(crate) const LIGHT_OPTIONS: [&str; OPTIONS.len()] = {
-    let mut names = [""; OPTIONS.len()];
-    let mut i = 0;
-    while i < OPTIONS.len() {
-        names[i] = OPTIONS[i].0;
-        i += 1;
-    }
-    names
-};
+pub(crate) const LIGHT_OPTIONS: [&str; OPTIONS.len()] = words!(OPTIONS, 0);
 
 fn option(name: &str) -> Option<LightKey> {
-    OPTIONS
-        .iter()
-        .find(|(n, ..)| *n == name)
-        .map(|(_, k, _)| *k)
+    table::find(OPTIONS, name).map(|(_, k, _)| *k)
 }
 
 fn options_help() -> String {
@@ -158,15 +145,11 @@ impl Lowerer<'_> {
     fn light_options(&mut self, options: &[(&Ident, &Value)]) -> Option<(f64, u32)> {
         let mut radius: Option<(f64, Span)> = None;
         let mut samples: Option<(u32, Span)> = None;
-        let mut seen: HashMap<&str, Span> = HashMap::new();
+        let mut seen = SeenKeys::default();
         let mut ok = true;
         for (key, value) in options {
-            if seen.insert(key.text.as_str(), key.span).is_some() {
-                self.report(Diagnostic::new(
-                    Code::DuplicateKey,
-                    key.span,
-                    format!("{} is set twice; the last value wins", quote(&key.text)),
-                ));
+            if let Some(twice) = seen.again(key) {
+                self.report(twice);
             }
             match option(&key.text) {
                 Some(LightKey::Radius) => match self.number(value) {
@@ -198,18 +181,13 @@ impl Lowerer<'_> {
                 // `irradiance_at` was taken out before (`light_strength.rs`).
                 Some(LightKey::IrradianceAt) | None => {
                     ok = false;
-                    self.report(
-                        Diagnostic::new(
-                            Code::UnknownKey,
-                            key.span,
-                            format!("unknown light option {}", quote(&key.text)),
-                        )
-                        .with_help(did_you_mean(
-                            &key.text,
-                            &LIGHT_OPTIONS,
-                            &options_help(),
-                        )),
-                    );
+                    self.report(unknown_word(
+                        Code::UnknownKey,
+                        key,
+                        "light option",
+                        &LIGHT_OPTIONS,
+                        &options_help(),
+                    ));
                 }
             }
         }

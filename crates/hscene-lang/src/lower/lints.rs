@@ -5,7 +5,7 @@
 
 use super::Lowerer;
 use super::seen_from::SeenFrom;
-use super::text::quote;
+use super::text::numbered;
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::Camera;
 use crate::syntax::{Clause, RefSigil, Reference, SourceFile, Value};
@@ -131,11 +131,7 @@ impl Lowerer<'_> {
         let mut found = Vec::new();
         for (i, p) in self.points.entries().iter().enumerate() {
             if !self.point_ref_failed && !p.used && p.value.position.is_some() {
-                // The number always identifies it, even when a name is duplicated.
-                let name = match &p.value.name {
-                    Some(n) => format!("%{} ({})", i + 1, quote(n)),
-                    None => format!("%{}", i + 1),
-                };
+                let name = numbered('%', i + 1, p.value.name.as_deref());
                 found.push(Diagnostic::new(
                     Code::UnusedPoint,
                     p.span,
@@ -145,10 +141,7 @@ impl Lowerer<'_> {
         }
         for (i, m) in self.materials.entries().iter().enumerate() {
             if !self.material_ref_failed && !m.used {
-                let name = match &m.value.name {
-                    Some(n) => format!("#{} ({})", i + 1, quote(n)),
-                    None => format!("#{}", i + 1),
-                };
+                let name = numbered('#', i + 1, m.value.name.as_deref());
                 found.push(Diagnostic::new(
                     Code::UnusedMaterial,
                     m.span,

@@ -1,11 +1,8 @@
 //! The `BRDFs` section: Phong materials and their checker textures.
 
-use std::collections::HashMap;
-
 use super::Lowerer;
-use super::suggest::did_you_mean;
-use super::text::quote;
-use crate::diagnostic::{Code, Diagnostic, Span};
+use super::table::{self, SeenKeys, unknown_word, words};
+use crate::diagnostic::{Code, Diagnostic};
 use crate::ir::{Material, Pattern, Rgb, Texture};
 use crate::syntax::{BrokenStatement, Clause, Section, Value};
 
@@ -39,15 +36,7 @@ const FIELDS: &[(&str, Field)] = &[
 ];
 
 /// The names of the material fields, in the order of [`FIELDS`].
-pub(crate) const MATERIAL_FIELDS: [&str; FIELDS.len()] = {
-    let mut names = [""; FIELDS.len()];
-    let mut i = 0;
-    while i < FIELDS.len() {
-        names[i] = FIELDS[i].0;
-        i += 1;
-    }
-    names
-};
+pub(crate) const MATERIAL_FIELDS: [&str; FIELDS.len()] = words!(FIELDS, 0);
 
 fn fields_help() -> String {
     format!("material fields are {}", MATERIAL_FIELDS.join(", "))
@@ -105,7 +94,7 @@ impl Lowerer<'_> {
                 self.broken_material(b);
             }
             let mut m = default_material(st.label.as_ref().map(|l| l.text.clone()));
-            let mut seen: HashMap<String, Span> = HashMap::new();
+            let mut seen = SeenKeys::default();
             let mut checker = CheckerFields::default();
             for clause in &st.clauses {
                 let Clause::Assign { key, value, .. } = clause else {
@@ -119,27 +108,18 @@ impl Lowerer<'_> {
                     );
                     continue;
                 };
-                if seen.insert(key.text.clone(), key.span).is_some() {
-                    self.report(Diagnostic::new(
-                        Code::DuplicateKey,
-                        key.span,
-                        format!("{} is set twice; the last value wins", quote(&key.text)),
-                    ));
+                if let Some(twice) = seen.again(key) {
+                    self.report(twice);
                 }
-                match FIELDS.iter().find(|(name, _)| *name == key.text) {
+                match table::find(FIELDS, &key.text) {
                     Some((_, field)) => self.material_field(*field, value, &mut m, &mut checker),
-                    None => self.report(
-                        Diagnostic::new(
-                            Code::UnknownKey,
-                            key.span,
-                            format!("unknown material field {}", quote(&key.text)),
-                        )
-                        .with_help(did_you_mean(
-                            &key.text,
-                            &MATERIAL_FIELDS,
-                            &fields_help(),
-                        )),
-                    ),
+                    None => self.report(unknown_word(
+                        Code::UnknownKey,
+                        key,
+                        "material field",
+                        &MATERIAL_FIELDS,
+                        &fields_help(),
+                    )),
                 }
             }
             m.texture = checker.scale.map(|scale| Texture {
@@ -152,22 +132,19 @@ impl Lowerer<'_> {
                 && let Some(key) = FIELDS
                     .iter()
                     .filter(|(_, f)| matches!(f, Field::CheckerDiffuse | Field::CheckerAmbient))
-                    .find_map(|(name, _)| seen.get(*name))
+                    .find_map(|(name, _)| seen.get(name))
             {
                 self.report(
                     Diagnostic::new(
                         Code::IneffectiveOption,
-                        *key,
+                        key,
                         "the checker colours have no effect without `checker = size`",
                     )
                     .with_help("add `checker = 0.25` (the cell size, a hyperbolic length) or remove the checker colours"),
                 );
             }
-            let index = self.materials.push(m, st.span, false);
-            if let Some(label) = &st.label {
-                let declared = self.materials.declare(label, index);
-                self.report_refused(declared);
-            }
+            let declared = self.materials.push_declared(m, st.span, st.label.as_ref());
+            self.report_refused(declared);
         }
         for b in broken {
             self.broken_material(b);

@@ -75,6 +75,22 @@ impl<T> Table<T> {
         .with_help("give each point, material, line and plane a distinct name"))
     }
 
+    /// Adds the entry a statement declares (unused so far), bound to `name`
+    /// if it has one; the error if that name is taken (the entry is added
+    /// all the same, so that the numbers after it stay right).
+    pub(super) fn push_declared(
+        &mut self,
+        value: T,
+        span: Span,
+        name: Option<&Ident>,
+    ) -> Result<(), Diagnostic> {
+        let index = self.push(value, span, false);
+        match name {
+            Some(name) => self.declare(name, index),
+            None => Ok(()),
+        }
+    }
+
     /// The entry a reference names (`%3`, `%apex`), if any.
     pub(super) fn find(&self, target: &RefTarget) -> Option<usize> {
         match target {

@@ -19,13 +19,13 @@ pub(super) mod options;
 
 use super::Lowerer;
 use super::names::TargetSlot;
-use super::suggest::closest;
+use super::suggest::meant;
 use super::text::quote;
 use crate::diagnostic::{Code, Diagnostic};
 use crate::syntax::{Clause, Ident, Section, Statement, Value};
 use args::Arg;
 use figures::figure_estimate;
-use keywords::{ObjectKeyword, keyword, object_names};
+use keywords::{OBJECT_KEYWORDS, ObjectKeyword, keyword};
 
 impl Lowerer<'_> {
     pub(super) fn objects_section(&mut self, section: &Section) {
@@ -57,7 +57,7 @@ impl Lowerer<'_> {
                     st.span,
                     "expected an object, e.g. `Sphere %1, 0.05, #1;`",
                 )
-                .with_help(format!("objects are {}", object_names().join(", "))),
+                .with_help(format!("objects are {}", OBJECT_KEYWORDS.join(", "))),
             );
             return Vec::new();
         };
@@ -147,20 +147,17 @@ impl Lowerer<'_> {
 
     fn unknown_object(&mut self, name: &Ident) {
         let other = name.text.as_str();
-        let names = object_names();
         let mut d = Diagnostic::new(
             Code::UnknownObject,
             name.span,
             format!("unknown object {}", quote(other)),
         );
-        d = if let Some(s) = names.iter().find(|s| s.eq_ignore_ascii_case(other)) {
-            d.with_help(format!(
+        d = match meant(other, &OBJECT_KEYWORDS) {
+            Some(s) if s.eq_ignore_ascii_case(other) => d.with_help(format!(
                 "object names are case-sensitive: did you mean `{s}`?"
-            ))
-        } else if let Some(s) = closest(other, &names) {
-            d.with_help(format!("did you mean `{s}`?"))
-        } else {
-            d.with_help(format!("objects are {}", names.join(", ")))
+            )),
+            Some(s) => d.with_help(format!("did you mean `{s}`?")),
+            None => d.with_help(format!("objects are {}", OBJECT_KEYWORDS.join(", "))),
         };
         self.report(d);
     }

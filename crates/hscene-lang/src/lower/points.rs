@@ -58,11 +58,8 @@ impl Lowerer<'_> {
                 name: name.as_ref().map(|n| n.text.clone()),
                 position,
             };
-            let index = self.points.push(point, st.span, false);
-            if let Some(name) = &name {
-                let declared = self.points.declare(name, index);
-                self.report_refused(declared);
-            }
+            let declared = self.points.push_declared(point, st.span, name.as_ref());
+            self.report_refused(declared);
         }
         for b in broken {
             self.broken_point(b);

@@ -29,6 +29,17 @@ pub(super) fn closest<'a>(word: &str, candidates: &[&'a str]) -> Option<&'a str>
         .map(|(_, c)| c)
 }
 
+/// The candidate `word` was probably meant to be: one that differs from it
+/// in case only (names are case-sensitive, and that is the likeliest slip),
+/// else the nearest by [`closest`].
+pub(super) fn meant<'a>(word: &str, candidates: &[&'a str]) -> Option<&'a str> {
+    candidates
+        .iter()
+        .find(|c| c.eq_ignore_ascii_case(word))
+        .copied()
+        .or_else(|| closest(word, candidates))
+}
+
 /// The declared name nearest to `word`, if the scene declares at most
 /// [`MAX_CANDIDATES`] names (counted without collecting them).
 pub(super) fn closest_declared<'a>(

@@ -27,6 +27,16 @@ pub(super) fn reference_text(r: &Reference) -> String {
     }
 }
 
+/// A declaration as messages name it: `sigil` and its 1-based number,
+/// which identifies it even when its name is declared twice, then its
+/// name quoted if it has one ("%3 (`apex`)").
+pub(super) fn numbered(sigil: char, number: usize, name: Option<&str>) -> String {
+    match name {
+        Some(n) => format!("{sigil}{number} ({})", quote(n)),
+        None => format!("{sigil}{number}"),
+    }
+}
+
 /// "1 value" / "3 values".
 pub(super) fn count(n: usize, what: &str) -> String {
     if n == 1 {

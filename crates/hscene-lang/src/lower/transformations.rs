@@ -8,8 +8,8 @@ use hgeom::{HPlane, Isometry, Segment, Vertex};
 
 use super::Lowerer;
 use super::moves::PendingMove;
-use super::suggest::did_you_mean;
-use super::text::{and_list, quote, reference_text};
+use super::table::{self, unknown_word, words};
+use super::text::{and_list, reference_text};
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::Motion;
 use crate::syntax::{Clause, Ident, RefSigil, Reference, Section, Value};
@@ -36,18 +36,10 @@ const KEYWORDS: &[(&str, Transformation)] = &[
 ];
 
 /// The transformation keywords, in the order of [`KEYWORDS`].
-pub(crate) const TRANSFORMATIONS: [&str; KEYWORDS.len()] = {
-    let mut names = [""; KEYWORDS.len()];
-    let mut i = 0;
-    while i < KEYWORDS.len() {
-        names[i] = KEYWORDS[i].0;
-        i += 1;
-    }
-    names
-};
+pub(crate) const TRANSFORMATIONS: [&str; KEYWORDS.len()] = words!(KEYWORDS, 0);
 
 fn keyword(name: &str) -> Option<Transformation> {
-    KEYWORDS.iter().find(|(n, _)| *n == name).map(|(_, t)| *t)
+    table::find(KEYWORDS, name).map(|(_, t)| *t)
 }
 
 impl Lowerer<'_> {
@@ -151,18 +143,13 @@ impl Lowerer<'_> {
                     )
                     .with_help(format!("write `%P->{}(...)`", name.text)),
                 ),
-                (Some(_), _) | (None, None) => self.report(
-                    Diagnostic::new(
-                        Code::UnknownTransformation,
-                        name.span,
-                        format!("unknown transformation {}", quote(&name.text)),
-                    )
-                    .with_help(did_you_mean(
-                        &name.text,
-                        &TRANSFORMATIONS,
-                        &format!("transformations are {}", and_list(&TRANSFORMATIONS)),
-                    )),
-                ),
+                (Some(_), _) | (None, None) => self.report(unknown_word(
+                    Code::UnknownTransformation,
+                    name,
+                    "transformation",
+                    &TRANSFORMATIONS,
+                    &format!("transformations are {}", and_list(&TRANSFORMATIONS)),
+                )),
             }
         }
     }
@@ -205,11 +192,8 @@ impl Lowerer<'_> {
                 None
             }
         };
-        let index = self.lines.push(segment, span, false);
-        if let Some(label) = label {
-            let declared = self.lines.declare(label, index);
-            self.report_refused(declared);
-        }
+        let declared = self.lines.push_declared(segment, span, label);
+        self.report_refused(declared);
     }
 
     fn declare_plane(
@@ -249,11 +233,8 @@ impl Lowerer<'_> {
                 None
             }
         };
-        let index = self.planes.push(plane, span, false);
-        if let Some(label) = label {
-            let declared = self.planes.declare(label, index);
-            self.report_refused(declared);
-        }
+        let declared = self.planes.push_declared(plane, span, label);
+        self.report_refused(declared);
     }
 
     /// The motion of a `Rotate`, `Translate` or `Reflect` statement: fixed,

@@ -134,27 +134,34 @@ impl Lowerer<'_> {
         self.colour_in_range(value, [v[0], v[1], v[2]])
     }
 
-    /// An interior point given as a reference or a literal.
-    pub(super) fn point_arg(&mut self, value: &Value, role: &str) -> Option<Point> {
-        let (pos, span) = match value {
+    /// A point given as a reference or a literal, with where it is
+    /// written; the "wrong type" message names its role if it has one.
+    fn located_vertex(&mut self, value: &Value, role: Option<&str>) -> Option<(Vertex, Span)> {
+        match value {
             Value::Reference(r) => {
                 let i = self.resolve_point(r)?;
-                (self.points[i].position?, r.span)
+                Some((self.points[i].position?, r.span))
             }
             Value::Tuple { .. } => {
                 let (v, span) = self.point_literal(value)?;
-                (self.classify_point(v, span)?, span)
+                Some((self.classify_point(v, span)?, span))
             }
             other => {
-                self.report(Diagnostic::new(
-                    Code::WrongType,
-                    other.span(),
-                    format!("expected a point for {role}, found {}", other.describe()),
-                ));
+                let found = other.describe();
+                let message = match role {
+                    Some(role) => format!("expected a point for {role}, found {found}"),
+                    None => format!("expected a point, found {found}"),
+                };
+                self.report(Diagnostic::new(Code::WrongType, other.span(), message));
                 self.point_ref_failed = true;
-                return None;
+                None
             }
-        };
+        }
+    }
+
+    /// An interior point given as a reference or a literal.
+    pub(super) fn point_arg(&mut self, value: &Value, role: &str) -> Option<Point> {
+        let (pos, span) = self.located_vertex(value, Some(role))?;
         match pos {
             Vertex::Interior(p) => Some(p),
             Vertex::Ideal(_) => {
@@ -175,25 +182,7 @@ impl Lowerer<'_> {
 
     /// A point that may be ideal.
     pub(super) fn vertex_arg(&mut self, value: &Value) -> Option<Vertex> {
-        match value {
-            Value::Reference(r) => {
-                let i = self.resolve_point(r)?;
-                self.points[i].position
-            }
-            Value::Tuple { .. } => {
-                let (v, span) = self.point_literal(value)?;
-                self.classify_point(v, span)
-            }
-            other => {
-                self.report(Diagnostic::new(
-                    Code::WrongType,
-                    other.span(),
-                    format!("expected a point, found {}", other.describe()),
-                ));
-                self.point_ref_failed = true;
-                None
-            }
-        }
+        self.located_vertex(value, None).map(|(v, _)| v)
     }
 
     /// A point that may be ideal, with a role for the "wrong type" message.

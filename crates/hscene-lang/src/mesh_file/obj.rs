@@ -25,36 +25,8 @@ pub(super) fn parse(bytes: &[u8]) -> Result<MeshData, MeshFileError> {
             .split(|b| b.is_ascii_whitespace())
             .filter(|w| !w.is_empty());
         match words.next() {
-            Some(b"v") => {
-                let mut xyz = [0.0; 3];
-                for c in &mut xyz {
-                    let word = words
-                        .next()
-                        .ok_or_else(|| invalid("a vertex needs three coordinates"))?;
-                    *c = number_of(word)
-                        .ok_or_else(|| invalid("a vertex coordinate is not a number"))?;
-                }
-                let p = DVec3::from_array(xyz);
-                if !p.is_finite() {
-                    return Err(invalid("a vertex coordinate is not a finite number"));
-                }
-                positions.push(p);
-            }
-            Some(b"vn") => {
-                let mut xyz = [0.0; 3];
-                for c in &mut xyz {
-                    let word = words
-                        .next()
-                        .ok_or_else(|| invalid("a vertex normal needs three coordinates"))?;
-                    *c = number_of(word)
-                        .ok_or_else(|| invalid("a vertex normal coordinate is not a number"))?;
-                }
-                let n = DVec3::from_array(xyz);
-                if !n.is_finite() {
-                    return Err(invalid("a vertex normal is not finite"));
-                }
-                normals.push(n);
-            }
+            Some(b"v") => positions.push(coordinates(&mut words, &VERTEX).map_err(invalid)?),
+            Some(b"vn") => normals.push(coordinates(&mut words, &NORMAL).map_err(invalid)?),
             Some(b"f") => {
                 face.clear();
                 face_normals.clear();
@@ -84,6 +56,42 @@ pub(super) fn parse(bytes: &[u8]) -> Result<MeshData, MeshFileError> {
         normals,
         corner_normals,
     })
+}
+
+/// What can be wrong with the coordinates of a `v` or `vn` line, in words.
+struct CoordinateProblems {
+    missing: &'static str,
+    not_a_number: &'static str,
+    not_finite: &'static str,
+}
+
+const VERTEX: CoordinateProblems = CoordinateProblems {
+    missing: "a vertex needs three coordinates",
+    not_a_number: "a vertex coordinate is not a number",
+    not_finite: "a vertex coordinate is not a finite number",
+};
+
+const NORMAL: CoordinateProblems = CoordinateProblems {
+    missing: "a vertex normal needs three coordinates",
+    not_a_number: "a vertex normal coordinate is not a number",
+    not_finite: "a vertex normal is not finite",
+};
+
+/// The three finite coordinates that start `words`.
+fn coordinates<'w>(
+    words: &mut impl Iterator<Item = &'w [u8]>,
+    problems: &CoordinateProblems,
+) -> Result<DVec3, &'static str> {
+    let mut xyz = [0.0; 3];
+    for c in &mut xyz {
+        let word = words.next().ok_or(problems.missing)?;
+        *c = number_of(word).ok_or(problems.not_a_number)?;
+    }
+    let v = DVec3::from_array(xyz);
+    if !v.is_finite() {
+        return Err(problems.not_finite);
+    }
+    Ok(v)
 }
 
 /// The lines of `bytes`, each ended by LF, CRLF or a lone CR.

@@ -9,6 +9,7 @@ use hgeom::Platonic;
 use super::args::Param;
 use super::figures::{Figure, MAX_TESSELLATION_DEPTH};
 use super::options::ObjectOption;
+use crate::lower::table::{self, Row, words};
 
 /// What an object keyword builds.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -45,6 +46,12 @@ pub(super) struct KeywordRow {
     pub(super) name: &'static str,
     pub(super) builds: ObjectKeyword,
     pub(super) signature: Signature,
+}
+
+impl Row for KeywordRow {
+    fn word(&self) -> &'static str {
+        self.name
+    }
 }
 
 const fn row(name: &'static str, builds: ObjectKeyword, signature: Signature) -> KeywordRow {
@@ -347,13 +354,11 @@ pub(super) const KEYWORDS: &[KeywordRow] = &[
 
 /// The keyword spelt exactly `name`.
 pub(super) fn keyword(name: &str) -> Option<&'static KeywordRow> {
-    KEYWORDS.iter().find(|k| k.name == name)
+    table::find(KEYWORDS, name)
 }
 
-/// Every object keyword, in the order the help lists them.
-pub(crate) fn object_names() -> Vec<&'static str> {
-    KEYWORDS.iter().map(|k| k.name).collect()
-}
+/// Every object keyword, in the order of [`KEYWORDS`].
+pub(crate) const OBJECT_KEYWORDS: [&str; KEYWORDS.len()] = words!(KEYWORDS, name);
 
 #[cfg(test)]
 mod tests {
@@ -361,7 +366,7 @@ mod tests {
 
     #[test]
     fn each_keyword_has_one_row() {
-        let mut names = object_names();
+        let mut names = OBJECT_KEYWORDS.to_vec();
         names.sort_unstable();
         let before = names.len();
         names.dedup();

@@ -3,14 +3,13 @@
 //! `at` (where a figure built at the origin goes) and `smooth` (a mesh's
 //! crease angle); and placing the built shapes by them.
 
-use std::collections::HashMap;
-
 use hgeom::{ConvexPolygon, GeomError, Isometry, Point, Rod, Vertex};
 
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::{MaterialId, Object, Shape};
 use crate::lower::Lowerer;
 use crate::lower::suggest::closest;
+use crate::lower::table::{self, SeenKeys, words};
 use crate::syntax::{Ident, Statement, Value};
 
 /// An object option.
@@ -38,18 +37,10 @@ const OPTIONS: &[(&str, ObjectOption)] = &[
 ];
 
 /// The names of the object options, in the order of [`OPTIONS`].
-pub(crate) const OPTION_NAMES: [&str; OPTIONS.len()] = {
-    let mut names = [""; OPTIONS.len()];
-    let mut i = 0;
-    while i < OPTIONS.len() {
-        names[i] = OPTIONS[i].0;
-        i += 1;
-    }
-    names
-};
+pub(crate) const OPTION_NAMES: [&str; OPTIONS.len()] = words!(OPTIONS, 0);
 
 fn option(name: &str) -> Option<ObjectOption> {
-    OPTIONS.iter().find(|(n, _)| *n == name).map(|(_, o)| *o)
+    table::find(OPTIONS, name).map(|(_, o)| *o)
 }
 
 /// The options of one statement, after checking.
@@ -84,22 +75,15 @@ impl Lowerer<'_> {
     ) -> Option<ObjectOptions> {
         let mut out = ObjectOptions::default();
         let mut ok = true;
-        let mut seen: HashMap<&str, Span> = HashMap::new();
+        let mut seen = SeenKeys::default();
         for (key, value) in options {
             let Some(kind) = option(&key.text).filter(|o| accepted.contains(o)) else {
                 ok = false;
                 self.refused_option(name, accepted, key);
                 continue;
             };
-            if seen.insert(key.text.as_str(), key.span).is_some() {
-                self.report(
-                    Diagnostic::new(
-                        Code::DuplicateKey,
-                        key.span,
-                        format!("`{}` is set twice; the last value wins", key.text),
-                    )
-                    .with_help("remove one of the two"),
-                );
+            if let Some(twice) = seen.again(key) {
+                self.report(twice.with_help("remove one of the two"));
             }
             match kind {
                 ObjectOption::Wireframe | ObjectOption::Edges => {
