@@ -128,10 +128,10 @@ fn check(args: &CheckArgs, color: ColorChoice) -> ExitCode {
         if emit_ir {
             eprint!("{text}");
             // A scene with errors has no IR (`compiled.scene` is `None`).
-            if let Some(scene) = &compiled.scene {
-                if emit::write_scene_json(&mut out, path, scene).is_err() {
-                    return ExitCode::from(EXIT_USAGE_OR_IO);
-                }
+            if let Some(scene) = &compiled.scene
+                && emit::write_scene_json(&mut out, path, scene).is_err()
+            {
+                return ExitCode::from(EXIT_USAGE_OR_IO);
             }
         } else if out.write_all(text.as_bytes()).is_err() {
             return ExitCode::from(EXIT_USAGE_OR_IO);

@@ -32,7 +32,7 @@ pub enum GeomError {
     #[error("points are collinear")]
     Collinear,
     /// A radius or thickness must be positive and finite.
-    #[error("radius must be positive and finite, got {}", crate::Compact(*.0))]
+    #[error("radius must be positive and finite, got {}", crate::compact::Compact(*.0))]
     BadRadius(f64),
     /// A polygon needs at least three vertices.
     #[error("a polygon needs at least 3 vertices, got {0}")]
@@ -75,7 +75,7 @@ pub enum GeomError {
         sinh_product: f64,
     },
     /// An angle outside the range a construction admits.
-    #[error("angle {} rad is outside the admissible range", crate::Compact(*.0))]
+    #[error("angle {} rad is outside the admissible range", crate::compact::Compact(*.0))]
     BadAngle(f64),
     /// A matrix that must be orthogonal is not (to the stated tolerance).
     #[error("matrix is not orthogonal (max |Q Q^T - I| = {defect:e})")]

@@ -50,7 +50,7 @@ const INDENT: &str = "    ";
 /// one line break (or is empty for a file of only whitespace), uses `\n`
 /// line breaks, and formatting it again gives it back unchanged.
 pub fn format(source: &str) -> Result<String, FormatError> {
-    let parsed = crate::parse(source);
+    let parsed = crate::parser::parse(source);
     let errors: Vec<Diagnostic> = parsed
         .diagnostics
         .into_iter()

@@ -21,6 +21,7 @@ pub mod ir;
 mod lower;
 pub mod mesh_file;
 mod numbers;
+mod options;
 mod parser;
 pub mod source;
 pub mod symbols;
@@ -32,6 +33,7 @@ pub mod vocabulary;
 pub use diagnostic::{Code, Diagnostic, LineIndex, Severity, Span};
 pub use format::{FormatError, format};
 pub use lower::{MAX_FRAMES, MAX_PIXELS, MAX_SAMPLES};
+pub use options::Options;
 pub use parser::{Parsed, parse};
 
 /// The result of compiling a scene: the IR if there were no errors, and every
@@ -49,19 +51,6 @@ impl Compiled {
     pub fn has_errors(&self) -> bool {
         self.diagnostics.iter().any(Diagnostic::is_error)
     }
-}
-
-/// What [`compile_with`] needs besides the source text.
-#[derive(Clone, Debug, Default)]
-pub struct Options {
-    /// The directory that relative mesh file names are resolved from
-    /// (normally the scene file's own); `None`: the current directory.
-    pub base_dir: Option<std::path::PathBuf>,
-    /// The animation frame to lower, 0-based (`frames = N` in `Globals`);
-    /// past the last frame means the last. Every frame reports the same
-    /// diagnostics except those about where things end up (lints on the
-    /// final positions, numeric failures of the moves).
-    pub frame: u32,
 }
 
 /// Parse, validate and lower a scene: frame 0, mesh files relative to the

@@ -110,7 +110,7 @@ struct Lowerer<'d> {
 pub(crate) fn lower(
     file: &SourceFile,
     source: &str,
-    options: &crate::Options,
+    options: &crate::options::Options,
     diags: &mut Vec<Diagnostic>,
 ) -> Option<Scene> {
     let frames = declared_frames(file);

@@ -1,0 +1,14 @@
+//! What a compilation needs besides the source text.
+
+/// What [`compile_with`] needs besides the source text.
+#[derive(Clone, Debug, Default)]
+pub struct Options {
+    /// The directory that relative mesh file names are resolved from
+    /// (normally the scene file's own); `None`: the current directory.
+    pub base_dir: Option<std::path::PathBuf>,
+    /// The animation frame to lower, 0-based (`frames = N` in `Globals`);
+    /// past the last frame means the last. Every frame reports the same
+    /// diagnostics except those about where things end up (lints on the
+    /// final positions, numeric failures of the moves).
+    pub frame: u32,
+}
