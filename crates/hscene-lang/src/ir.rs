@@ -197,6 +197,24 @@ pub struct Material {
     pub texture: Option<Texture>,
 }
 
+impl Default for Material {
+    /// Every field at the language's default: black, no mirror, opaque,
+    /// shininess 1, refraction index 1, no texture.
+    fn default() -> Material {
+        Material {
+            name: None,
+            ambient: Rgb::BLACK,
+            diffuse: Rgb::BLACK,
+            specular: Rgb::BLACK,
+            reflection: 0.0,
+            transmission: 0.0,
+            shininess: 1.0,
+            refraction: 1.0,
+            texture: None,
+        }
+    }
+}
+
 /// The pattern of a [`Texture`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Pattern {

@@ -73,15 +73,8 @@ pub fn matte(r: f64, g: f64, b: f64) -> Material {
 /// A material that only glows with its ambient colour (no lights needed).
 pub fn flat(r: f64, g: f64, b: f64) -> Material {
     Material {
-        name: None,
         ambient: Rgb::new(r, g, b),
-        diffuse: Rgb::BLACK,
-        specular: Rgb::BLACK,
-        reflection: 0.0,
-        transmission: 0.0,
-        shininess: 1.0,
-        refraction: 1.0,
-        texture: None,
+        ..Material::default()
     }
 }
 

@@ -59,14 +59,7 @@ fn scaled(c: Rgb, k: f64) -> Rgb {
 fn default_material(name: Option<String>) -> Material {
     Material {
         name,
-        ambient: Rgb::BLACK,
-        diffuse: Rgb::BLACK,
-        specular: Rgb::BLACK,
-        reflection: 0.0,
-        transmission: 0.0,
-        shininess: 1.0,
-        refraction: 1.0,
-        texture: None,
+        ..Material::default()
     }
 }
 
