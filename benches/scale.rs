@@ -29,7 +29,7 @@
 //! (`misses`: a hierarchy that loses objects shows here).
 
 use std::fmt::Write as _;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
 
 use hgeom::glam::DVec3;
@@ -418,7 +418,7 @@ fn list<T: std::str::FromStr + Clone>(
 
 fn run_case(
     case: Case,
-    hscene: &PathBuf,
+    hscene: &Path,
     resolution: u32,
     threads: Option<usize>,
     povray: bool,

@@ -130,7 +130,7 @@ impl Probe {
         let window = match scene.settings.fov {
             None => scene.settings.window,
             Some(fov) => {
-                let res = Resolution::new(k, k);
+                let res = Resolution::new(k, k).ok_or("an empty grid")?;
                 hscene_lang::view::fov_window(fov, Net::Euclidean, res, camera.view_distance)
                     .map_err(|e| format!("fov {fov}: {e:?}"))?
             }
