@@ -164,11 +164,14 @@ pub struct HitErrors {
     pub sampled: usize,
 }
 
+/// A surface as the zero set of a 320-bit function of hyperboloid points.
+type Implicit = Box<dyn Fn(&V4) -> R>;
+
 /// One surface in the camera's frame, as the reference knows it.
 enum Part {
     Sphere(HSphere),
     Cylinder(HCylinder),
-    Rod(Rod),
+    Rod(Box<Rod>),
 }
 
 impl Part {
@@ -181,9 +184,9 @@ impl Part {
         hit.map(|h| h.t)
     }
 
-    /// The surface as the zero set of a 320-bit function of hyperboloid
-    /// points; `None` where the reference cannot express it (ideal ends).
-    fn implicit(&self) -> Option<Box<dyn Fn(&V4) -> R>> {
+    /// The surface's implicit function; `None` where the reference cannot
+    /// express it (ideal ends).
+    fn implicit(&self) -> Option<Implicit> {
         match self {
             Part::Sphere(s) => {
                 let c = r::hyperboloid(s.center().coords());
@@ -248,11 +251,11 @@ pub fn hit_errors(scene: &Scene, probe: &Probe) -> HitErrors {
             Shape::Cylinder(c) => {
                 Part::Cylinder(stages.iter().fold(*c, |c, iso| c.transformed(iso)))
             }
-            Shape::Rod(rod) => Part::Rod(move_rod(rod)),
+            Shape::Rod(rod) => Part::Rod(Box::new(move_rod(rod))),
             Shape::Wireframe(rods) => {
                 let nearest = rods
                     .iter()
-                    .map(|rod| Part::Rod(move_rod(rod)))
+                    .map(|rod| Part::Rod(Box::new(move_rod(rod))))
                     .filter_map(|p| p.intersect(&ray).map(|t| ((t - hit.t).abs(), p)))
                     .min_by(|a, b| a.0.total_cmp(&b.0));
                 let Some((_, part)) = nearest else {
