@@ -17,14 +17,19 @@
 //! points and a 320-bit recomputation, on a 48x48 grid of pixels.
 
 use std::fmt::Write as _;
-use std::process::{Command, ExitCode};
+use std::process::ExitCode;
 use std::time::Instant;
 
 use hgeom::glam::DVec3;
-use hgeom::{HSphere, Point, Ray};
-use hrender::{CanonicalCamera, Nearest, PixelNet, PreparedScene, RenderOptions, Sample};
-use hscene_lang::ir::{Net, Resolution, Scene, Shape};
-use hscene_test_support::reference::{self as r, R, V4};
+use hgeom::{HSphere, Point};
+use hrender::RenderOptions;
+use hscene_lang::ir::{Net, Resolution};
+
+// The scale bench uses all of it, this one a part: CPU time and peak memory
+// of POV-Ray are not in the thesis's tables.
+#[allow(dead_code)]
+mod common;
+use common::v;
 
 /// One benchmark scene.
 struct Case {
@@ -137,10 +142,6 @@ fn light_positions(n: usize) -> Vec<DVec3> {
         DVec3::new(0.0, 0.0, 0.05),
     ];
     all[..n].to_vec()
-}
-
-fn v(p: DVec3) -> String {
-    format!("({}, {}, {})", p.x, p.y, p.z)
 }
 
 /// The hscene source of a case.
@@ -260,79 +261,11 @@ fn pov_source(c: &Case, resolution: u32) -> String {
     s
 }
 
-/// Max and median hyperbolic distance between primary hit points and the
-/// 320-bit recomputation, over a `k x k` grid of pixels.
-fn hit_errors(scene: &Scene, k: u32) -> Result<(f64, f64, usize), String> {
-    let camera = CanonicalCamera::new(&scene.camera).map_err(|e| e.to_string())?;
-    let prepared = PreparedScene::new(scene, &camera.to_canonical).map_err(|e| e.to_string())?;
-    let net = PixelNet::new(Net::Euclidean, scene.settings.window, camera.view_distance);
-    let mut errors = Vec::new();
-    for j in 0..k {
-        for i in 0..k {
-            let sx = (f64::from(i) + 0.5) / f64::from(k) - 0.5;
-            let sy = 0.5 - (f64::from(j) + 0.5) / f64::from(k);
-            let Sample::Ray(dir) = net.sample(sx, sy) else {
-                continue;
-            };
-            let ray = Ray::from_origin_unchecked(dir);
-            let Nearest::Hit(hit, index) = prepared.nearest(&ray, 0.0) else {
-                continue;
-            };
-            let f: Box<dyn Fn(&V4) -> R> = match &scene.objects[index].shape {
-                Shape::Sphere(s) => {
-                    let moved = s.transformed(&camera.to_canonical);
-                    let c = r::hyperboloid(moved.center().coords());
-                    let k = R::f(moved.radius()).cosh();
-                    Box::new(move |x: &V4| -r::ldot(x, &c) - &k)
-                }
-                Shape::Cylinder(cyl) => {
-                    let moved = cyl.transformed(&camera.to_canonical);
-                    let line = moved.line();
-                    let (Ok(a), Ok(b)) = (line.point_at(0.0), line.point_at(1.0)) else {
-                        continue;
-                    };
-                    let (ah, bh) = (r::hyperboloid(a.coords()), r::hyperboloid(b.coords()));
-                    let sh = R::f(moved.radius()).sinh();
-                    let s2 = &sh * &sh;
-                    Box::new(move |x: &V4| r::sinh2_to_line(x, &ah, &bh) - &s2)
-                }
-                _ => continue,
-            };
-            if let Some(t_ref) = r::root_near(hit.t, |t| f(&r::from_origin(dir, t))) {
-                errors.push((R::f(hit.t) - t_ref).abs().to_f64());
-            }
-        }
-    }
-    errors.sort_by(f64::total_cmp);
-    let max = errors.last().copied().unwrap_or(0.0);
-    let median = errors.get(errors.len() / 2).copied().unwrap_or(0.0);
-    Ok((max, median, errors.len()))
-}
-
 /// Wall time of POV-Ray rendering the twin, if `povray` runs.
 fn povray_seconds(c: &Case, resolution: u32) -> Option<f64> {
-    let dir = tempfile::tempdir().ok()?;
-    let pov = dir.path().join("twin.pov");
-    std::fs::write(&pov, pov_source(c, resolution)).ok()?;
-    let out = dir.path().join("twin.png");
-    let start = Instant::now();
-    let status = Command::new("povray")
-        .arg(format!("+I{}", pov.display()))
-        .arg(format!("+O{}", out.display()))
-        .args([
-            format!("+W{resolution}"),
-            format!("+H{resolution}"),
-            "-D".into(),
-            "-A".into(),
-            "-GA".into(),
-            "+FN".into(),
-        ])
-        .stdout(std::process::Stdio::null())
-        .stderr(std::process::Stdio::null())
-        .status()
-        .ok()?;
-    let secs = start.elapsed().as_secs_f64();
-    status.success().then_some(secs)
+    common::povray(&pov_source(c, resolution), resolution, None)
+        .ok()
+        .map(|m| m.wall_s)
 }
 
 struct Row {
@@ -353,10 +286,7 @@ fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let json = args.iter().any(|a| a == "--json");
     let povray = args.iter().any(|a| a == "--povray");
-    let resolution: u32 = args
-        .iter()
-        .position(|a| a == "--resolution")
-        .and_then(|i| args.get(i + 1))
+    let resolution: u32 = common::arg_value(&args, "--resolution")
         .and_then(|s| s.parse().ok())
         .unwrap_or(1000);
     let mut rows = Vec::new();
@@ -384,8 +314,8 @@ fn main() -> ExitCode {
             }
         };
         let seconds = start.elapsed().as_secs_f64();
-        let (max_error, median_error, sampled) = match hit_errors(&scene, 48) {
-            Ok(e) => e,
+        let errors = match common::Probe::new(&scene, 48) {
+            Ok(probe) => common::hit_errors(&scene, &probe),
             Err(e) => {
                 eprintln!("error measurement failed: {e}");
                 return ExitCode::FAILURE;
@@ -399,9 +329,9 @@ fn main() -> ExitCode {
             thesis_s: c.thesis_s,
             seconds,
             mrays_per_s: rendered.stats.rays as f64 / seconds / 1e6,
-            max_error,
-            median_error,
-            sampled,
+            max_error: errors.max,
+            median_error: errors.median,
+            sampled: errors.sampled,
             povray_s: if povray {
                 povray_seconds(&c, resolution)
             } else {
