@@ -208,29 +208,11 @@ impl Part {
                 let (ah, bh) = (r::hyperboloid(a.coords()), r::hyperboloid(b.coords()));
                 let sh = R::f(rod.radius()).sinh();
                 let s2 = &sh * &sh;
-                Some(Box::new(move |x: &V4| sinh2_to_segment(x, &ah, &bh) - &s2))
+                Some(Box::new(move |x: &V4| {
+                    r::sinh2_to_segment(x, &ah, &bh) - &s2
+                }))
             }
         }
-    }
-}
-
-/// `sinh^2` of the distance from `x` to the h-segment from `a` to `b`: to
-/// the nearer end beyond either end's perpendicular h-plane, else to the
-/// h-line. (test-support keeps its copy private to its accuracy families.)
-fn sinh2_to_segment(x: &V4, a: &V4, b: &V4) -> R {
-    let ab = r::ldot(a, b);
-    // Tangent at a towards b is proportional to b + <a,b> a.
-    let ua = b.add(&a.scale(&ab));
-    let ub = a.add(&b.scale(&ab));
-    let one = R::f(1.0);
-    if r::ldot(x, &ua).is_negative() {
-        let c = r::ldot(x, a);
-        &c * &c - &one
-    } else if r::ldot(x, &ub).is_negative() {
-        let c = r::ldot(x, b);
-        &c * &c - &one
-    } else {
-        r::sinh2_to_line(x, a, b)
     }
 }
 

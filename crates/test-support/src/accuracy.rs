@@ -461,7 +461,7 @@ pub fn rod_hits(rng: &mut SplitMix64, n: usize) -> Family {
             Some((
                 dir,
                 hit.t,
-                Box::new(move |x: &V4| sinh2_to_segment(x, &ah, &bh) - &s2),
+                Box::new(move |x: &V4| r::sinh2_to_segment(x, &ah, &bh) - &s2),
             ))
         },
     )
@@ -487,26 +487,6 @@ pub fn horosphere_hits(rng: &mut SplitMix64, n: usize) -> Family {
             Some((dir, hit.t, Box::new(move |x: &V4| -r::ldot(x, &l) - &k)))
         },
     )
-}
-
-/// `sinh^2` of the distance from `x` to the segment `a b`: to the line when
-/// the foot of the perpendicular falls between the ends (both angles at the
-/// ends of triangle `x a b` at most 90 degrees), else to the nearer end.
-fn sinh2_to_segment(x: &V4, a: &V4, b: &V4) -> R {
-    let ab = r::ldot(a, b);
-    // Tangent at a towards b is proportional to b + <a,b> a.
-    let ua = b.add(&a.scale(&ab));
-    let ub = a.add(&b.scale(&ab));
-    let one = R::f(1.0);
-    if r::ldot(x, &ua).is_negative() {
-        let c = r::ldot(x, a);
-        &c * &c - &one
-    } else if r::ldot(x, &ub).is_negative() {
-        let c = r::ldot(x, b);
-        &c * &c - &one
-    } else {
-        r::sinh2_to_line(x, a, b)
-    }
 }
 
 /// The 4x4 determinant `det[x; a; b; c]`, zero iff `x` lies in the span of

@@ -246,3 +246,23 @@ pub fn sinh2_to_line(x: &V4, a: &V4, b: &V4) -> R {
     let num = &b1 * &b1 + &b2 * &b2 - R::f(2.0) * &c * &b1 * &b2;
     -R::f(1.0) - num / (&c * &c - R::f(1.0))
 }
+
+/// `sinh^2` of the distance from `x` to the segment `a b`: to the line when
+/// the foot of the perpendicular falls between the ends (both angles at the
+/// ends of triangle `x a b` at most 90 degrees), else to the nearer end.
+pub fn sinh2_to_segment(x: &V4, a: &V4, b: &V4) -> R {
+    let ab = ldot(a, b);
+    // Tangent at a towards b is proportional to b + <a,b> a.
+    let ua = b.add(&a.scale(&ab));
+    let ub = a.add(&b.scale(&ab));
+    let one = R::f(1.0);
+    if ldot(x, &ua).is_negative() {
+        let c = ldot(x, a);
+        &c * &c - &one
+    } else if ldot(x, &ub).is_negative() {
+        let c = ldot(x, b);
+        &c * &c - &one
+    } else {
+        sinh2_to_line(x, a, b)
+    }
+}
