@@ -7,12 +7,20 @@
 //!
 //! `cargo bench --bench check -- --warm-up-time 1 --measurement-time 3`
 
-use std::fmt::Write as _;
 use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_main};
 
 const APPENDIX: &str = include_str!("../scenes/thesis-appendix-a.hsc");
+
+/// Appends one formatted line to a `String`, which cannot fail (writing
+/// to a `String` is infallible), so no `Result` is left to unwrap.
+macro_rules! push_line {
+    ($s:ident, $($arg:tt)*) => {{
+        $s.push_str(&format!($($arg)*));
+        $s.push('\n');
+    }};
+}
 
 /// A valid scene of at least `target` bytes: named and anonymous points, two
 /// materials, a few lights, spheres, Platonic solids and a polygon, and a
@@ -39,44 +47,41 @@ fn generated_scene(target: usize) -> String {
         let t = i as f64 * 0.618_033_988_749_895;
         let (x, y) = (0.2 * t.sin(), 0.2 * t.cos());
         let z = 0.3 + 0.2 * ((i % 97) as f64 / 97.0);
-        writeln!(s, "    p{i} = ({x:.6}, {y:.6}, {z:.6});").unwrap();
+        push_line!(s, "    p{i} = ({x:.6}, {y:.6}, {z:.6});");
     }
     for i in 0..lights {
         let t = i as f64 * 0.7;
-        writeln!(
+        push_line!(
             s,
             "    ({:.4}, {:.4}, -0.05);",
             0.3 * t.sin(),
             0.3 * t.cos()
-        )
-        .unwrap();
+        );
     }
     s.push_str("    (0.05, 0, 0.3); (0.05, 0.05, 0.3); (0, 0.05, 0.3);\n}\n\nLights {\n");
     for i in 0..lights {
-        writeln!(
+        push_line!(
             s,
             "    %{}, (0.35, 0.35, 0.35), (0.7, 0.7, 0.7);",
             n + 5 + i
-        )
-        .unwrap();
+        );
     }
     s.push_str("}\n\nObjects {\n    Dodecahedron 0.045, #glass;\n    Icosahedron 0.03, #matte;\n");
-    writeln!(
+    push_line!(
         s,
         "    Polygon (%target, %{}, %{}, %{}), #matte;",
         n + lights + 5,
         n + lights + 6,
         n + lights + 7
-    )
-    .unwrap();
+    );
     for i in 0..n {
         let m = if i % 3 == 0 { "glass" } else { "matte" };
-        writeln!(s, "    Sphere %p{i}, 0.004, #{m};").unwrap();
+        push_line!(s, "    Sphere %p{i}, 0.004, #{m};");
     }
     s.push_str("}\n\nTransformations {\n    hline (%a, %b);\n    axis: hline (%a, %c);\n");
     for i in 0..n {
-        writeln!(s, "    %p{i}->Rotate(%1, -0.0{});", i % 10).unwrap();
-        writeln!(s, "    %p{i}->Translate(%axis);").unwrap();
+        push_line!(s, "    %p{i}->Rotate(%1, -0.0{});", i % 10);
+        push_line!(s, "    %p{i}->Translate(%axis);");
     }
     s.push_str("}\n");
     s

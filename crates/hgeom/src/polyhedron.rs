@@ -586,6 +586,11 @@ impl Polyhedron {
         &self.faces
     }
 
+    /// The faces, taken out of the polyhedron (no copy).
+    pub fn into_faces(self) -> Vec<ConvexPolygon> {
+        self.faces
+    }
+
     /// The reference centre.
     ///
     /// # Accuracy

@@ -127,12 +127,6 @@ impl Shape {
         self.all(&|s| s.is_representable())
     }
 
-    /// True if every surface of the shape can be traced exactly in this
-    /// frame (`hgeom::Shape::is_traceable`).
-    pub fn is_traceable(&self) -> bool {
-        self.all(&|s| s.is_traceable())
-    }
-
     /// True if `test` holds for every surface of the shape.
     fn all(&self, test: &dyn Fn(&dyn Surface) -> bool) -> bool {
         match self {
@@ -174,7 +168,9 @@ impl Shape {
         match self {
             Shape::Sphere(s) => Surfaces::Single(boxed(s)),
             Shape::Polygon(p) => Surfaces::Single(boxed(p)),
-            Shape::Polyhedron(p) => Surfaces::Parts(p.faces().iter().cloned().map(boxed).collect()),
+            Shape::Polyhedron(p) => {
+                Surfaces::Parts(p.into_faces().into_iter().map(boxed).collect())
+            }
             Shape::Plane(p) => Surfaces::Single(boxed(p)),
             Shape::Rod(r) => Surfaces::Single(boxed(r)),
             Shape::Cylinder(c) => Surfaces::Single(boxed(c)),
