@@ -252,11 +252,15 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
     // frame is compiled on its own. Diagnostics were shown for frame 0;
     // those of later frames are shown only if they are errors.
     for k in 0..frames {
-        let scene = if k == 0 {
-            scene.clone()
+        let later;
+        let frame_scene = if k == 0 {
+            &scene
         } else if !scene.animation.moves_points {
             match scene.frame(k) {
-                Ok(s) => s,
+                Ok(s) => {
+                    later = s;
+                    &later
+                }
                 Err(e) => {
                     eprintln!("error: {e}");
                     return ExitCode::from(EXIT_SCENE_ERRORS);
@@ -265,7 +269,10 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
         } else {
             let compiled = hscene_lang::compile_with(&source, &compile_options(&args.scene, k));
             match compiled.scene {
-                Some(s) => s,
+                Some(s) => {
+                    later = s;
+                    &later
+                }
                 None => {
                     eprintln!("error: frame {k} of the animation has errors:");
                     show(&compiled.diagnostics);
@@ -275,7 +282,7 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
         };
         let code = render_frame(
             args,
-            &scene,
+            frame_scene,
             &frame_path(&args.output, k),
             stderr_tty,
             &auto_ev,
