@@ -8,6 +8,7 @@
 //! cargo bench --bench scale -- --resolution 200  # quicker, smaller
 //! cargo bench --bench scale -- --threads 1       # both renderers on one thread
 //! cargo bench --bench scale -- --tessellation 2,6 --json
+//! cargo bench --bench scale -- --n 1000 --write-scenes /tmp/s  # keep the scenes, for profiling
 //! ```
 //!
 //! Each scene (`spheres-N`, `rods-N`, `tessellation-D`; 2 point lights,
@@ -422,6 +423,7 @@ fn run_case(
     resolution: u32,
     threads: Option<usize>,
     povray: bool,
+    keep: Option<&Path>,
 ) -> Result<Row, String> {
     let source = scene_source(case, resolution);
     let compiled = hscene_lang::compile(&source);
@@ -436,6 +438,10 @@ fn run_case(
     let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
     let scene_file = dir.path().join(format!("{}.hsc", case.name()));
     std::fs::write(&scene_file, &source).map_err(|e| e.to_string())?;
+    if let Some(keep) = keep {
+        std::fs::write(keep.join(format!("{}.hsc", case.name())), &source)
+            .map_err(|e| format!("--write-scenes: {e}"))?;
+    }
     let mut cmd = Command::new(hscene);
     cmd.arg("render")
         .arg(&scene_file)
@@ -513,6 +519,7 @@ fn main() -> ExitCode {
         eprintln!("cannot find the hscene binary: run through `cargo bench --bench scale`");
         return ExitCode::FAILURE;
     };
+    let keep = common::arg_value(&args, "--write-scenes").map(Path::new);
     let povray = povray_installed();
     if !povray {
         eprintln!("povray is not on the PATH: its columns stay empty");
@@ -527,7 +534,7 @@ fn main() -> ExitCode {
         print_header(resolution, threads);
     }
     for case in cases {
-        match run_case(case, &hscene, resolution, threads, povray) {
+        match run_case(case, &hscene, resolution, threads, povray, keep) {
             Ok(row) if json => println!("{}", json_row(&row, resolution, threads)),
             Ok(row) => print_row(&row),
             Err(e) => {
