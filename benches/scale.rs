@@ -266,7 +266,7 @@ fn hierarchy_misses(probe: &Probe) -> usize {
             };
             let exhaustive = objects
                 .iter()
-                .filter_map(|o| o.primitive.intersect(&ray, 0.0, f64::INFINITY))
+                .filter_map(|o| o.intersect(&ray, 0.0, f64::INFINITY))
                 .map(|h| h.t)
                 .min_by(f64::total_cmp);
             match (found, exhaustive) {

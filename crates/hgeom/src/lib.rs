@@ -55,6 +55,7 @@ mod fermi;
 mod honeycomb;
 mod horosphere;
 mod isometry;
+mod klein_box;
 mod line;
 pub mod lorentz;
 mod mesh;
@@ -85,6 +86,7 @@ pub use honeycomb::{
 };
 pub use horosphere::Horosphere;
 pub use isometry::Isometry;
+pub use klein_box::{KleinBox, KleinRay};
 pub use line::HLine;
 pub use mesh::{GivenNormals, TriangleMesh};
 pub use plane::{BallShape, HPlane};

@@ -13,6 +13,7 @@ use crate::bound::{self, BoundingBall};
 use crate::cylinder::HCylinder;
 use crate::horosphere::Horosphere;
 use crate::isometry::Isometry;
+use crate::klein_box::KleinBox;
 use crate::lorentz;
 use crate::mesh::TriangleMesh;
 use crate::plane::HPlane;
@@ -72,6 +73,19 @@ pub trait Shape {
     /// small balls, which hug them far better than one ball can.
     fn bound_pieces(&self) -> Vec<BoundingBall> {
         self.bound().into_iter().collect()
+    }
+
+    /// Klein-model boxes whose union contains the surface (and every hit
+    /// its exact test accepts), for the leaves of a box hierarchy; empty if
+    /// no finite box is known. By default the boxes of
+    /// [`Shape::bound_pieces`]; flat shapes give the box of their vertices,
+    /// which is exact (their hull is straight in the Klein model) and
+    /// exists even with ideal vertices.
+    fn klein_boxes(&self) -> Vec<KleinBox> {
+        self.bound_pieces()
+            .iter()
+            .filter_map(KleinBox::around_ball)
+            .collect()
     }
 
     /// True if every quantity that defines the surface is finite and usable
@@ -190,6 +204,11 @@ impl Shape for ConvexPolygon {
     fn bound(&self) -> Option<BoundingBall> {
         bound::vertices_ball(self.vertices())
     }
+    fn klein_boxes(&self) -> Vec<KleinBox> {
+        KleinBox::around_vertices(self.vertices())
+            .into_iter()
+            .collect()
+    }
     fn is_representable(&self) -> bool {
         self.vertices().iter().all(vertex_ok)
     }
@@ -203,6 +222,11 @@ impl Shape for Polyhedron {
     /// The ball about every vertex; `None` if a vertex is ideal.
     fn bound(&self) -> Option<BoundingBall> {
         bound::vertices_ball(self.faces().iter().flat_map(|f| f.vertices()))
+    }
+    fn klein_boxes(&self) -> Vec<KleinBox> {
+        KleinBox::around_vertices(self.faces().iter().flat_map(|f| f.vertices()))
+            .into_iter()
+            .collect()
     }
     fn is_representable(&self) -> bool {
         self.center().is_representable() && self.faces().iter().all(Shape::is_representable)

@@ -14,7 +14,7 @@
 //! hyperboloid can no longer resolve) is counted in [`RenderStats`], never
 //! hidden, and no pixel is ever NaN or infinite.
 
-mod bvh;
+mod accel;
 mod camera;
 mod color;
 mod display;
@@ -50,7 +50,7 @@ pub use output::{ImageFormat, SampleDepth, check_depth, write_image, write_image
 pub use output_check::{Overwrite, check_output};
 pub use ray_budget::{MAX_SECONDARY_RAYS, RayBudget};
 pub use sampling::{SampleStream, Sampler};
-pub use scene::{Nearest, PreparedScene, Primitive};
+pub use scene::{Nearest, PreparedObject, PreparedScene};
 pub use tracer::{TraceStats, Tracer};
 pub use unfinished::remove_unfinished_outputs;
 

@@ -1,231 +1,73 @@
 //! The scene prepared for tracing: everything moved into the canonical frame
 //! once, in f64, so near the eye every quantity is small and well conditioned;
-//! and bounding h-spheres around everything finite, in a hierarchy, so a ray
-//! pays the exact intersection only for what it may actually meet.
+//! and one hierarchy of Klein-model boxes over every bounded surface of every
+//! object ([`crate::accel`]), so a ray pays the exact intersection only for
+//! what it may actually meet.
 
 use hgeom::glam::{DVec3, DVec4};
 use hgeom::{Hit, Isometry, Point, Ray};
 use hscene_lang::ir::{self, BoxedSurface, Fog, Material, Rgb, Scene, Surfaces};
 
-use crate::bvh::{Bound, Bvh, Step};
+use crate::accel::{Accel, Leaf, Step};
 use crate::camera::CanonicalCamera;
 use crate::error::RenderError;
 
-/// A traceable shape in the canonical frame: one surface, or the parts of a
-/// composite (a polyhedron's faces, a wireframe's rods) under a hierarchy of
-/// their own. Which kinds of surface there are is the IR's business
-/// ([`ir::Shape`]); here every surface is an `hgeom::Shape`.
-pub enum Primitive {
-    /// One surface.
-    Single(BoxedSurface),
-    /// Parts with a hierarchy over them.
-    Composite(Composite),
-}
-
-impl std::fmt::Debug for Primitive {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Primitive::Single(_) => f.write_str("Primitive::Single"),
-            Primitive::Composite(c) => write!(f, "Primitive::Composite({} parts)", c.parts.len()),
-        }
-    }
-}
-
-/// Parts with a hierarchy of bounds over them.
-pub struct Composite {
-    parts: Vec<BoxedSurface>,
-    accel: Accel,
-}
-
-impl Composite {
-    fn new(parts: Vec<BoxedSurface>) -> Composite {
-        let mut leaves = Vec::new();
-        for (i, part) in parts.iter().enumerate() {
-            let pieces = part.bound_pieces();
-            if pieces.is_empty() {
-                leaves.push((i as u32, None));
-            }
-            leaves.extend(
-                pieces
-                    .iter()
-                    .map(|b| (i as u32, Bound::new(b.center(), b.radius()))),
-            );
-        }
-        Composite {
-            parts,
-            accel: Accel::new(&leaves),
-        }
-    }
-
-    /// The parts.
-    pub fn parts(&self) -> &[BoxedSurface] {
-        &self.parts
-    }
-
-    #[inline]
-    fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        self.accel
-            .nearest(ray, t_min, t_max, |i, lo, hi| {
-                self.parts[i as usize].intersect(ray, lo, hi)
-            })
-            .map(|(hit, _)| hit)
-    }
-
-    #[inline]
-    fn blocks(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
-        let mut found = false;
-        self.accel.any(ray, t_min, t_max, |i| {
-            found = self.parts[i as usize].blocks(ray, t_min, t_max);
-            if found { Step::Stop } else { Step::Continue }
-        });
-        found
-    }
-}
-
-/// A bounding hierarchy over items `0..n`, plus the items without a bound
-/// (h-planes, h-cylinders, horospheres, anything with an ideal point), which
-/// every ray tests.
-#[derive(Clone, Debug, Default)]
-struct Accel {
-    bvh: Bvh,
-    unbounded: Vec<u32>,
-}
-
-impl Accel {
-    /// From `(item, bound)` leaves; an item may have several leaves (its
-    /// exact test then runs at most once per leaf the ray enters, which is
-    /// harmless: a repeated test finds nothing nearer).
-    fn new(leaves: &[(u32, Option<Bound>)]) -> Accel {
-        let mut bounded = Vec::new();
-        let mut unbounded = Vec::new();
-        for (i, b) in leaves {
-            match b {
-                Some(b) => bounded.push((*i, *b)),
-                None => unbounded.push(*i),
-            }
-        }
-        Accel {
-            bvh: Bvh::build(&bounded),
-            unbounded,
-        }
-    }
-
-    /// A ball around every item, if all are bounded.
-    fn bound(&self) -> Option<Bound> {
-        if self.unbounded.is_empty() {
-            self.bvh.bound()
-        } else {
-            None
-        }
-    }
-
-    /// The nearest hit among the items: `test(item, t_min, t_max)` is the
-    /// item's exact test, called with the nearest hit so far as `t_max`.
-    #[inline]
-    fn nearest(
-        &self,
-        ray: &Ray,
-        t_min: f64,
-        t_max: f64,
-        mut test: impl FnMut(u32, f64, f64) -> Option<Hit>,
-    ) -> Option<(Hit, u32)> {
-        let mut best = None;
-        let mut limit = t_max;
-        for &i in &self.unbounded {
-            if let Some(hit) = test(i, t_min, limit) {
-                limit = hit.t;
-                best = Some((hit, i));
-            }
-        }
-        if !self.bvh.is_empty() {
-            // The bounds work in u = e^t (no logarithms in their test).
-            let mut u_max = limit.exp();
-            self.bvh.traverse(ray, t_min.exp(), &mut u_max, |i, u_max| {
-                if let Some(hit) = test(i, t_min, limit) {
-                    limit = hit.t;
-                    *u_max = hit.t.exp();
-                    best = Some((hit, i));
-                }
-                Step::Continue
-            });
-        }
-        best
-    }
-
-    /// Visit every item that may meet the ray's arc `(t_min, t_max)`, until
-    /// `visit` says stop.
-    #[inline]
-    fn any(&self, ray: &Ray, t_min: f64, t_max: f64, mut visit: impl FnMut(u32) -> Step) {
-        for &i in &self.unbounded {
-            if visit(i) == Step::Stop {
-                return;
-            }
-        }
-        let mut u_max = t_max.exp();
-        self.bvh
-            .traverse(ray, t_min.exp(), &mut u_max, |i, _| visit(i));
-    }
-}
-
-impl Primitive {
-    /// The shape moved by each of `stages` in turn.
-    fn from_shape(shape: &ir::Shape, stages: &[Isometry]) -> Primitive {
-        let mut moved = shape.transformed(&stages[0]);
-        for iso in &stages[1..] {
-            moved = moved.transformed(iso);
-        }
-        match moved.into_surfaces() {
-            Surfaces::Single(s) => Primitive::Single(s),
-            Surfaces::Parts(parts) => Primitive::Composite(Composite::new(parts)),
-        }
-    }
-
-    /// True if every part can be traced exactly in the canonical frame.
-    fn is_traceable(&self) -> bool {
-        match self {
-            Primitive::Single(s) => s.is_traceable(),
-            Primitive::Composite(c) => c.parts.iter().all(|p| p.is_traceable()),
-        }
-    }
-
-    /// A ball containing the primitive, if it is bounded.
-    fn bound(&self) -> Option<Bound> {
-        match self {
-            Primitive::Single(s) => s.bound().and_then(|b| Bound::new(b.center(), b.radius())),
-            Primitive::Composite(c) => c.accel.bound(),
-        }
-    }
-
-    /// Nearest hit in `(t_min, t_max)`.
-    #[inline]
-    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        match self {
-            Primitive::Single(s) => s.intersect(ray, t_min, t_max),
-            Primitive::Composite(c) => c.intersect(ray, t_min, t_max),
-        }
-    }
-
-    /// True if the primitive meets the ray anywhere in `(t_min, t_max)`; for
-    /// composites, stops at the first part met.
-    #[inline]
-    pub fn blocks(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
-        match self {
-            Primitive::Single(s) => s.blocks(ray, t_min, t_max),
-            Primitive::Composite(c) => c.blocks(ray, t_min, t_max),
-        }
-    }
-}
-
 /// An object ready for tracing.
-#[derive(Debug)]
 pub struct PreparedObject {
-    /// Geometry in the canonical frame.
-    pub primitive: Primitive,
+    /// Its surfaces in the canonical frame: one, or the parts of a
+    /// composite (a polyhedron's faces, a wireframe's rods). Which kinds of
+    /// surface there are is the IR's business ([`ir::Shape`]); here every
+    /// surface is an `hgeom::Shape`.
+    pub surfaces: Vec<BoxedSurface>,
     /// Index into the materials.
     pub material: usize,
     /// From the canonical frame to the object's local space, where its
     /// texture is fixed: `(to_canonical ∘ placement)^-1`.
     pub to_local: Isometry,
+}
+
+impl std::fmt::Debug for PreparedObject {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("PreparedObject")
+            .field("surfaces", &self.surfaces.len())
+            .field("material", &self.material)
+            .finish()
+    }
+}
+
+impl PreparedObject {
+    /// The shape moved by each of `stages` in turn, as surfaces.
+    fn surfaces_of(shape: &ir::Shape, stages: &[Isometry]) -> Vec<BoxedSurface> {
+        let mut moved = shape.transformed(&stages[0]);
+        for iso in &stages[1..] {
+            moved = moved.transformed(iso);
+        }
+        match moved.into_surfaces() {
+            Surfaces::Single(s) => vec![s],
+            Surfaces::Parts(parts) => parts,
+        }
+    }
+
+    /// The nearest hit on any of its surfaces in `(t_min, t_max)`, by
+    /// testing each: the reference the hierarchy is checked against.
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        let mut limit = t_max;
+        let mut best = None;
+        for s in &self.surfaces {
+            if let Some(hit) = s.intersect(ray, t_min, limit) {
+                limit = hit.t;
+                best = Some(hit);
+            }
+        }
+        best
+    }
+}
+
+/// One surface of one object: what a leaf of the hierarchy names.
+#[derive(Clone, Copy, Debug)]
+struct SurfaceRef {
+    object: u32,
+    surface: u32,
 }
 
 /// A light on the hyperboloid: a point, or an h-sphere about it.
@@ -272,7 +114,9 @@ pub struct PreparedScene {
     pub ambient: Rgb,
     /// Maximum bounce depth.
     pub max_depth: u32,
-    /// Hierarchy over the objects.
+    /// Every surface of every object, as the hierarchy's items name them.
+    surfaces: Vec<SurfaceRef>,
+    /// Hierarchy over the surfaces.
     accel: Accel,
 }
 
@@ -309,14 +153,14 @@ impl PreparedScene {
                     scene.materials.len()
                 )));
             }
-            let primitive = Primitive::from_shape(&o.shape, stages);
-            if !primitive.is_traceable() {
+            let surfaces = PreparedObject::surfaces_of(&o.shape, stages);
+            if !surfaces.iter().all(|s| s.is_traceable()) {
                 return Err(RenderError::OutOfRange {
                     what: format!("object {}", index + 1),
                 });
             }
             objects.push(PreparedObject {
-                primitive,
+                surfaces,
                 material: o.material.index(),
                 to_local: stages
                     .iter()
@@ -367,12 +211,7 @@ impl PreparedScene {
                 samples: l.samples,
             });
         }
-        // One leaf per object, so a shadow ray meets each object once.
-        let bounds: Vec<(u32, Option<Bound>)> = objects
-            .iter()
-            .enumerate()
-            .map(|(i, o)| (i as u32, o.primitive.bound()))
-            .collect();
+        let (surfaces, accel) = hierarchy(&objects);
         Ok(PreparedScene {
             objects,
             lights,
@@ -381,7 +220,8 @@ impl PreparedScene {
             fog: scene.settings.fog,
             ambient: scene.settings.ambient,
             max_depth: scene.settings.recursion_depth,
-            accel: Accel::new(&bounds),
+            surfaces,
+            accel,
         })
     }
 
@@ -393,12 +233,13 @@ impl PreparedScene {
             return Nearest::Failure;
         }
         let found = self.accel.nearest(ray, t_min, f64::INFINITY, |i, lo, hi| {
-            self.objects[i as usize].primitive.intersect(ray, lo, hi)
+            let r = self.surfaces[i as usize];
+            self.objects[r.object as usize].surfaces[r.surface as usize].intersect(ray, lo, hi)
         });
         match found {
             None => Nearest::Miss,
             Some((hit, i)) if hit.point.is_finite() && hit.normal.is_finite() => {
-                Nearest::Hit(hit, i as usize)
+                Nearest::Hit(hit, self.surfaces[i as usize].object as usize)
             }
             Some(_) => Nearest::Failure,
         }
@@ -409,19 +250,50 @@ impl PreparedScene {
     /// per object. The search ends at the first opaque blocker.
     pub fn transmittance(&self, ray: &Ray, t_min: f64, t_max: f64) -> f64 {
         let mut s = 1.0;
+        // The objects already counted: only translucent ones get here, and
+        // a shadow ray meets few of them.
+        let mut counted: Vec<u32> = Vec::new();
         self.accel.any(ray, t_min, t_max, |i| {
-            let o = &self.objects[i as usize];
-            if o.primitive.blocks(ray, t_min, t_max) {
+            let r = self.surfaces[i as usize];
+            if counted.contains(&r.object) {
+                return Step::Continue;
+            }
+            let o = &self.objects[r.object as usize];
+            if o.surfaces[r.surface as usize].blocks(ray, t_min, t_max) {
                 // PreparedScene::new checked every material index.
                 s *= self.materials[o.material].transmission;
                 if s == 0.0 {
                     return Step::Stop;
                 }
+                counted.push(r.object);
             }
             Step::Continue
         });
         s
     }
+}
+
+/// The hierarchy over every surface of every object: one leaf per Klein
+/// box of a surface; surfaces without one go to the unbounded list.
+fn hierarchy(objects: &[PreparedObject]) -> (Vec<SurfaceRef>, Accel) {
+    let mut surfaces = Vec::new();
+    let mut leaves = Vec::new();
+    let mut unbounded = Vec::new();
+    for (o, object) in objects.iter().enumerate() {
+        for (k, surface) in object.surfaces.iter().enumerate() {
+            let item = surfaces.len() as u32;
+            surfaces.push(SurfaceRef {
+                object: o as u32,
+                surface: k as u32,
+            });
+            let boxes = surface.klein_boxes();
+            if boxes.is_empty() {
+                unbounded.push(item);
+            }
+            leaves.extend(boxes.into_iter().map(|b| Leaf::new(b, item)));
+        }
+    }
+    (surfaces, Accel::new(leaves, unbounded))
 }
 
 #[cfg(test)]
@@ -447,20 +319,31 @@ mod tests {
             .transformed(&far);
         let bare = HPlane::from_normal(placed.normal()).unwrap();
         let back = far.inverse();
-        let prim = |plane: &HPlane| Primitive::from_shape(&ir::Shape::Plane(*plane), &[back]);
-        assert!(prim(&placed).is_traceable());
-        assert!(!prim(&bare).is_traceable());
+        let traceable = |plane: &HPlane| {
+            PreparedObject::surfaces_of(&ir::Shape::Plane(*plane), &[back])
+                .iter()
+                .all(|s| s.is_traceable())
+        };
+        assert!(traceable(&placed));
+        assert!(!traceable(&bare));
     }
 
-    /// Every primitive's bound contains the hits of many rays: the bound
-    /// never culls what the exact test finds.
+    /// Every surface's boxes contain the hits of many rays (each hit lies
+    /// in a box of the surface hit), and the chord of every ray that hits
+    /// enters that box: the hierarchy never culls what the exact test finds.
     #[test]
-    fn bounds_contain_every_hit() {
+    fn boxes_contain_every_hit() {
         let rod = Rod::new(p(-0.3, 0.1, 0.4).into(), p(0.2, -0.1, 0.6).into(), 0.05).unwrap();
         let poly = ConvexPolygon::new(vec![
             p(-0.2, -0.2, 0.5).into(),
             p(0.2, -0.2, 0.5).into(),
             p(0.0, 0.25, 0.55).into(),
+        ])
+        .unwrap();
+        let ideal = ConvexPolygon::new(vec![
+            p(-0.2, -0.2, 0.5).into(),
+            p(0.2, -0.2, 0.5).into(),
+            hgeom::IdealPoint::from_direction(DVec3::new(0.1, 0.3, 1.0)).unwrap().into(),
         ])
         .unwrap();
         let dodeca = hgeom::Polyhedron::platonic(hgeom::Platonic::Dodecahedron, 0.4)
@@ -469,24 +352,35 @@ mod tests {
         let shapes = [
             ir::Shape::Rod(rod.clone()),
             ir::Shape::Polygon(poly),
+            ir::Shape::Polygon(ideal),
             ir::Shape::Polyhedron(dodeca),
             ir::Shape::Wireframe(vec![rod]),
+            ir::Shape::Sphere(hgeom::HSphere::new(p(0.1, 0.0, 0.6), 0.3).unwrap()),
         ];
         for shape in &shapes {
-            let prim = Primitive::from_shape(shape, &[Isometry::IDENTITY]);
-            let b = prim.bound().expect("bounded");
+            let surfaces = PreparedObject::surfaces_of(shape, &[Isometry::IDENTITY]);
             let mut hits = 0;
             for i in 0..2000 {
                 let a = f64::from(i) * 0.618_033_988_749_895;
                 let r = 0.9 * (f64::from(i) / 2000.0).sqrt();
                 let ray = Ray::from_origin_unchecked(DVec3::new(r * a.sin(), r * a.cos(), 1.0));
-                if let Some(hit) = prim.intersect(&ray, 0.0, f64::INFINITY) {
-                    hits += 1;
-                    assert!(b.contains(hit.point, 1e-12), "{prim:?}");
-                    assert!(b.entry(&ray, 1.0, f64::INFINITY).is_some());
+                let chord = hgeom::KleinRay::new(&ray);
+                let (lo, hi) = chord.arc(0.0, f64::INFINITY);
+                for s in &surfaces {
+                    let boxes = s.klein_boxes();
+                    assert!(!boxes.is_empty(), "{}", shape.kind_name());
+                    if let Some(hit) = s.intersect(&ray, 0.0, f64::INFINITY) {
+                        hits += 1;
+                        assert!(
+                            boxes.iter().any(|b| b.contains(hit.point)
+                                && chord.entry(b, lo, hi).is_some()),
+                            "{}",
+                            shape.kind_name()
+                        );
+                    }
                 }
             }
-            assert!(hits > 50, "{prim:?}: {hits}");
+            assert!(hits > 50, "{}: {hits}", shape.kind_name());
         }
     }
 }

@@ -1,0 +1,317 @@
+//! Axis-aligned boxes in the Klein model, and rays as straight segments
+//! there: the bounds of a Euclidean-style bounding-volume hierarchy.
+//!
+//! In the Klein model `k = x / w` (hyperboloid `X = (x, w)`) every geodesic
+//! is a straight chord and every h-plane flat, so the convex hull of points
+//! is their Euclidean convex hull in `k`, and the axis-aligned box of some
+//! points contains every convex polygon and segment between them. A ray
+//! becomes a segment `k(t) = P + λ(t) V` with `λ` increasing in the arc
+//! length `t`, so the slab test of Euclidean tracers applies unchanged, and
+//! its entry `λ` orders boxes front to back along the ray.
+//!
+//! **The ray.** With `X(t) = cosh t O + sinh t D` and `τ = tanh t`,
+//! `k = (o + τ d)/(o_w + τ d_w)`. Writing `P = o / o_w` and
+//! `V = o_w d - d_w o`,
+//!
+//! `P + λ V = (o + τ d)/(o_w + τ d_w)` for `λ = τ / (o_w (o_w + τ d_w))`,
+//!
+//! (multiply out: `o (o_w + τ d_w) + τ (o_w d - d_w o) = o_w (o + τ d)`).
+//! `o_w + τ d_w > 0` on the future sheet, and `dλ/dτ = 1/(o_w + τ d_w)^2 > 0`:
+//! `λ` increases with `t`, from 0 at `t = 0` to `1/(o_w (o_w + d_w))` at the
+//! absolute.
+//!
+//! **The ball.** The h-ball of radius `r` about `C = (c, c_w)` is
+//! `{X : -<X,C> <= cosh r}`. On the hyperboloid `X = (k, 1)/sqrt(1 - |k|^2)`,
+//! so with `κ = cosh r` the ball is the solid ellipsoid
+//! `(c_w - k·c)^2 <= κ^2 (1 - |k|^2)`, i.e.
+//! `k^T (κ^2 I + c c^T) k - 2 c_w c·k + c_w^2 - κ^2 <= 0`. With
+//! `A = κ^2 I + c c^T`, `A^{-1} = (I - c c^T / Δ)/κ^2`, `Δ = κ^2 + |c|^2 =
+//! sinh^2 r + c_w^2` (as `|c|^2 = c_w^2 - 1`), its centre is
+//! `k_0 = A^{-1} c_w c = c_w c / Δ` and it is
+//! `(k - k_0)^T A (k - k_0) <= ρ`, `ρ = c_w^2 |c|^2/Δ - c_w^2 + κ^2 =
+//! κ^2 sinh^2 r / Δ`. The half-width along axis `i` is
+//! `sqrt(ρ (A^{-1})_{ii}) = sinh r sqrt(Δ - c_i^2) / Δ`. At the origin
+//! (`c = 0, c_w = 1`) this is `tanh r`, the Klein radius of the ball.
+//!
+//! Every box is padded ([`PAD`]) so that it also holds what the exact tests
+//! accept by their tolerances and the rounding of its own corners; the slab
+//! test pads its arc the same way. A NaN anywhere makes a test answer
+//! "maybe", so the exact test downstream sees the ray and reports it.
+
+use glam::{DVec3, DVec4};
+
+use crate::bound::BoundingBall;
+use crate::point::Vertex;
+use crate::ray::Ray;
+
+/// Absolute padding of every box, in Klein coordinates: far above the
+/// rounding of coordinates of size at most 1 and of the exact tests'
+/// tolerances (a polygon accepts hits `1e-10` outside its edges, a distance
+/// that shrinks, never grows, on the way to Klein coordinates), far below a
+/// size that would make culling less effective.
+pub const PAD: f64 = 1e-9;
+
+/// Relative padding of a ray's arc `[λ_min, λ_max]`.
+const ARC_SLACK: f64 = 1e-9;
+
+/// A closed axis-aligned box in Klein coordinates.
+///
+/// Invariant: `lo <= hi` componentwise, both finite.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct KleinBox {
+    lo: DVec3,
+    hi: DVec3,
+}
+
+impl KleinBox {
+    /// The box from `lo` to `hi`; `None` unless both are finite with
+    /// `lo <= hi`.
+    pub fn new(lo: DVec3, hi: DVec3) -> Option<KleinBox> {
+        (lo.is_finite() && hi.is_finite() && lo.cmple(hi).all()).then_some(KleinBox { lo, hi })
+    }
+
+    /// The least corner.
+    pub fn lo(&self) -> DVec3 {
+        self.lo
+    }
+
+    /// The greatest corner.
+    pub fn hi(&self) -> DVec3 {
+        self.hi
+    }
+
+    /// The box around an h-ball (the ellipsoid's exact extent, padded; see
+    /// the module docs); `None` if it is not finite.
+    pub fn around_ball(ball: &BoundingBall) -> Option<KleinBox> {
+        let c = ball.center();
+        let s = ball.radius().sinh();
+        let delta = s * s + c.w * c.w;
+        let centre = c.truncate() * (c.w / delta);
+        let cc = c.truncate() * c.truncate();
+        let half = (DVec3::splat(delta) - cc).max(DVec3::ZERO).sqrt() * (s / delta);
+        let pad = half * 1e-12 + DVec3::splat(PAD);
+        KleinBox::new(centre - half - pad, centre + half + pad)
+    }
+
+    /// The box around points given on the hyperboloid or at infinity
+    /// (hull vertices): it contains their convex hull. `None` for no
+    /// points or a non-finite one.
+    pub fn around_vertices<'a>(vertices: impl IntoIterator<Item = &'a Vertex>) -> Option<KleinBox> {
+        let mut lo = DVec3::splat(f64::INFINITY);
+        let mut hi = DVec3::splat(f64::NEG_INFINITY);
+        for v in vertices {
+            let k = match v {
+                Vertex::Interior(p) => {
+                    let x = p.to_hyperboloid();
+                    x.truncate() / x.w
+                }
+                // An ideal point is its unit direction in the Klein model.
+                Vertex::Ideal(i) => i.coords(),
+            };
+            lo = lo.min(k);
+            hi = hi.max(k);
+        }
+        let pad = DVec3::splat(PAD);
+        KleinBox::new(lo - pad, hi + pad)
+    }
+
+    /// The box around points on the hyperboloid; `None` for none or a
+    /// non-finite one.
+    pub fn around_points(points: impl IntoIterator<Item = DVec4>) -> Option<KleinBox> {
+        let mut lo = DVec3::splat(f64::INFINITY);
+        let mut hi = DVec3::splat(f64::NEG_INFINITY);
+        for x in points {
+            let k = x.truncate() / x.w;
+            lo = lo.min(k);
+            hi = hi.max(k);
+        }
+        let pad = DVec3::splat(PAD);
+        KleinBox::new(lo - pad, hi + pad)
+    }
+
+    /// The smallest box containing both.
+    pub fn union(&self, other: &KleinBox) -> KleinBox {
+        KleinBox {
+            lo: self.lo.min(other.lo),
+            hi: self.hi.max(other.hi),
+        }
+    }
+
+    /// The smaller box of the two, where they overlap; `None` if they do
+    /// not (for bounds that are each conservative, so is their
+    /// intersection).
+    pub fn intersection(&self, other: &KleinBox) -> Option<KleinBox> {
+        KleinBox::new(self.lo.max(other.lo), self.hi.min(other.hi))
+    }
+
+    /// The centre.
+    pub fn centre(&self) -> DVec3 {
+        0.5 * (self.lo + self.hi)
+    }
+
+    /// Half the Euclidean surface area: the cost weight of the surface-area
+    /// heuristic (rays are chords, so the chance that one crossing a box
+    /// also crosses a box inside it is, for rays spread evenly, about the
+    /// ratio of their areas).
+    pub fn half_area(&self) -> f64 {
+        let e = self.hi - self.lo;
+        e.x * e.y + e.y * e.z + e.z * e.x
+    }
+
+    /// True if the hyperboloid point lies in the box.
+    pub fn contains(&self, x: DVec4) -> bool {
+        let k = x.truncate() / x.w;
+        k.cmpge(self.lo).all() && k.cmple(self.hi).all()
+    }
+}
+
+/// A ray as a straight segment in the Klein model (module docs).
+#[derive(Clone, Copy, Debug)]
+pub struct KleinRay {
+    origin: DVec3,
+    inv_dir: DVec3,
+    o_w: f64,
+    d_w: f64,
+}
+
+impl KleinRay {
+    /// The ray's chord.
+    #[inline]
+    pub fn new(ray: &Ray) -> KleinRay {
+        let (o, d) = (ray.origin, ray.dir);
+        let dir = d.truncate() * o.w - o.truncate() * d.w;
+        KleinRay {
+            origin: o.truncate() / o.w,
+            inv_dir: DVec3::ONE / dir,
+            o_w: o.w,
+            d_w: d.w,
+        }
+    }
+
+    /// `λ` at arc length `t` (`t = ∞` gives the absolute's).
+    #[inline]
+    pub fn lambda(&self, t: f64) -> f64 {
+        let tau = if t == f64::INFINITY { 1.0 } else { t.tanh() };
+        tau / (self.o_w * (self.o_w + tau * self.d_w))
+    }
+
+    /// The arc `(t_min, t_max)` as a padded `λ` interval.
+    #[inline]
+    pub fn arc(&self, t_min: f64, t_max: f64) -> (f64, f64) {
+        let lo = self.lambda(t_min);
+        let hi = self.lambda(t_max);
+        (
+            lo - ARC_SLACK * lo.abs() - f64::MIN_POSITIVE,
+            hi + ARC_SLACK * hi.abs() + f64::MIN_POSITIVE,
+        )
+    }
+
+    /// Where the chord enters the box within `[lo, hi]` (`λ`), or `None` if
+    /// it misses. A NaN answers "maybe": the entry is then `lo`.
+    #[inline]
+    pub fn entry(&self, b: &KleinBox, lo: f64, hi: f64) -> Option<f64> {
+        let a = (b.lo - self.origin) * self.inv_dir;
+        let z = (b.hi - self.origin) * self.inv_dir;
+        // min/max drop a NaN (0 * inf: the chord lies in the slab's face),
+        // which keeps the test conservative.
+        let near = a.min(z);
+        let far = a.max(z);
+        let enter = near.x.max(near.y).max(near.z).max(lo);
+        let leave = far.x.min(far.y).min(far.z).min(hi);
+        if enter <= leave || enter.is_nan() || leave.is_nan() {
+            Some(enter)
+        } else {
+            None
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::point::Point;
+
+    fn ball(c: DVec3, r: f64) -> BoundingBall {
+        BoundingBall::new(Point::from_coords(c).unwrap().to_hyperboloid(), r).unwrap()
+    }
+
+    /// The box around a ball at the origin is the cube of half-width
+    /// `tanh r`.
+    #[test]
+    fn ball_at_origin_is_the_tanh_cube() {
+        let b = KleinBox::around_ball(&ball(DVec3::ZERO, 0.7)).unwrap();
+        let t = 0.7f64.tanh();
+        assert!((b.hi() - DVec3::splat(t)).abs().max_element() < 2e-9);
+        assert!((b.lo() + DVec3::splat(t)).abs().max_element() < 2e-9);
+    }
+
+    /// Points on the sphere's surface fall in its box, and the box is
+    /// tight: along each axis some surface point reaches its face.
+    #[test]
+    fn ball_box_is_exact_extent() {
+        for (c, r) in [
+            (DVec3::new(0.3, -0.2, 0.5), 0.4),
+            (DVec3::new(-0.9, 0.1, 0.3), 0.05),
+            (DVec3::new(0.0, 0.99, 0.0), 1.5),
+        ] {
+            let b = ball(c, r);
+            let kb = KleinBox::around_ball(&b).unwrap();
+            let centre = Point::from_coords(c).unwrap();
+            let mut reach_lo = DVec3::splat(f64::INFINITY);
+            let mut reach_hi = DVec3::splat(f64::NEG_INFINITY);
+            for i in 0..4000 {
+                let z = 1.0 - 2.0 * (f64::from(i) + 0.5) / 4000.0;
+                let a = f64::from(i) * 2.399_963_229_728_653;
+                let s = (1.0 - z * z).sqrt();
+                let dir = DVec3::new(s * a.cos(), s * a.sin(), z);
+                let ray = Ray::from_ball_unchecked(&centre, dir);
+                let x = ray.at(r);
+                assert!(kb.contains(x), "{c} {r}: {x}");
+                let k = x.truncate() / x.w;
+                reach_lo = reach_lo.min(k);
+                reach_hi = reach_hi.max(k);
+            }
+            let slack = (kb.hi() - kb.lo()) * 2e-3;
+            assert!((reach_lo - kb.lo()).cmple(slack).all(), "{c} {r}");
+            assert!((kb.hi() - reach_hi).cmple(slack).all(), "{c} {r}");
+        }
+    }
+
+    /// `P + λ(t) V` is the Klein image of the ray's point at `t`, for rays
+    /// that start away from the origin too.
+    #[test]
+    fn chord_parameter_matches_the_ray() {
+        let start = Point::new(0.4, -0.3, 0.2).unwrap();
+        let ray = Ray::from_ball_unchecked(&start, DVec3::new(-0.2, 0.9, 0.3));
+        let k = KleinRay::new(&ray);
+        let dir = ray.dir.truncate() * ray.origin.w - ray.origin.truncate() * ray.dir.w;
+        let mut last = -1.0;
+        for t in [0.0, 0.1, 0.5, 1.0, 3.0, 8.0] {
+            let x = ray.at(t);
+            let want = x.truncate() / x.w;
+            let lam = k.lambda(t);
+            assert!(lam > last);
+            last = lam;
+            let got = k.origin + lam * dir;
+            assert!((got - want).length() < 1e-12, "t {t}: {got} vs {want}");
+        }
+        assert!(k.lambda(f64::INFINITY) > last);
+    }
+
+    /// The slab test finds a box the ray crosses, misses one it passes,
+    /// and respects the arc.
+    #[test]
+    fn slab_entry() {
+        let ray = Ray::from_origin_unchecked(DVec3::Z);
+        let k = KleinRay::new(&ray);
+        let on = KleinBox::new(DVec3::new(-0.1, -0.1, 0.4), DVec3::new(0.1, 0.1, 0.5)).unwrap();
+        let off = KleinBox::new(DVec3::new(0.2, 0.2, 0.4), DVec3::new(0.3, 0.3, 0.5)).unwrap();
+        let (lo, hi) = k.arc(0.0, f64::INFINITY);
+        let e = k.entry(&on, lo, hi).unwrap();
+        assert!((e - 0.4).abs() < 1e-12);
+        assert!(k.entry(&off, lo, hi).is_none());
+        // The box lies beyond an arc that ends at Klein 0.3 (t = atanh 0.3).
+        let (lo, hi) = k.arc(0.0, 0.3f64.atanh());
+        assert!(k.entry(&on, lo, hi).is_none());
+    }
+}
