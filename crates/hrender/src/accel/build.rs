@@ -33,14 +33,62 @@ impl Leaf {
     }
 }
 
+/// Subtrees with more leaves than this are built on two threads.
+const PARALLEL_LEAVES: usize = 4096;
+
 /// The nodes (root first, depth-first order) and the leaf item list.
 pub(super) fn build(mut leaves: Vec<Leaf>) -> (Vec<Node>, Vec<u32>) {
-    let mut nodes = Vec::with_capacity(2 * leaves.len() / MAX_LEAF + 1);
-    let mut items = Vec::with_capacity(leaves.len());
-    if !leaves.is_empty() {
-        split(&mut nodes, &mut items, &mut leaves, 0);
+    if leaves.is_empty() {
+        return (Vec::new(), Vec::new());
     }
-    (nodes, items)
+    build_parallel(&mut leaves, 0)
+}
+
+/// A subtree whose indices count from its own first node and item.
+fn build_parallel(leaves: &mut [Leaf], depth: usize) -> (Vec<Node>, Vec<u32>) {
+    if leaves.len() <= PARALLEL_LEAVES {
+        let mut nodes = Vec::with_capacity(2 * leaves.len() / MAX_LEAF + 1);
+        let mut items = Vec::with_capacity(leaves.len());
+        split(&mut nodes, &mut items, leaves, depth);
+        return (nodes, items);
+    }
+    let (bounds, mid) = choose(leaves, depth);
+    let Some(mid) = mid else {
+        let mut nodes = Vec::new();
+        let mut items = Vec::new();
+        split(&mut nodes, &mut items, leaves, depth);
+        return (nodes, items);
+    };
+    let (left, right) = leaves.split_at_mut(mid);
+    let ((mut nodes, mut items), (right_nodes, right_items)) = rayon::join(
+        || build_parallel(left, depth + 1),
+        || build_parallel(right, depth + 1),
+    );
+    let (lo, hi) = outward(&bounds);
+    let node_offset = 1 + nodes.len() as u32;
+    let item_offset = items.len() as u32;
+    // The root goes first; every index below it moves by one.
+    for n in nodes.iter_mut().filter(|n| n.count == 0) {
+        n.index += 1;
+    }
+    let mut all = Vec::with_capacity(1 + nodes.len() + right_nodes.len());
+    all.push(Node {
+        lo,
+        hi,
+        index: node_offset,
+        count: 0,
+    });
+    all.append(&mut nodes);
+    all.extend(right_nodes.into_iter().map(|mut n| {
+        if n.count == 0 {
+            n.index += node_offset;
+        } else {
+            n.index += item_offset;
+        }
+        n
+    }));
+    items.extend(right_items);
+    (all, items)
 }
 
 fn bounds_of(leaves: &[Leaf]) -> KleinBox {
@@ -66,8 +114,20 @@ fn outward(b: &KleinBox) -> ([f32; 3], [f32; 3]) {
     )
 }
 
-fn split(nodes: &mut Vec<Node>, items: &mut Vec<u32>, leaves: &mut [Leaf], depth: usize) {
+/// The leaves' box, and where to split them (after reordering), or `None`
+/// for a leaf.
+fn choose(leaves: &mut [Leaf], depth: usize) -> (KleinBox, Option<usize>) {
     let bounds = bounds_of(leaves);
+    let n = leaves.len();
+    if n <= 1 || depth >= MAX_DEPTH - 1 {
+        return (bounds, None);
+    }
+    let cut = best_cut(leaves, &bounds).or_else(|| (n > MAX_LEAF).then_some(n / 2));
+    (bounds, cut)
+}
+
+fn split(nodes: &mut Vec<Node>, items: &mut Vec<u32>, leaves: &mut [Leaf], depth: usize) {
+    let (bounds, cut) = choose(leaves, depth);
     let (lo, hi) = outward(&bounds);
     let index = nodes.len();
     nodes.push(Node {
@@ -76,16 +136,9 @@ fn split(nodes: &mut Vec<Node>, items: &mut Vec<u32>, leaves: &mut [Leaf], depth
         index: 0,
         count: 0,
     });
-    let n = leaves.len();
-    let cut = if n <= 1 || depth >= MAX_DEPTH - 1 {
-        None
-    } else {
-        best_cut(leaves, &bounds)
-    };
-    let Some(mid) = cut.or_else(|| (n > MAX_LEAF && depth < MAX_DEPTH - 1).then_some(n / 2))
-    else {
+    let Some(mid) = cut else {
         nodes[index].index = items.len() as u32;
-        nodes[index].count = n as u32;
+        nodes[index].count = leaves.len() as u32;
         items.extend(leaves.iter().map(|l| l.item));
         return;
     };
@@ -93,6 +146,12 @@ fn split(nodes: &mut Vec<Node>, items: &mut Vec<u32>, leaves: &mut [Leaf], depth
     split(nodes, items, left, depth + 1);
     nodes[index].index = nodes.len() as u32;
     split(nodes, items, right, depth + 1);
+}
+
+/// Half the area of the box `lo..hi`; 0 for an empty one.
+fn half_area(lo: DVec3, hi: DVec3) -> f64 {
+    let e = (hi - lo).max(DVec3::ZERO);
+    e.x * e.y + e.y * e.z + e.z * e.x
 }
 
 /// Reorder `leaves` and return the split point with the least estimated
@@ -104,46 +163,44 @@ fn best_cut(leaves: &mut [Leaf], bounds: &KleinBox) -> Option<usize> {
         |(lo, hi), l| (lo.min(l.centre), hi.max(l.centre)),
     );
     let extent = chi - clo;
+    let scale = DVec3::splat(BINS as f64) / extent;
+    let bin = |l: &Leaf, axis: usize| {
+        (((l.centre[axis] - clo[axis]) * scale[axis]) as usize).min(BINS - 1)
+    };
+    let empty = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY), 0usize);
+    let mut bins = [[empty; BINS]; 3];
+    for l in leaves.iter() {
+        for (axis, bins) in bins.iter_mut().enumerate() {
+            let b = &mut bins[bin(l, axis)];
+            b.0 = b.0.min(l.bounds.lo());
+            b.1 = b.1.max(l.bounds.hi());
+            b.2 += 1;
+        }
+    }
     let mut best: Option<(f64, usize, usize)> = None;
-    for axis in 0..3 {
+    for (axis, bins) in bins.iter().enumerate() {
         if !(extent[axis] > 0.0) {
             continue;
         }
-        let scale = BINS as f64 / extent[axis];
-        let bin_of = |l: &Leaf| (((l.centre[axis] - clo[axis]) * scale) as usize).min(BINS - 1);
-        let mut count = [0usize; BINS];
-        let mut boxes: [Option<KleinBox>; BINS] = [None; BINS];
-        for l in leaves.iter() {
-            let b = bin_of(l);
-            count[b] += 1;
-            boxes[b] = Some(boxes[b].map_or(l.bounds, |x| x.union(&l.bounds)));
-        }
-        // Areas and counts of every prefix and suffix of the bins.
-        let mut right_area = [0.0; BINS];
-        let mut acc: Option<KleinBox> = None;
-        let mut right_count = [0usize; BINS];
-        let mut c = 0;
+        // Area and count of every suffix of the bins.
+        let mut right = [(0.0, 0usize); BINS];
+        let (mut lo, mut hi, mut c) = empty;
         for b in (1..BINS).rev() {
-            if let Some(x) = boxes[b] {
-                acc = Some(acc.map_or(x, |a| a.union(&x)));
-            }
-            c += count[b];
-            right_count[b] = c;
-            right_area[b] = acc.map_or(0.0, |a| a.half_area());
+            lo = lo.min(bins[b].0);
+            hi = hi.max(bins[b].1);
+            c += bins[b].2;
+            right[b] = (half_area(lo, hi), c);
         }
-        let mut acc: Option<KleinBox> = None;
-        let mut c = 0;
+        let (mut lo, mut hi, mut c) = empty;
         for b in 0..BINS - 1 {
-            if let Some(x) = boxes[b] {
-                acc = Some(acc.map_or(x, |a| a.union(&x)));
-            }
-            c += count[b];
-            let (nl, nr) = (c, right_count[b + 1]);
-            if nl == 0 || nr == 0 {
+            lo = lo.min(bins[b].0);
+            hi = hi.max(bins[b].1);
+            c += bins[b].2;
+            let (right_area, nr) = right[b + 1];
+            if c == 0 || nr == 0 {
                 continue;
             }
-            let cost = acc.map_or(0.0, |a| a.half_area()) * nl as f64
-                + right_area[b + 1] * nr as f64;
+            let cost = half_area(lo, hi) * c as f64 + right_area * nr as f64;
             if best.is_none_or(|(k, _, _)| cost < k) {
                 best = Some((cost, axis, b + 1));
             }
@@ -156,11 +213,9 @@ fn best_cut(leaves: &mut [Leaf], bounds: &KleinBox) -> Option<usize> {
         return None;
     }
     // Partition by the same bin rule the costs were computed with.
-    let scale = BINS as f64 / extent[axis];
     let mut mid = 0;
     for i in 0..n {
-        let b = (((leaves[i].centre[axis] - clo[axis]) * scale) as usize).min(BINS - 1);
-        if b < first_right {
+        if bin(&leaves[i], axis) < first_right {
             leaves.swap(i, mid);
             mid += 1;
         }
@@ -187,12 +242,14 @@ mod tests {
     }
 
     /// Every leaf's box lies in each of its ancestors' boxes, and every item
-    /// appears once per leaf box.
+    /// appears once per leaf box, also where subtrees were built on two
+    /// threads and joined.
     #[test]
     fn nodes_nest() {
-        let leaves: Vec<Leaf> = (0..1000)
+        const N: u32 = 5 * PARALLEL_LEAVES as u32;
+        let leaves: Vec<Leaf> = (0..N)
             .map(|i| {
-                let x = f64::from(i) / 1000.0;
+                let x = f64::from(i) / f64::from(N);
                 let c = DVec3::new((x * 7.0).sin(), (x * 13.0).cos(), x) * 0.5;
                 Leaf::new(KleinBox::new(c, c + DVec3::splat(0.01)).unwrap(), i)
             })
@@ -200,10 +257,13 @@ mod tests {
         let (nodes, items) = build(leaves);
         let mut sorted = items.clone();
         sorted.sort_unstable();
-        assert_eq!(sorted, (0..1000).collect::<Vec<u32>>());
-        fn check(nodes: &[Node], n: usize) {
+        assert_eq!(sorted, (0..N).collect::<Vec<u32>>());
+        let mut listed = 0;
+        fn check(nodes: &[Node], n: usize, listed: &mut usize) {
             let node = nodes[n];
             if node.count > 0 {
+                assert_eq!(node.index as usize, *listed, "leaves list items in order");
+                *listed += node.count as usize;
                 return;
             }
             for child in [n + 1, node.index as usize] {
@@ -211,9 +271,10 @@ mod tests {
                 for k in 0..3 {
                     assert!(c.lo[k] >= node.lo[k] && c.hi[k] <= node.hi[k]);
                 }
-                check(nodes, child);
+                check(nodes, child, listed);
             }
         }
-        check(&nodes, 0);
+        check(&nodes, 0, &mut listed);
+        assert_eq!(listed, N as usize);
     }
 }
