@@ -9,6 +9,12 @@
 //! length `t`, so the slab test of Euclidean tracers applies unchanged, and
 //! its entry `λ` orders boxes front to back along the ray.
 //!
+//! Every box is padded ([`PAD`]) so that it also holds what the exact tests
+//! accept by their tolerances and the rounding of its own corners; the slab
+//! test pads its arc the same way. A ray that is not finite has no
+//! trustworthy chord: [`KleinRay::is_finite`] says so, and a hierarchy then
+//! hands every item to the exact test, which reports the failure.
+//!
 //! **The ray.** With `X(t) = cosh t O + sinh t D` and `τ = tanh t`,
 //! `k = (o + τ d)/(o_w + τ d_w)`. Writing `P = o / o_w` and
 //! `V = o_w d - d_w o`,
@@ -32,11 +38,6 @@
 //! κ^2 sinh^2 r / Δ`. The half-width along axis `i` is
 //! `sqrt(ρ (A^{-1})_{ii}) = sinh r sqrt(Δ - c_i^2) / Δ`. At the origin
 //! (`c = 0, c_w = 1`) this is `tanh r`, the Klein radius of the ball.
-//!
-//! Every box is padded ([`PAD`]) so that it also holds what the exact tests
-//! accept by their tolerances and the rounding of its own corners; the slab
-//! test pads its arc the same way. A NaN anywhere makes a test answer
-//! "maybe", so the exact test downstream sees the ray and reports it.
 
 use glam::{DVec3, DVec4};
 
@@ -50,6 +51,10 @@ use crate::ray::Ray;
 /// that shrinks, never grows, on the way to Klein coordinates), far below a
 /// size that would make culling less effective.
 pub const PAD: f64 = 1e-9;
+
+/// The least magnitude of a chord direction's component (see
+/// [`KleinRay::new`]).
+const TINY: f64 = 1e-200;
 
 /// Relative padding of a ray's arc `[λ_min, λ_max]`.
 const ARC_SLACK: f64 = 1e-9;
@@ -169,6 +174,7 @@ impl KleinBox {
 #[derive(Clone, Copy, Debug)]
 pub struct KleinRay {
     origin: DVec3,
+    dir: DVec3,
     inv_dir: DVec3,
     o_w: f64,
     d_w: f64,
@@ -179,13 +185,33 @@ impl KleinRay {
     #[inline]
     pub fn new(ray: &Ray) -> KleinRay {
         let (o, d) = (ray.origin, ray.dir);
-        let dir = d.truncate() * o.w - o.truncate() * d.w;
+        let mut dir = d.truncate() * o.w - o.truncate() * d.w;
+        // A zero component would give an infinite inverse and, on a box
+        // face, 0 * inf = NaN; the chord turned by 1e-200 moves less than
+        // 1e-190 over its whole length, far inside every box's padding, and
+        // keeps the slab test free of NaN for finite rays.
+        for k in 0..3 {
+            if dir[k].abs() < TINY {
+                dir[k] = TINY.copysign(dir[k]);
+            }
+        }
         KleinRay {
             origin: o.truncate() / o.w,
+            dir,
             inv_dir: DVec3::ONE / dir,
             o_w: o.w,
             d_w: d.w,
         }
+    }
+
+    /// True if the chord is finite: the ray was. A hierarchy must not trust
+    /// the slab test of a chord that is not (it would answer "miss").
+    #[inline]
+    pub fn is_finite(&self) -> bool {
+        self.origin.is_finite()
+            && self.inv_dir.is_finite()
+            && self.o_w.is_finite()
+            && self.d_w.is_finite()
     }
 
     /// `λ` at arc length `t` (`t = ∞` gives the absolute's).
@@ -193,6 +219,32 @@ impl KleinRay {
     pub fn lambda(&self, t: f64) -> f64 {
         let tau = if t == f64::INFINITY { 1.0 } else { t.tanh() };
         tau / (self.o_w * (self.o_w + tau * self.d_w))
+    }
+
+    /// `λ` of a point on the ray (a hyperboloid point, such as a hit), read
+    /// off its Klein coordinates along the chord's longest axis: no
+    /// transcendental call, and as exact as the point (the chord's
+    /// direction has a component of at least `|V|/√3` there).
+    #[inline]
+    pub fn lambda_at(&self, x: DVec4) -> f64 {
+        let k = x.truncate() / x.w;
+        let a = self.dir.abs();
+        let axis = if a.x >= a.y && a.x >= a.z {
+            0
+        } else if a.y >= a.z {
+            1
+        } else {
+            2
+        };
+        (k[axis] - self.origin[axis]) * self.inv_dir[axis]
+    }
+
+    /// `λ` of a point on the ray, padded upwards by the slack of
+    /// [`KleinRay::arc`]: the end of an arc that must keep the point.
+    #[inline]
+    pub fn arc_end_at(&self, x: DVec4) -> f64 {
+        let hi = self.lambda_at(x);
+        hi + ARC_SLACK * hi.abs() + f64::MIN_POSITIVE
     }
 
     /// The arc `(t_min, t_max)` as a padded `λ` interval.
@@ -207,22 +259,31 @@ impl KleinRay {
     }
 
     /// Where the chord enters the box within `[lo, hi]` (`λ`), or `None` if
-    /// it misses. A NaN answers "maybe": the entry is then `lo`.
+    /// it misses. Only for a finite chord ([`KleinRay::is_finite`]).
     #[inline]
     pub fn entry(&self, b: &KleinBox, lo: f64, hi: f64) -> Option<f64> {
-        let a = (b.lo - self.origin) * self.inv_dir;
-        let z = (b.hi - self.origin) * self.inv_dir;
-        // min/max drop a NaN (0 * inf: the chord lies in the slab's face),
-        // which keeps the test conservative.
-        let near = a.min(z);
-        let far = a.max(z);
-        let enter = near.x.max(near.y).max(near.z).max(lo);
-        let leave = far.x.min(far.y).min(far.z).min(hi);
-        if enter <= leave || enter.is_nan() || leave.is_nan() {
-            Some(enter)
-        } else {
-            None
+        self.slab_entry(b.lo, b.hi, lo, hi)
+    }
+
+    /// [`KleinRay::entry`] for the box from `b_lo` to `b_hi`, unchecked:
+    /// the hot path of a hierarchy whose boxes are valid by construction.
+    #[inline(always)]
+    pub fn slab_entry(&self, b_lo: DVec3, b_hi: DVec3, lo: f64, hi: f64) -> Option<f64> {
+        // Plain comparisons (one instruction each): the chord of a finite
+        // ray has finite inverse components, so nothing here is NaN.
+        #[inline(always)]
+        fn min(a: f64, b: f64) -> f64 {
+            if a < b { a } else { b }
         }
+        #[inline(always)]
+        fn max(a: f64, b: f64) -> f64 {
+            if a > b { a } else { b }
+        }
+        let a = (b_lo - self.origin) * self.inv_dir;
+        let z = (b_hi - self.origin) * self.inv_dir;
+        let enter = max(max(max(min(a.x, z.x), min(a.y, z.y)), min(a.z, z.z)), lo);
+        let leave = min(min(min(max(a.x, z.x), max(a.y, z.y)), max(a.z, z.z)), hi);
+        (enter <= leave).then_some(enter)
     }
 }
 
@@ -294,6 +355,10 @@ mod tests {
             last = lam;
             let got = k.origin + lam * dir;
             assert!((got - want).length() < 1e-12, "t {t}: {got} vs {want}");
+            assert!(
+                (k.lambda_at(x) - lam).abs() <= 1e-12 * lam.max(1e-3),
+                "t {t}"
+            );
         }
         assert!(k.lambda(f64::INFINITY) > last);
     }

@@ -15,7 +15,8 @@
 
 mod build;
 
-use hgeom::{Hit, KleinBox, KleinRay, Ray};
+use hgeom::glam::DVec3;
+use hgeom::{Hit, KleinRay, Ray};
 
 pub use build::Leaf;
 
@@ -40,11 +41,12 @@ struct Node {
 }
 
 impl Node {
-    /// The node's box in `f64` (exact: every `f32` is an `f64`).
-    #[inline]
-    fn klein_box(&self) -> Option<KleinBox> {
-        let f = |a: [f32; 3]| hgeom::glam::DVec3::new(a[0].into(), a[1].into(), a[2].into());
-        KleinBox::new(f(self.lo), f(self.hi))
+    /// Where the chord enters the node's box within `[lo, hi]`. The box in
+    /// `f64` is exact (every `f32` is an `f64`) and valid by construction.
+    #[inline(always)]
+    fn entry(&self, chord: &KleinRay, lo: f64, hi: f64) -> Option<f64> {
+        let f = |a: [f32; 3]| DVec3::new(a[0].into(), a[1].into(), a[2].into());
+        chord.slab_entry(f(self.lo), f(self.hi), lo, hi)
     }
 }
 
@@ -99,6 +101,16 @@ impl Accel {
             return best;
         }
         let chord = KleinRay::new(ray);
+        if !chord.is_finite() {
+            // No chord to cull with: every item gets its exact test.
+            for i in self.items.iter().copied() {
+                if let Some(hit) = test(i, t_min, limit) {
+                    limit = hit.t;
+                    best = Some((hit, i));
+                }
+            }
+            return best;
+        }
         let (lo, mut hi) = chord.arc(t_min, limit);
         let mut stack = [(0u32, 0f64); MAX_DEPTH + 1];
         let mut top = 0usize;
@@ -126,7 +138,7 @@ impl Accel {
                     last = i;
                     if let Some(hit) = test(i, t_min, limit) {
                         limit = hit.t;
-                        hi = chord.arc(t_min, limit).1;
+                        hi = chord.arc_end_at(hit.point);
                         best = Some((hit, i));
                     }
                 }
@@ -175,6 +187,14 @@ impl Accel {
             return;
         }
         let chord = KleinRay::new(ray);
+        if !chord.is_finite() {
+            for i in self.items.iter().copied() {
+                if visit(i) == Step::Stop {
+                    return;
+                }
+            }
+            return;
+        }
         let (lo, hi) = chord.arc(t_min, t_max);
         let mut stack = [0u32; MAX_DEPTH + 1];
         let mut top = 0usize;
@@ -208,20 +228,15 @@ impl Accel {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn entry(&self, chord: &KleinRay, node: u32, lo: f64, hi: f64) -> Option<f64> {
-        match self.nodes[node as usize].klein_box() {
-            Some(b) => chord.entry(&b, lo, hi),
-            // Unreachable (the build stores ordered, finite boxes); enter.
-            None => Some(lo),
-        }
+        self.nodes[node as usize].entry(chord, lo, hi)
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use hgeom::glam::DVec3;
     use hgeom::{HSphere, Point, Shape};
 
     /// Random small spheres: the hierarchy's nearest hit equals the
@@ -231,20 +246,28 @@ mod tests {
     fn hierarchy_agrees_with_exhaustive_search() {
         let mut state = 7u64;
         let mut rnd = move || {
-            state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             ((state >> 11) as f64) / ((1u64 << 53) as f64) * 2.0 - 1.0
         };
         let mut spheres = Vec::new();
         while spheres.len() < 500 {
             let c = DVec3::new(rnd(), rnd(), rnd()) * 0.9;
             if c.length() < 0.9 {
-                spheres.push(HSphere::new(Point::from_coords(c).unwrap(), 0.02 + 0.1 * rnd().abs()).unwrap());
+                spheres.push(
+                    HSphere::new(Point::from_coords(c).unwrap(), 0.02 + 0.1 * rnd().abs()).unwrap(),
+                );
             }
         }
         let leaves: Vec<Leaf> = spheres
             .iter()
             .enumerate()
-            .flat_map(|(i, s)| s.klein_boxes().into_iter().map(move |b| Leaf::new(b, i as u32)))
+            .flat_map(|(i, s)| {
+                s.klein_boxes()
+                    .into_iter()
+                    .map(move |b| Leaf::new(b, i as u32))
+            })
             .collect();
         let accel = Accel::new(leaves, Vec::new());
         let mut hits = 0;
@@ -258,7 +281,9 @@ mod tests {
                 .filter_map(|(i, s)| s.intersect(&ray, 1e-9, f64::INFINITY).map(|h| (h.t, i)))
                 .min_by(|a, b| a.0.total_cmp(&b.0));
             let found = accel
-                .nearest(&ray, 1e-9, f64::INFINITY, |i, lo, hi| spheres[i as usize].intersect(&ray, lo, hi))
+                .nearest(&ray, 1e-9, f64::INFINITY, |i, lo, hi| {
+                    spheres[i as usize].intersect(&ray, lo, hi)
+                })
                 .map(|(h, i)| (h.t, i as usize));
             assert_eq!(found, exhaustive, "ray {k}");
             if let Some((t, _)) = exhaustive {

@@ -343,7 +343,9 @@ mod tests {
         let ideal = ConvexPolygon::new(vec![
             p(-0.2, -0.2, 0.5).into(),
             p(0.2, -0.2, 0.5).into(),
-            hgeom::IdealPoint::from_direction(DVec3::new(0.1, 0.3, 1.0)).unwrap().into(),
+            hgeom::IdealPoint::from_direction(DVec3::new(0.1, 0.3, 1.0))
+                .unwrap()
+                .into(),
         ])
         .unwrap();
         let dodeca = hgeom::Polyhedron::platonic(hgeom::Platonic::Dodecahedron, 0.4)
@@ -372,8 +374,9 @@ mod tests {
                     if let Some(hit) = s.intersect(&ray, 0.0, f64::INFINITY) {
                         hits += 1;
                         assert!(
-                            boxes.iter().any(|b| b.contains(hit.point)
-                                && chord.entry(b, lo, hi).is_some()),
+                            boxes
+                                .iter()
+                                .any(|b| b.contains(hit.point) && chord.entry(b, lo, hi).is_some()),
                             "{}",
                             shape.kind_name()
                         );

@@ -167,7 +167,11 @@ fn best_cut(leaves: &mut [Leaf], bounds: &KleinBox) -> Option<usize> {
     let bin = |l: &Leaf, axis: usize| {
         (((l.centre[axis] - clo[axis]) * scale[axis]) as usize).min(BINS - 1)
     };
-    let empty = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY), 0usize);
+    let empty = (
+        DVec3::splat(f64::INFINITY),
+        DVec3::splat(f64::NEG_INFINITY),
+        0usize,
+    );
     let mut bins = [[empty; BINS]; 3];
     for l in leaves.iter() {
         for (axis, bins) in bins.iter_mut().enumerate() {
