@@ -142,6 +142,10 @@ fn normal_is_unit(n: DVec4) -> bool {
 
 impl Shape for HSphere {
     forward_intersect_and_move!(HSphere);
+    #[inline]
+    fn blocks(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        HSphere::blocks(self, ray, t_min, t_max)
+    }
     fn bound(&self) -> Option<BoundingBall> {
         BoundingBall::new(self.center().to_hyperboloid(), self.radius())
     }

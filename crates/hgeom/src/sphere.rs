@@ -8,7 +8,7 @@ use crate::isometry::Isometry;
 use crate::lorentz;
 use crate::point::Point;
 use crate::ray::{Hit, Ray};
-use crate::roots::{exp_roots, hit_at_first_root};
+use crate::roots::{exp_roots, first_in_range, hit_at_first_root};
 
 /// An h-sphere with hyperbolic centre and radius.
 ///
@@ -186,6 +186,16 @@ impl HSphere {
         hit_at_first_root(ray, self.roots(ray)?, t_min, t_max, |x| self.normal_at(x))
     }
 
+    /// True if the ray meets the sphere in `(t_min, t_max)`: exactly
+    /// `intersect(..).is_some()`, without the hit point and normal (the
+    /// shadow-ray test).
+    #[inline]
+    pub fn blocks(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        self.roots(ray)
+            .and_then(|(near, far)| first_in_range(near, far, t_min, t_max))
+            .is_some()
+    }
+
     /// Both arc lengths (possibly negative or infinite, never NaN) at which
     /// the ray's geodesic meets the sphere, nearest first; `None` if it misses.
     ///
@@ -249,6 +259,21 @@ mod tests {
         for sign in [-1.0, 1.0] {
             let q = Point::from_coords(ec + DVec3::X * er * sign).unwrap();
             assert!((distance(&q, &c) - 0.5).abs() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn blocks_agrees_with_intersect() {
+        let s = HSphere::new(Point::new(0.1, -0.2, 0.5).unwrap(), 0.3).unwrap();
+        let start = Point::new(0.0, 0.3, -0.2).unwrap();
+        for i in 0..500 {
+            let a = f64::from(i) * 2.399_963_229_728_653;
+            let dir = DVec3::new(0.4 * a.cos(), 0.4 * a.sin() - 0.3, 1.0);
+            for ray in [Ray::from_origin_unchecked(dir), Ray::from_ball_unchecked(&start, dir)] {
+                for (lo, hi) in [(0.0, f64::INFINITY), (1e-9, 0.8), (0.9, 1.2)] {
+                    assert_eq!(s.blocks(&ray, lo, hi), s.intersect(&ray, lo, hi).is_some());
+                }
+            }
         }
     }
 
