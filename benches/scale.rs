@@ -8,7 +8,7 @@
 //! cargo bench --bench scale -- --resolution 200  # quicker, smaller
 //! cargo bench --bench scale -- --threads 1       # both renderers on one thread
 //! cargo bench --bench scale -- --tessellation 2,6 --json
-//! cargo bench --bench scale -- --n 1000 --write-scenes /tmp/s  # keep the scenes, for profiling
+//! cargo bench --bench scale -- --n 1000 --write-scenes /tmp/s  # keep the scenes and twins
 //! ```
 //!
 //! Each scene (`spheres-N`, `rods-N`, `tessellation-D`; 2 point lights,
@@ -452,6 +452,10 @@ fn run_case(
     }
     let measured = common::measure(&mut cmd, &dir.path().join("hscene.log"))?;
     let (pov, pov_left_out) = pov_source(&scene);
+    if let Some(keep) = keep {
+        std::fs::write(keep.join(format!("{}.pov", case.name())), &pov)
+            .map_err(|e| format!("--write-scenes: {e}"))?;
+    }
     let povray = if povray {
         match common::povray(&pov, resolution, threads) {
             Ok(m) => Some(m),

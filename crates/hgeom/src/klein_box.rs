@@ -204,6 +204,19 @@ impl KleinRay {
         }
     }
 
+    /// The chord's start `P`, in Klein coordinates.
+    #[inline]
+    pub fn origin(&self) -> DVec3 {
+        self.origin
+    }
+
+    /// `1/V` per component (each finite for a finite ray; see
+    /// [`KleinRay::new`]).
+    #[inline]
+    pub fn inv_dir(&self) -> DVec3 {
+        self.inv_dir
+    }
+
     /// True if the chord is finite: the ray was. A hierarchy must not trust
     /// the slab test of a chord that is not (it would answer "miss").
     #[inline]

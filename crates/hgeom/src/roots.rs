@@ -16,6 +16,54 @@ use crate::ray::{Hit, Ray};
 /// (a tangent ray) gives the double root; a negative one, `None`.
 #[inline]
 pub(crate) fn exp_roots(alpha: f64, k: f64, beta: f64) -> Option<(f64, f64)> {
+    exp_roots_lazy(alpha, k, beta).map(|r| (r.near(), r.far()))
+}
+
+/// [`exp_roots`] before its logarithms: each is taken only when asked for,
+/// with the same arithmetic, so a caller that needs only the near root
+/// pays one logarithm and gets the same bits.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ExpRoots {
+    alpha: f64,
+    beta: f64,
+    big: f64,
+}
+
+impl ExpRoots {
+    /// `ln u_near`.
+    #[inline]
+    pub(crate) fn near(&self) -> f64 {
+        (self.beta / self.big).ln()
+    }
+
+    /// `ln u_far`.
+    #[inline]
+    pub(crate) fn far(&self) -> f64 {
+        (self.big / self.alpha).ln()
+    }
+
+    /// [`first_in_range`] of the two roots, taking the far one's logarithm
+    /// only if the near one is not past `t_min`.
+    #[inline]
+    pub(crate) fn first_in_range(&self, t_min: f64, t_max: f64) -> Option<f64> {
+        let near = self.near();
+        let t = if near > t_min {
+            near
+        } else {
+            let far = self.far();
+            if far > t_min {
+                far
+            } else {
+                return None;
+            }
+        };
+        (t < t_max).then_some(t)
+    }
+}
+
+/// [`exp_roots`] with the logarithms left to the caller.
+#[inline]
+pub(crate) fn exp_roots_lazy(alpha: f64, k: f64, beta: f64) -> Option<ExpRoots> {
     let disc = k * k - alpha * beta;
     if !(disc >= 0.0) {
         return None;
@@ -24,7 +72,20 @@ pub(crate) fn exp_roots(alpha: f64, k: f64, beta: f64) -> Option<(f64, f64)> {
     if !(big > 0.0) {
         return None;
     }
-    Some(((beta / big).ln(), (big / alpha).ln()))
+    Some(ExpRoots { alpha, beta, big })
+}
+
+/// The hit at arc length `t`, with the surface's normal there.
+#[inline]
+pub(crate) fn hit_at(ray: &Ray, t: f64, normal_at: impl Fn(DVec4) -> DVec4) -> Hit {
+    let point = ray.at(t);
+    let normal = normal_at(point);
+    Hit {
+        t,
+        point,
+        normal,
+        shading: normal,
+    }
 }
 
 /// The hit at the first of the two roots inside `(t_min, t_max)`, with the

@@ -8,7 +8,7 @@ use crate::isometry::Isometry;
 use crate::lorentz;
 use crate::point::Point;
 use crate::ray::{Hit, Ray};
-use crate::roots::{exp_roots, first_in_range, hit_at_first_root};
+use crate::roots::{ExpRoots, exp_roots_lazy, hit_at};
 
 /// An h-sphere with hyperbolic centre and radius.
 ///
@@ -183,7 +183,8 @@ impl HSphere {
     /// tangent to rounding (`|<N,N> - 1| < 1e-13 + 100 eps |N|^2` in
     /// `sphere_hits_lie_on_the_sphere`).
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        hit_at_first_root(ray, self.roots(ray)?, t_min, t_max, |x| self.normal_at(x))
+        let t = self.lazy_roots(ray)?.first_in_range(t_min, t_max)?;
+        Some(hit_at(ray, t, |x| self.normal_at(x)))
     }
 
     /// True if the ray meets the sphere in `(t_min, t_max)`: exactly
@@ -191,8 +192,8 @@ impl HSphere {
     /// shadow-ray test).
     #[inline]
     pub fn blocks(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
-        self.roots(ray)
-            .and_then(|(near, far)| first_in_range(near, far, t_min, t_max))
+        self.lazy_roots(ray)
+            .and_then(|r| r.first_in_range(t_min, t_max))
             .is_some()
     }
 
@@ -203,6 +204,12 @@ impl HSphere {
     ///
     /// As [`HSphere::intersect`], for both roots.
     pub fn roots(&self, ray: &Ray) -> Option<(f64, f64)> {
+        self.lazy_roots(ray).map(|r| (r.near(), r.far()))
+    }
+
+    /// [`HSphere::roots`] before the logarithms.
+    #[inline]
+    fn lazy_roots(&self, ray: &Ray) -> Option<ExpRoots> {
         if ray.origin == DVec4::W {
             // A ray from the origin along the unit direction `û = u/|u|`
             // (`V = (û, 0)`), `C = (2c, 2 - g)/g`: `a -+ b = c0 -+ û.c
@@ -216,7 +223,7 @@ impl HSphere {
             let (u, c, g) = (ray.dir.truncate(), self.center.coords(), self.center.gap());
             let delta = one_minus_norm_sq(u);
             let unit = |sq: f64| sq + delta * 0.5 * (delta + sq + g);
-            return exp_roots(
+            return exp_roots_lazy(
                 unit((u - c).length_squared()) / g,
                 self.cosh_r,
                 unit((u + c).length_squared()) / g,
@@ -224,7 +231,7 @@ impl HSphere {
         }
         let a = -lorentz::dot(ray.origin, self.center_h);
         let b = -lorentz::dot(ray.dir, self.center_h);
-        exp_roots(a + b, self.cosh_r, a - b)
+        exp_roots_lazy(a + b, self.cosh_r, a - b)
     }
 
     /// Outward unit normal at a point of the sphere (a tangent vector there).
@@ -269,7 +276,10 @@ mod tests {
         for i in 0..500 {
             let a = f64::from(i) * 2.399_963_229_728_653;
             let dir = DVec3::new(0.4 * a.cos(), 0.4 * a.sin() - 0.3, 1.0);
-            for ray in [Ray::from_origin_unchecked(dir), Ray::from_ball_unchecked(&start, dir)] {
+            for ray in [
+                Ray::from_origin_unchecked(dir),
+                Ray::from_ball_unchecked(&start, dir),
+            ] {
                 for (lo, hi) in [(0.0, f64::INFINITY), (1e-9, 0.8), (0.9, 1.2)] {
                     assert_eq!(s.blocks(&ray, lo, hi), s.intersect(&ray, lo, hi).is_some());
                 }

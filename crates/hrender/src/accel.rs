@@ -15,7 +15,6 @@
 
 mod build;
 
-use hgeom::glam::DVec3;
 use hgeom::{Hit, KleinRay, Ray};
 
 pub use build::Leaf;
@@ -29,31 +28,54 @@ pub enum Step {
     Stop,
 }
 
-/// A node of the hierarchy: its box, and either its children (`count ==
-/// 0`: the left child is the next node, the right one at `index`) or its
-/// items (`items[index .. index + count]`).
+/// A node of the hierarchy: the boxes of its two children side by side,
+/// so one pass of two-lane arithmetic tests both; each child is another
+/// node (`count == 0`), a leaf (`items[child .. child + count]`), or absent
+/// (`child == ABSENT`, only under a root that is a leaf).
 #[derive(Clone, Copy, Debug)]
-struct Node {
-    lo: [f32; 3],
-    hi: [f32; 3],
-    index: u32,
-    count: u32,
+struct PairNode {
+    /// `lo[axis][k]`: child `k`'s least corner, rounded down to `f32`.
+    lo: [[f32; 2]; 3],
+    /// `hi[axis][k]`: its greatest corner, rounded up.
+    hi: [[f32; 2]; 3],
+    child: [u32; 2],
+    count: [u32; 2],
 }
 
-impl Node {
-    /// Where the chord enters the node's box within `[lo, hi]`. The box in
-    /// `f64` is exact (every `f32` is an `f64`) and valid by construction.
+const ABSENT: u32 = u32::MAX;
+
+impl PairNode {
+    /// Where the chord enters each child's box within `[lo, hi]`, or NaN
+    /// where it misses. The boxes in `f64` are exact (every `f32` is an
+    /// `f64`); the slab test is [`KleinRay::slab_entry`]'s, per lane.
     #[inline(always)]
-    fn entry(&self, chord: &KleinRay, lo: f64, hi: f64) -> Option<f64> {
-        let f = |a: [f32; 3]| DVec3::new(a[0].into(), a[1].into(), a[2].into());
-        chord.slab_entry(f(self.lo), f(self.hi), lo, hi)
+    fn entries(&self, origin: [f64; 3], inv: [f64; 3], lo: f64, hi: f64) -> [Option<f64>; 2] {
+        #[inline(always)]
+        fn min(a: f64, b: f64) -> f64 {
+            if a < b { a } else { b }
+        }
+        #[inline(always)]
+        fn max(a: f64, b: f64) -> f64 {
+            if a > b { a } else { b }
+        }
+        let mut enter = [lo; 2];
+        let mut leave = [hi; 2];
+        for axis in 0..3 {
+            for k in 0..2 {
+                let a = (f64::from(self.lo[axis][k]) - origin[axis]) * inv[axis];
+                let z = (f64::from(self.hi[axis][k]) - origin[axis]) * inv[axis];
+                enter[k] = max(enter[k], min(a, z));
+                leave[k] = min(leave[k], max(a, z));
+            }
+        }
+        [0, 1].map(|k| (enter[k] <= leave[k] && self.child[k] != ABSENT).then_some(enter[k]))
     }
 }
 
 /// The hierarchy over items `0..n` and the items without a box.
 #[derive(Clone, Debug, Default)]
 pub struct Accel {
-    nodes: Vec<Node>,
+    nodes: Vec<PairNode>,
     /// Leaf contents, in node order.
     items: Vec<u32>,
     unbounded: Vec<u32>,
@@ -70,9 +92,9 @@ impl Accel {
     /// enters, which is harmless: a repeated test finds nothing nearer), and
     /// the items with no box at all.
     pub fn new(leaves: Vec<Leaf>, unbounded: Vec<u32>) -> Accel {
-        let (nodes, items) = build::build(leaves);
+        let (binary, items) = build::build(leaves);
         Accel {
-            nodes,
+            nodes: pair_up(&binary),
             items,
             unbounded,
         }
@@ -111,14 +133,11 @@ impl Accel {
             }
             return best;
         }
+        let (origin, inv) = (chord.origin().to_array(), chord.inv_dir().to_array());
         let (lo, mut hi) = chord.arc(t_min, limit);
         let mut stack = [(0u32, 0f64); MAX_DEPTH + 1];
-        let mut top = 0usize;
-        let Some(root) = self.entry(&chord, 0, lo, hi) else {
-            return best;
-        };
-        stack[0] = (0, root);
-        top += 1;
+        stack[0] = (0, lo);
+        let mut top = 1usize;
         let mut last = u32::MAX;
         while top > 0 {
             top -= 1;
@@ -126,10 +145,31 @@ impl Accel {
             if enter > hi {
                 continue;
             }
-            let node = self.nodes[n as usize];
-            if node.count > 0 {
-                let first = node.index as usize;
-                for &i in &self.items[first..first + node.count as usize] {
+            let node = &self.nodes[n as usize];
+            let [e0, e1] = node.entries(origin, inv, lo, hi);
+            // Children in the order the chord enters them.
+            let order = match (e0, e1) {
+                (Some(a), Some(b)) if b < a => [(1, b), (0, a)],
+                (Some(a), Some(b)) => [(0, a), (1, b)],
+                (Some(a), None) => [(0, a), (2, 0.0)],
+                (None, Some(b)) => [(1, b), (2, 0.0)],
+                (None, None) => continue,
+            };
+            // Leaves now, nearest first; inner children onto the stack,
+            // the farther below.
+            let mut push = [(0u32, 0f64); 2];
+            let mut pushed = 0;
+            for (k, e) in order {
+                if k == 2 || e > hi {
+                    continue;
+                }
+                if node.count[k] == 0 {
+                    push[pushed] = (node.child[k], e);
+                    pushed += 1;
+                    continue;
+                }
+                let first = node.child[k] as usize;
+                for &i in &self.items[first..first + node.count[k] as usize] {
                     // Consecutive boxes of one item (a rod's pieces) need
                     // one exact test.
                     if i == last {
@@ -142,33 +182,10 @@ impl Accel {
                         best = Some((hit, i));
                     }
                 }
-                continue;
             }
-            let (left, right) = (n + 1, node.index);
-            let l = self.entry(&chord, left, lo, hi);
-            let r = self.entry(&chord, right, lo, hi);
-            match (l, r) {
-                (Some(el), Some(er)) => {
-                    // The farther child goes below, so the nearer is taken
-                    // first and can shrink the arc for the other.
-                    let (near, far) = if el <= er {
-                        ((left, el), (right, er))
-                    } else {
-                        ((right, er), (left, el))
-                    };
-                    stack[top] = far;
-                    stack[top + 1] = near;
-                    top += 2;
-                }
-                (Some(el), None) => {
-                    stack[top] = (left, el);
-                    top += 1;
-                }
-                (None, Some(er)) => {
-                    stack[top] = (right, er);
-                    top += 1;
-                }
-                (None, None) => {}
+            for p in push[..pushed].iter().rev() {
+                stack[top] = *p;
+                top += 1;
             }
         }
         best
@@ -195,20 +212,26 @@ impl Accel {
             }
             return;
         }
+        let (origin, inv) = (chord.origin().to_array(), chord.inv_dir().to_array());
         let (lo, hi) = chord.arc(t_min, t_max);
         let mut stack = [0u32; MAX_DEPTH + 1];
-        let mut top = 0usize;
-        if self.entry(&chord, 0, lo, hi).is_some() {
-            top = 1;
-        }
+        let mut top = 1usize;
         let mut last = u32::MAX;
         while top > 0 {
             top -= 1;
-            let n = stack[top];
-            let node = self.nodes[n as usize];
-            if node.count > 0 {
-                let first = node.index as usize;
-                for &i in &self.items[first..first + node.count as usize] {
+            let node = &self.nodes[stack[top] as usize];
+            let entries = node.entries(origin, inv, lo, hi);
+            for k in 0..2 {
+                if entries[k].is_none() {
+                    continue;
+                }
+                if node.count[k] == 0 {
+                    stack[top] = node.child[k];
+                    top += 1;
+                    continue;
+                }
+                let first = node.child[k] as usize;
+                for &i in &self.items[first..first + node.count[k] as usize] {
                     if i == last {
                         continue;
                     }
@@ -217,26 +240,66 @@ impl Accel {
                         return;
                     }
                 }
-                continue;
-            }
-            for child in [node.index, n + 1] {
-                if self.entry(&chord, child, lo, hi).is_some() {
-                    stack[top] = child;
-                    top += 1;
-                }
             }
         }
     }
+}
 
-    #[inline(always)]
-    fn entry(&self, chord: &KleinRay, node: u32, lo: f64, hi: f64) -> Option<f64> {
-        self.nodes[node as usize].entry(chord, lo, hi)
+/// The paired layout of a binary hierarchy: one pair node per inner node,
+/// in the same order (a root that is a leaf gets a pair node of its own,
+/// with the second child absent).
+fn pair_up(binary: &[build::Node]) -> Vec<PairNode> {
+    let Some(root) = binary.first() else {
+        return Vec::new();
+    };
+    // Pair-node index of each inner binary node.
+    let mut index = vec![u32::MAX; binary.len()];
+    let mut count = 0u32;
+    for (i, n) in binary.iter().enumerate() {
+        if n.count == 0 {
+            index[i] = count;
+            count += 1;
+        }
     }
+    let child = |b: usize| -> (u32, u32) {
+        let n = &binary[b];
+        if n.count == 0 {
+            (index[b], 0)
+        } else {
+            (n.index, n.count)
+        }
+    };
+    let mut out = Vec::with_capacity(count as usize + 1);
+    if root.count > 0 {
+        out.push(PairNode {
+            lo: [[root.lo[0], 0.0], [root.lo[1], 0.0], [root.lo[2], 0.0]],
+            hi: [[root.hi[0], 0.0], [root.hi[1], 0.0], [root.hi[2], 0.0]],
+            child: [root.index, ABSENT],
+            count: [root.count, 0],
+        });
+        return out;
+    }
+    for (i, n) in binary.iter().enumerate() {
+        if n.count > 0 {
+            continue;
+        }
+        let (l, r) = (i + 1, n.index as usize);
+        let (bl, br) = (&binary[l], &binary[r]);
+        let ((cl, nl), (cr, nr)) = (child(l), child(r));
+        out.push(PairNode {
+            lo: [0, 1, 2].map(|a| [bl.lo[a], br.lo[a]]),
+            hi: [0, 1, 2].map(|a| [bl.hi[a], br.hi[a]]),
+            child: [cl, cr],
+            count: [nl, nr],
+        });
+    }
+    out
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use hgeom::glam::DVec3;
     use hgeom::{HSphere, Point, Shape};
 
     /// Random small spheres: the hierarchy's nearest hit equals the

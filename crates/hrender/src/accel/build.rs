@@ -5,7 +5,18 @@
 use hgeom::KleinBox;
 use hgeom::glam::DVec3;
 
-use super::{MAX_DEPTH, Node};
+use super::MAX_DEPTH;
+
+/// A node of the binary hierarchy as built: its box, and either its
+/// children (`count == 0`: the left child is the next node, the right one
+/// at `index`) or its items (`items[index .. index + count]`).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Node {
+    pub lo: [f32; 3],
+    pub hi: [f32; 3],
+    pub index: u32,
+    pub count: u32,
+}
 
 /// Bins per axis.
 const BINS: usize = 16;
