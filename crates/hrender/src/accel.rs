@@ -221,8 +221,8 @@ impl Accel {
             top -= 1;
             let node = &self.nodes[stack[top] as usize];
             let entries = node.entries(origin, inv, lo, hi);
-            for k in 0..2 {
-                if entries[k].is_none() {
+            for (k, entry) in entries.iter().enumerate() {
+                if entry.is_none() {
                     continue;
                 }
                 if node.count[k] == 0 {
