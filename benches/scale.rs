@@ -450,7 +450,7 @@ fn run_case(
     if let Some(t) = threads {
         cmd.arg(format!("--threads={t}"));
     }
-    let measured = common::measure(&mut cmd, &dir.path().join("hscene.log"))?;
+    let measured = common::measure(&cmd, &dir.path().join("hscene.log"))?;
     let (pov, pov_left_out) = pov_source(&scene);
     if let Some(keep) = keep {
         std::fs::write(keep.join(format!("{}.pov", case.name())), &pov)
@@ -490,6 +490,7 @@ fn run_case(
 }
 
 fn main() -> ExitCode {
+    common::measure_child_if_asked();
     let args: Vec<String> = std::env::args().skip(1).collect();
     let json = args.iter().any(|a| a == "--json");
     let parsed = (|| -> Result<_, String> {

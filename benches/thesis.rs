@@ -283,6 +283,7 @@ struct Row {
 }
 
 fn main() -> ExitCode {
+    common::measure_child_if_asked();
     let args: Vec<String> = std::env::args().skip(1).collect();
     let json = args.iter().any(|a| a == "--json");
     let povray = args.iter().any(|a| a == "--povray");

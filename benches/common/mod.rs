@@ -36,19 +36,96 @@ pub struct Measured {
     pub peak_mib: f64,
 }
 
-/// Run `cmd` with its output going to `log`, and measure it. The child is
-/// reaped with `wait4`, which reports the rusage of that one child: reading
-/// `RUSAGE_CHILDREN` instead would mix in every earlier child.
-pub fn measure(cmd: &mut Command, log: &Path) -> Result<Measured, String> {
+/// The flag under which a bench executable runs as the measuring parent of
+/// one command (see [`measure`]).
+const MEASURE_FLAG: &str = "--measure-child";
+
+/// Run `cmd` with its output going to `log`, and measure it.
+///
+/// The command runs under a fresh copy of this bench executable
+/// ([`measure_child_if_asked`]), which reaps it with `wait4` and prints its
+/// rusage. Forking the command from this process instead would report this
+/// process's own peak memory for it (Linux carries the peak resident set of
+/// the forking process over `exec`), and reading `RUSAGE_CHILDREN` would mix
+/// in every earlier child.
+pub fn measure(cmd: &Command, log: &Path) -> Result<Measured, String> {
+    let me = std::env::current_exe().map_err(|e| format!("cannot find the bench executable: {e}"))?;
     let out = std::fs::File::create(log).map_err(|e| format!("{}: {e}", log.display()))?;
     let err = out
         .try_clone()
         .map_err(|e| format!("{}: {e}", log.display()))?;
+    let mut wrapper = Command::new(me);
+    wrapper.arg(MEASURE_FLAG).arg(cmd.get_program()).args(cmd.get_args());
+    if let Some(dir) = cmd.get_current_dir() {
+        wrapper.current_dir(dir);
+    }
     let start = Instant::now();
+    let output = wrapper
+        .stdin(Stdio::null())
+        .stderr(err)
+        .stdout(Stdio::piped())
+        .spawn()
+        .and_then(|child| {
+            drop(out);
+            child.wait_with_output()
+        })
+        .map_err(|e| format!("cannot start {:?}: {e}", cmd.get_program()))?;
+    let wall_s = start.elapsed().as_secs_f64();
+    let text = String::from_utf8_lossy(&output.stdout);
+    let fields: Vec<f64> = text
+        .lines()
+        .last()
+        .unwrap_or_default()
+        .split_whitespace()
+        .filter_map(|f| f.parse().ok())
+        .collect();
+    match (output.status.success(), fields.as_slice()) {
+        (true, [cpu_s, peak_kib]) => Ok(Measured {
+            cpu_s: *cpu_s,
+            wall_s,
+            peak_mib: peak_kib / 1024.0,
+        }),
+        _ => {
+            let text = std::fs::read_to_string(log).unwrap_or_default();
+            let tail: String = text.lines().rev().take(5).collect::<Vec<_>>().join(" | ");
+            Err(format!("{:?} failed ({}): {tail}", cmd.get_program(), output.status))
+        }
+    }
+}
+
+/// If this process was started by [`measure`], run the command it names,
+/// print `cpu_seconds peak_kib` of that command on standard output, and
+/// exit (with failure if the command failed); otherwise return. Every bench
+/// that uses [`measure`] calls this first in `main`.
+pub fn measure_child_if_asked() {
+    let args: Vec<std::ffi::OsString> = std::env::args_os().skip(1).collect();
+    if args.first().is_none_or(|a| a != MEASURE_FLAG) {
+        return;
+    }
+    let code = match args.get(1) {
+        None => {
+            eprintln!("{MEASURE_FLAG}: no command");
+            2
+        }
+        Some(program) => match reap_measured(Command::new(program).args(&args[2..])) {
+            Ok((ok, cpu_s, peak_kib)) => {
+                println!("{cpu_s} {peak_kib}");
+                if ok { 0 } else { 1 }
+            }
+            Err(e) => {
+                eprintln!("{e}");
+                2
+            }
+        },
+    };
+    std::process::exit(code);
+}
+
+/// Spawn `cmd` (inheriting this process's output), reap it with `wait4`,
+/// and return whether it succeeded, its CPU seconds and peak KiB.
+fn reap_measured(cmd: &mut Command) -> Result<(bool, f64, f64), String> {
     let child = cmd
         .stdin(Stdio::null())
-        .stdout(out)
-        .stderr(err)
         .spawn()
         .map_err(|e| format!("cannot start {:?}: {e}", cmd.get_program()))?;
     let pid = child.id() as libc::pid_t;
@@ -67,24 +144,12 @@ pub fn measure(cmd: &mut Command, log: &Path) -> Result<Measured, String> {
             return Err(format!("wait4: {e}"));
         }
     }
-    let wall_s = start.elapsed().as_secs_f64();
     // Reaped above; dropping the handle neither waits nor kills.
     drop(child);
-    if !(libc::WIFEXITED(status) && libc::WEXITSTATUS(status) == 0) {
-        let text = std::fs::read_to_string(log).unwrap_or_default();
-        let tail: String = text.lines().rev().take(5).collect::<Vec<_>>().join(" | ");
-        return Err(format!(
-            "{:?} failed (status {status}): {tail}",
-            cmd.get_program()
-        ));
-    }
     let secs = |t: libc::timeval| t.tv_sec as f64 + t.tv_usec as f64 * 1e-6;
-    Ok(Measured {
-        cpu_s: secs(usage.ru_utime) + secs(usage.ru_stime),
-        wall_s,
-        // Linux reports kilobytes.
-        peak_mib: usage.ru_maxrss as f64 / 1024.0,
-    })
+    let ok = libc::WIFEXITED(status) && libc::WEXITSTATUS(status) == 0;
+    // Linux reports kilobytes.
+    Ok((ok, secs(usage.ru_utime) + secs(usage.ru_stime), usage.ru_maxrss as f64))
 }
 
 /// Render the POV-Ray source `pov` at `resolution` squared, without
@@ -108,7 +173,7 @@ pub fn povray(pov: &str, resolution: u32, threads: Option<usize>) -> Result<Meas
     if let Some(t) = threads {
         cmd.arg(format!("+WT{t}"));
     }
-    measure(&mut cmd, &dir.path().join("povray.log"))
+    measure(&cmd, &dir.path().join("povray.log"))
 }
 
 /// The primary rays of a `k x k` grid of pixel centres, and the scene as the
