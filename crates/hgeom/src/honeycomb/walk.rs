@@ -92,6 +92,23 @@ pub struct WalkStats {
     pub folds: u32,
 }
 
+/// One step of a walk ([`RegularHoneycomb::walk_steps`]): the ray after
+/// it has crossed a wall, in the base simplex.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WalkStep {
+    /// The wall crossed (`0..4`; 3 is a face plane).
+    pub wall: usize,
+    /// The arc length along the original ray at the crossing.
+    pub t: f64,
+    /// The crossing point, reflected into the base simplex (on the wall).
+    pub origin: DVec4,
+    /// The reflected direction there.
+    pub dir: DVec4,
+    /// The Lorentz matrix from the base simplex to the chamber entered
+    /// (in the honeycomb's frame, before placement).
+    pub chamber: DMat4,
+}
+
 /// What the walk needs of the symbol, in the base simplex.
 #[derive(Clone, Debug)]
 struct Local {
@@ -300,13 +317,13 @@ impl RegularHoneycomb {
     /// polygons, rods and balls of the same cells to 1e-9
     /// (`walk_matches_explicit_cells` in `tests/honeycomb_walk.rs`).
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        self.walk(ray, t_min, t_max, false, &mut WalkStats::default())
+        self.walk(ray, t_min, t_max, false, &mut WalkStats::default(), None)
     }
 
     /// True if the ray meets a part in `(t_min, t_max)` (the shadow test:
     /// the walk stops at the first part found).
     pub fn blocks(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
-        self.walk(ray, t_min, t_max, true, &mut WalkStats::default())
+        self.walk(ray, t_min, t_max, true, &mut WalkStats::default(), None)
             .is_some()
     }
 
@@ -318,8 +335,40 @@ impl RegularHoneycomb {
         t_max: f64,
     ) -> (Option<Hit>, WalkStats) {
         let mut stats = WalkStats::default();
-        let hit = self.walk(ray, t_min, t_max, false, &mut stats);
+        let hit = self.walk(ray, t_min, t_max, false, &mut stats, None);
         (hit, stats)
+    }
+
+    /// The walk of a ray that meets nothing (parts are ignored), step by
+    /// step, for at most `max_steps` walls: for measuring the drift of the
+    /// walk against a high-precision one. The start is the ray's origin
+    /// (`t = 0`); it must lie in the base simplex (`<X,n_i> >= 0`, e.g. the
+    /// base point) for the steps to be comparable.
+    pub fn walk_steps(&self, ray: &Ray, max_steps: usize) -> Vec<WalkStep> {
+        let bare = RegularHoneycomb {
+            style: HoneycombStyle {
+                edges: None,
+                faces: false,
+                vertices: None,
+                ..self.style
+            },
+            local: Arc::new(Local {
+                sinh2_edge: None,
+                vertex: None,
+                ..(*self.local).clone()
+            }),
+            ..self.clone()
+        };
+        let mut steps = Vec::new();
+        bare.walk(
+            ray,
+            0.0,
+            f64::INFINITY,
+            false,
+            &mut WalkStats::default(),
+            Some((&mut steps, max_steps)),
+        );
+        steps
     }
 
     /// The arc lengths of the original ray inside the horizon and (with a
@@ -352,6 +401,7 @@ impl RegularHoneycomb {
         t_max: f64,
         any: bool,
         stats: &mut WalkStats,
+        mut trace: Option<(&mut Vec<WalkStep>, usize)>,
     ) -> Option<Hit> {
         let (lo, hi) = self.window(ray, t_min, t_max)?;
         let l = &*self.local;
@@ -434,6 +484,18 @@ impl RegularHoneycomb {
             last = exit;
             if exit == 3 {
                 stats.cells += 1;
+            }
+            if let Some((steps, max)) = trace.as_mut() {
+                if steps.len() >= *max {
+                    return None;
+                }
+                steps.push(WalkStep {
+                    wall: exit,
+                    t,
+                    origin: o,
+                    dir: d,
+                    chamber: m,
+                });
             }
         }
         None
