@@ -124,8 +124,6 @@ struct Local {
     edge_cells: Vec<DVec4>,
     vertex_cells: Vec<DVec4>,
     face_cells: [DVec4; 2],
-    /// Which mirror is a face plane.
-    reflections: [DMat4; 4],
 }
 
 /// A regular honeycomb `{p,q,r}` of hyperbolic space as one surface: edges
@@ -199,7 +197,6 @@ impl RegularHoneycomb {
             edge_cells,
             vertex_cells,
             face_cells: [v[3], reflections[3] * v[3]],
-            reflections,
         };
         let cells = match style.depth {
             Some(depth) => Some(Arc::new(CellSet::build(&simplex, depth)?)),
@@ -423,9 +420,15 @@ impl RegularHoneycomb {
             stats.folds += 1;
             o = reflect(o, l.n[i]);
             d = reflect(d, l.n[i]);
-            m *= l.reflections[i];
+            m = times_reflection(&m, l.n[i]);
         }
-        let mut t = lo;
+        // Arc lengths are kept as v = e^{2τ} (a product along the walk),
+        // which the exits give without a logarithm: e^{2 atanh s} =
+        // (1+s)/(1-s). Only a hit takes the one logarithm.
+        let mut u_acc = 1.0;
+        let v_span = (2.0 * (hi - lo)).exp();
+        // A shadow ray of an unlimited honeycomb needs no chamber matrix.
+        let need_m = !any || self.cells.is_some();
         let mut last = 4;
         stats.cells = 1;
         while stats.chambers < MAX_WALK_STEPS {
@@ -445,28 +448,27 @@ impl RegularHoneycomb {
                     }
                 }
             }
-            let span = hi - t;
-            let tau_exit = if exit < 4 {
-                s_min.atanh()
+            let span = v_span / u_acc;
+            let v_exit = if exit < 4 {
+                (1.0 + s_min) / (1.0 - s_min)
             } else {
                 f64::INFINITY
             };
-            let window = tau_exit.min(span);
-            let floor = (t_min - t).max(0.0);
             let chamber = Chamber {
                 o,
                 d,
                 a,
                 b,
                 exit,
-                tau_exit,
+                v_exit,
                 m: &m,
                 shadow: any,
             };
-            if let Some((tau, kind)) = self.first_part(&chamber, floor, window) {
-                return Some(self.hit(ray, t + tau, &chamber, tau, kind));
+            if let Some((v, kind)) = self.first_part(&chamber, v_exit.min(span)) {
+                let t = lo + 0.5 * (u_acc * v).ln();
+                return Some(self.hit(ray, t, &chamber, v, kind));
             }
-            if tau_exit >= span {
+            if v_exit >= span {
                 return None;
             }
             let c = 1.0 / (1.0 - s_min * s_min).sqrt();
@@ -479,8 +481,10 @@ impl RegularHoneycomb {
             o = o2;
             d = d2;
             renormalise(&mut o, &mut d);
-            m *= l.reflections[exit];
-            t += tau_exit;
+            if need_m {
+                m = times_reflection(&m, n);
+            }
+            u_acc *= v_exit;
             last = exit;
             if exit == 3 {
                 stats.cells += 1;
@@ -491,7 +495,7 @@ impl RegularHoneycomb {
                 }
                 steps.push(WalkStep {
                     wall: exit,
-                    t,
+                    t: lo + 0.5 * u_acc.ln(),
                     origin: o,
                     dir: d,
                     chamber: m,
@@ -501,52 +505,48 @@ impl RegularHoneycomb {
         None
     }
 
-    /// The first part in this chamber met at `floor < τ <= window`, with
-    /// its class (0 for a shadow ray, which needs none).
-    fn first_part(
-        &self,
-        c: &Chamber,
-        floor: f64,
-        window: f64,
-    ) -> Option<(f64, (HoneycombPart, u32))> {
+    /// The first part in this chamber met at `1 < v <= window`, in
+    /// `v = e^{2τ}`, with its class (0 for a shadow ray, which needs none).
+    fn first_part(&self, c: &Chamber, window: f64) -> Option<(f64, (HoneycombPart, u32))> {
         let l = &*self.local;
         let (a, b) = (&c.a, &c.b);
         let mut found: Option<(f64, HoneycombPart)> = None;
-        let in_window = |tau: f64, found: &Option<(f64, HoneycombPart)>| {
-            tau > floor && tau <= window && found.is_none_or(|(best, _)| tau < best)
+        let in_window = |v: f64, found: &Option<(f64, HoneycombPart)>| {
+            v > 1.0 && v <= window && found.is_none_or(|(best, _)| v < best)
         };
-        let first_root = |(near, far): (f64, f64)| if near > floor { near } else { far };
+        let first_root = |(near, far): (f64, f64)| if near > 1.0 { near } else { far };
         if let Some(sinh2) = l.sinh2_edge {
             let o = [a[3], l.k2 * a[2] + l.k3 * a[3]];
             let v = [b[3], l.k2 * b[2] + l.k3 * b[3]];
-            if let Some(tau) = tube_roots(o, v, sinh2).map(first_root)
-                && in_window(tau, &found)
+            if let Some(v) = tube_roots(o, v, sinh2).map(first_root)
+                && in_window(v, &found)
                 && self.present(&l.edge_cells, c.m)
             {
-                found = Some((tau, HoneycombPart::Edge));
+                found = Some((v, HoneycombPart::Edge));
             }
         }
         if let Some((v0, cosh_r)) = l.vertex {
-            // -<X(τ),v0> = α cosh τ + β sinh τ = cosh ρ.
+            // -<X(τ),v0> = α cosh τ + β sinh τ = cosh ρ, in u = e^τ.
             let alpha = -lorentz::dot(c.o, v0);
             let beta = -lorentz::dot(c.d, v0);
-            if let Some(tau) = exp_roots(alpha + beta, cosh_r, alpha - beta).map(first_root)
-                && in_window(tau, &found)
+            if let Some((near, far)) = exp_roots_plain(alpha + beta, cosh_r, alpha - beta)
+                && let v = first_root((near * near, far * far))
+                && in_window(v, &found)
                 && self.present(&l.vertex_cells, c.m)
             {
-                found = Some((tau, HoneycombPart::Vertex));
+                found = Some((v, HoneycombPart::Vertex));
             }
         }
         if self.style.faces
             && c.exit == 3
-            && in_window(c.tau_exit, &found)
+            && in_window(c.v_exit, &found)
             && self.present(&l.face_cells, c.m)
         {
-            found = Some((c.tau_exit, HoneycombPart::Face));
+            found = Some((c.v_exit, HoneycombPart::Face));
         }
-        let (tau, kind) = found?;
+        let (v, kind) = found?;
         let class = if c.shadow { 0 } else { self.class(kind, c.m) };
-        Some((tau, (kind, class)))
+        Some((v, (kind, class)))
     }
 
     /// True if one of the cells (local centres mapped by `m`) is drawn.
@@ -585,9 +585,11 @@ impl RegularHoneycomb {
         rank.rem_euclid(i64::from(k)) as u32
     }
 
-    fn hit(&self, ray: &Ray, t: f64, c: &Chamber, tau: f64, kind: (HoneycombPart, u32)) -> Hit {
+    fn hit(&self, ray: &Ray, t: f64, c: &Chamber, v: f64, kind: (HoneycombPart, u32)) -> Hit {
         let l = &*self.local;
-        let x = tau.cosh() * c.o + tau.sinh() * c.d;
+        // e^τ = sqrt v.
+        let e = v.sqrt();
+        let x = (0.5 * (e + 1.0 / e)) * c.o + (0.5 * (e - 1.0 / e)) * c.d;
         let local_normal = match kind.0 {
             // Two-sided: the normal faces the side the ray comes from.
             HoneycombPart::Face => l.n[3],
@@ -627,7 +629,8 @@ struct Chamber<'a> {
     a: [f64; 4],
     b: [f64; 4],
     exit: usize,
-    tau_exit: f64,
+    /// `e^{2τ}` at the exit.
+    v_exit: f64,
     m: &'a DMat4,
     shadow: bool,
 }
@@ -636,6 +639,19 @@ struct Chamber<'a> {
 #[inline]
 fn reflect(x: DVec4, n: DVec4) -> DVec4 {
     x - 2.0 * lorentz::dot(x, n) * n
+}
+
+/// `M R` for the reflection `R` in the unit normal `n`:
+/// `M (X - 2 <X,n> n) = M X - 2 (M n) (J n)ᵀ X`, a rank-one update.
+#[inline]
+fn times_reflection(m: &DMat4, n: DVec4) -> DMat4 {
+    let mn = 2.0 * (*m * n);
+    DMat4::from_cols(
+        m.x_axis - n.x * mn,
+        m.y_axis - n.y * mn,
+        m.z_axis - n.z * mn,
+        m.w_axis + n.w * mn,
+    )
 }
 
 /// Restores `<O,O> = -1`, `<D,D> = 1`, `<O,D> = 0` after rounding.
@@ -647,8 +663,8 @@ fn renormalise(o: &mut DVec4, d: &mut DVec4) {
 }
 
 /// The roots of `c_1(τ)² + c_2(τ)² = sinh² w` with
-/// `c_i = o_i cosh τ + v_i sinh τ` (the tube), as in
-/// [`HCylinder::roots`](crate::HCylinder::roots).
+/// `c_i = o_i cosh τ + v_i sinh τ` (the tube), as values of `e^{2τ}`, from
+/// [`HCylinder::roots`](crate::HCylinder::roots)'s quadratic.
 #[inline]
 fn tube_roots(o: [f64; 2], v: [f64; 2], sinh2: f64) -> Option<(f64, f64)> {
     let p = [o[0] + v[0], o[1] + v[1]];
@@ -660,6 +676,20 @@ fn tube_roots(o: [f64; 2], v: [f64; 2], sinh2: f64) -> Option<(f64, f64)> {
     if !(k > 0.0) {
         return None;
     }
-    let (near, far) = exp_roots(a, k, c)?;
-    Some((0.5 * near, 0.5 * far))
+    exp_roots_plain(a, k, c)
+}
+
+/// The roots `u_near <= u_far` of `alpha u² - 2 k u + beta = 0` for
+/// `alpha, beta >= 0`, `k > 0`: [`exp_roots`] without the logarithms.
+#[inline]
+fn exp_roots_plain(alpha: f64, k: f64, beta: f64) -> Option<(f64, f64)> {
+    let disc = k * k - alpha * beta;
+    if !(disc >= 0.0) {
+        return None;
+    }
+    let big = k + disc.sqrt();
+    if !(big > 0.0) {
+        return None;
+    }
+    Some((beta / big, big / alpha))
 }
