@@ -78,6 +78,10 @@ pub const DEFAULT_HORIZON: f64 = 15.0;
 /// aimed within `e^{-15}` of an ideal vertex, spiralling up its cusp) misses.
 pub const MAX_WALK_STEPS: u32 = 200_000;
 
+/// The walk restores `<O,O> = -1`, `<D,D> = 1`, `<O,D> = 0` every this
+/// many chambers (rounding drifts them by a few ulps per step).
+const RENORMALISE_EVERY: u32 = 8;
+
 /// The most reflections that fold a ray's start into the simplex.
 const MAX_FOLD_STEPS: u32 = 100_000;
 
@@ -471,16 +475,19 @@ impl RegularHoneycomb {
             if v_exit >= span {
                 return None;
             }
-            let c = 1.0 / (1.0 - s_min * s_min).sqrt();
-            let s = s_min * c;
+            // The exit point and tangent, both scaled by cosh τ: the walk
+            // keeps o and d with a common scale λ (`<o,o> = -λ²`), which
+            // the exit ratios ignore and the part tests divide out, and
+            // restores λ = 1 every few steps.
             let n = l.n[exit];
-            let mut o2 = c * o + s * d;
+            let mut o2 = o + s_min * d;
             // The exit point lies on the wall: put it there exactly.
             o2 -= lorentz::dot(o2, n) * n;
-            let d2 = reflect(s * o + c * d, n);
+            d = reflect(s_min * o + d, n);
             o = o2;
-            d = d2;
-            renormalise(&mut o, &mut d);
+            if stats.chambers % RENORMALISE_EVERY == 0 {
+                renormalise(&mut o, &mut d);
+            }
             if need_m {
                 m = times_reflection(&m, n);
             }
@@ -493,6 +500,8 @@ impl RegularHoneycomb {
                 if steps.len() >= *max {
                     return None;
                 }
+                let (mut o, mut d) = (o, d);
+                renormalise(&mut o, &mut d);
                 steps.push(WalkStep {
                     wall: exit,
                     t: lo + 0.5 * u_acc.ln(),
@@ -515,10 +524,14 @@ impl RegularHoneycomb {
             v > 1.0 && v <= window && found.is_none_or(|(best, _)| v < best)
         };
         let first_root = |(near, far): (f64, f64)| if near > 1.0 { near } else { far };
+        // o and d carry a common scale λ, λ² = -<o,o>: the tube's
+        // quadratic is homogeneous of degree 2 in (o, d, sinh w), the ball's
+        // of degree 1 in (o, d, cosh ρ), and their roots do not change.
+        let lambda2 = -lorentz::dot(c.o, c.o);
         if let Some(sinh2) = l.sinh2_edge {
             let o = [a[3], l.k2 * a[2] + l.k3 * a[3]];
             let v = [b[3], l.k2 * b[2] + l.k3 * b[3]];
-            if let Some(v) = tube_roots(o, v, sinh2).map(first_root)
+            if let Some(v) = tube_roots(o, v, sinh2 * lambda2).map(first_root)
                 && in_window(v, &found)
                 && self.present(&l.edge_cells, c.m)
             {
@@ -529,7 +542,8 @@ impl RegularHoneycomb {
             // -<X(τ),v0> = α cosh τ + β sinh τ = cosh ρ, in u = e^τ.
             let alpha = -lorentz::dot(c.o, v0);
             let beta = -lorentz::dot(c.d, v0);
-            if let Some((near, far)) = exp_roots_plain(alpha + beta, cosh_r, alpha - beta)
+            let k = cosh_r * lambda2.sqrt();
+            if let Some((near, far)) = exp_roots_plain(alpha + beta, k, alpha - beta)
                 && let v = first_root((near * near, far * far))
                 && in_window(v, &found)
                 && self.present(&l.vertex_cells, c.m)
@@ -587,9 +601,11 @@ impl RegularHoneycomb {
 
     fn hit(&self, ray: &Ray, t: f64, c: &Chamber, v: f64, kind: (HoneycombPart, u32)) -> Hit {
         let l = &*self.local;
+        let (mut o, mut d) = (c.o, c.d);
+        renormalise(&mut o, &mut d);
         // e^τ = sqrt v.
         let e = v.sqrt();
-        let x = (0.5 * (e + 1.0 / e)) * c.o + (0.5 * (e - 1.0 / e)) * c.d;
+        let x = (0.5 * (e + 1.0 / e)) * o + (0.5 * (e - 1.0 / e)) * d;
         let local_normal = match kind.0 {
             // Two-sided: the normal faces the side the ray comes from.
             HoneycombPart::Face => l.n[3],
