@@ -72,11 +72,19 @@ use super::style::{HoneycombPart, HoneycombStyle, encode_part};
 
 /// The default horizon: the walk stops at this distance from the origin of
 /// the frame (module docs).
-pub const DEFAULT_HORIZON: f64 = 15.0;
+pub const DEFAULT_HORIZON: f64 = 12.0;
 
 /// The most chambers one ray may cross; a ray that would cross more (one
 /// aimed within `e^{-15}` of an ideal vertex, spiralling up its cusp) misses.
 pub const MAX_WALK_STEPS: u32 = 200_000;
+
+/// Parts within `SELF_HIT x0²` of a ray's start are skipped, `x0` the
+/// cosh of the start's distance from the base point: the drift of a walk
+/// to distance `d` is about `1e-16 e^{2d}` (module docs), and a ray that
+/// starts on a part found by another walk must not find it again. Near the
+/// base point this is 1e-14; at distance 12, 3e-4 (a thousandth of a pixel
+/// of a 1000-pixel image seen from the base point).
+const SELF_HIT: f64 = 1e-14;
 
 /// The walk restores `<O,O> = -1`, `<D,D> = 1`, `<O,D> = 0` every this
 /// many chambers (rounding drifts them by a few ulps per step).
@@ -408,6 +416,11 @@ impl RegularHoneycomb {
         let l = &*self.local;
         let (ch, sh) = (lo.cosh(), lo.sinh());
         let mut o = self.to_local * (ch * ray.origin + sh * ray.dir);
+        // A ray that starts on a part far from the base point (a shadow or
+        // reflected ray from a far hit) would meet that part again within
+        // the drift of the two walks; parts nearer than this to the start
+        // are skipped (module docs, "Accuracy").
+        let v_guard = (2.0 * SELF_HIT * o.w * o.w).exp();
         let mut d = self.to_local * (sh * ray.origin + ch * ray.dir);
         renormalise(&mut o, &mut d);
         let mut m = DMat4::IDENTITY;
@@ -468,7 +481,8 @@ impl RegularHoneycomb {
                 m: &m,
                 shadow: any,
             };
-            if let Some((v, kind)) = self.first_part(&chamber, v_exit.min(span)) {
+            let floor = (v_guard / u_acc).max(1.0);
+            if let Some((v, kind)) = self.first_part(&chamber, floor, v_exit.min(span)) {
                 let t = lo + 0.5 * (u_acc * v).ln();
                 return Some(self.hit(ray, t, &chamber, v, kind));
             }
@@ -514,16 +528,21 @@ impl RegularHoneycomb {
         None
     }
 
-    /// The first part in this chamber met at `1 < v <= window`, in
+    /// The first part in this chamber met at `floor < v <= window`, in
     /// `v = e^{2τ}`, with its class (0 for a shadow ray, which needs none).
-    fn first_part(&self, c: &Chamber, window: f64) -> Option<(f64, (HoneycombPart, u32))> {
+    fn first_part(
+        &self,
+        c: &Chamber,
+        floor: f64,
+        window: f64,
+    ) -> Option<(f64, (HoneycombPart, u32))> {
         let l = &*self.local;
         let (a, b) = (&c.a, &c.b);
         let mut found: Option<(f64, HoneycombPart)> = None;
         let in_window = |v: f64, found: &Option<(f64, HoneycombPart)>| {
-            v > 1.0 && v <= window && found.is_none_or(|(best, _)| v < best)
+            v > floor && v <= window && found.is_none_or(|(best, _)| v < best)
         };
-        let first_root = |(near, far): (f64, f64)| if near > 1.0 { near } else { far };
+        let first_root = |(near, far): (f64, f64)| if near > floor { near } else { far };
         // o and d carry a common scale λ, λ² = -<o,o>: the tube's
         // quadratic is homogeneous of degree 2 in (o, d, sinh w), the ball's
         // of degree 1 in (o, d, cosh ρ), and their roots do not change.
