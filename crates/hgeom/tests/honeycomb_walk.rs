@@ -479,3 +479,48 @@ fn rays_back_from_far_hits_are_clear() {
         );
     }
 }
+
+/// The cells a walk enters are cells of `Tessellation435`: the centre of
+/// each (the chamber matrix applied to the base centre) is one of
+/// `tessellate`'s, and rays in all directions enter every cell of depth 1.
+#[test]
+fn cells_entered_by_walks_are_those_of_tessellate() {
+    let h = honeycomb(4, 3, 5, faces_only());
+    let explicit: Vec<DVec4> = tessellate(&cube_435().unwrap(), 3)
+        .unwrap()
+        .iter()
+        .map(|c| c.polyhedron.center().to_hyperboloid())
+        .collect();
+    let near: Vec<DVec4> = explicit[..7].to_vec();
+    let mut entered = vec![false; near.len()];
+    let mut rng = SplitMix64::new(8);
+    let mut checked = 0;
+    for _ in 0..300 {
+        let ray = Ray::from_origin(rng.direction()).unwrap();
+        for step in h.walk_steps(&ray, 40).iter().filter(|s| s.wall == 3) {
+            // The chamber entered across a face plane: its cell's centre.
+            let c = step.chamber.col(3);
+            if c.w > 4.0 {
+                break;
+            }
+            assert!(
+                explicit.iter().any(|e| lorentz::distance(*e, c) < 1e-9),
+                "{c:?} is no cell of depth 3"
+            );
+            checked += 1;
+            for (k, e) in near.iter().enumerate() {
+                entered[k] |= lorentz::distance(*e, c) < 1e-9;
+            }
+        }
+    }
+    assert!(checked > 300);
+    assert!(entered[1..].iter().all(|&e| e), "{entered:?}");
+}
+
+#[test]
+fn honeycombs_can_be_shared_between_threads() {
+    fn shareable<T: Send + Sync + Clone + std::fmt::Debug>() {}
+    shareable::<RegularHoneycomb>();
+    let h: Box<dyn Shape + Send + Sync> = Box::new(honeycomb(3, 5, 3, everything(1)));
+    assert!(h.bound().is_none() && h.is_representable());
+}
