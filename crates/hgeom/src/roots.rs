@@ -85,6 +85,7 @@ pub(crate) fn hit_at(ray: &Ray, t: f64, normal_at: impl Fn(DVec4) -> DVec4) -> H
         point,
         normal,
         shading: normal,
+        part: 0,
     }
 }
 
