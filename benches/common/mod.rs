@@ -49,13 +49,17 @@ const MEASURE_FLAG: &str = "--measure-child";
 /// the forking process over `exec`), and reading `RUSAGE_CHILDREN` would mix
 /// in every earlier child.
 pub fn measure(cmd: &Command, log: &Path) -> Result<Measured, String> {
-    let me = std::env::current_exe().map_err(|e| format!("cannot find the bench executable: {e}"))?;
+    let me =
+        std::env::current_exe().map_err(|e| format!("cannot find the bench executable: {e}"))?;
     let out = std::fs::File::create(log).map_err(|e| format!("{}: {e}", log.display()))?;
     let err = out
         .try_clone()
         .map_err(|e| format!("{}: {e}", log.display()))?;
     let mut wrapper = Command::new(me);
-    wrapper.arg(MEASURE_FLAG).arg(cmd.get_program()).args(cmd.get_args());
+    wrapper
+        .arg(MEASURE_FLAG)
+        .arg(cmd.get_program())
+        .args(cmd.get_args());
     if let Some(dir) = cmd.get_current_dir() {
         wrapper.current_dir(dir);
     }
@@ -88,7 +92,11 @@ pub fn measure(cmd: &Command, log: &Path) -> Result<Measured, String> {
         _ => {
             let text = std::fs::read_to_string(log).unwrap_or_default();
             let tail: String = text.lines().rev().take(5).collect::<Vec<_>>().join(" | ");
-            Err(format!("{:?} failed ({}): {tail}", cmd.get_program(), output.status))
+            Err(format!(
+                "{:?} failed ({}): {tail}",
+                cmd.get_program(),
+                output.status
+            ))
         }
     }
 }
@@ -149,7 +157,11 @@ fn reap_measured(cmd: &mut Command) -> Result<(bool, f64, f64), String> {
     let secs = |t: libc::timeval| t.tv_sec as f64 + t.tv_usec as f64 * 1e-6;
     let ok = libc::WIFEXITED(status) && libc::WEXITSTATUS(status) == 0;
     // Linux reports kilobytes.
-    Ok((ok, secs(usage.ru_utime) + secs(usage.ru_stime), usage.ru_maxrss as f64))
+    Ok((
+        ok,
+        secs(usage.ru_utime) + secs(usage.ru_stime),
+        usage.ru_maxrss as f64,
+    ))
 }
 
 /// Render the POV-Ray source `pov` at `resolution` squared, without

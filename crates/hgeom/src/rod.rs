@@ -262,46 +262,7 @@ impl Rod {
     /// `delta^2 / tanh r`: below the hit point's own rounding `eps x0^2`
     /// for radii above ~0.005.
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        let mut best: Option<(f64, Piece)> = None;
-        let mut consider = |t: f64, piece: Piece| {
-            if t > t_min && t < t_max && best.is_none_or(|(bt, _)| t < bt) {
-                best = Some((t, piece));
-            }
-        };
-        if let Some((near, far)) = self.tube.roots(ray) {
-            for t in [near, far] {
-                if t.is_finite() {
-                    let x = ray.at(t);
-                    let slack = SEAM_SLACK * x.w;
-                    if !self.beyond_start(x, slack) && !self.beyond_end(x, slack) {
-                        consider(t, Piece::Tube);
-                    }
-                }
-            }
-        }
-        for (cap, piece) in [
-            (self.start_cap.as_ref(), Piece::StartCap),
-            (self.end_cap.as_ref(), Piece::EndCap),
-        ] {
-            let Some(cap) = cap else { continue };
-            if let Some((near, far)) = cap.sphere.roots(ray) {
-                for t in [near, far] {
-                    if t.is_finite() {
-                        let x = ray.at(t);
-                        let side = lorentz::dot(x, cap.axis);
-                        let slack = SEAM_SLACK * x.w;
-                        let outside = match piece {
-                            Piece::StartCap => side <= slack,
-                            _ => side >= -slack,
-                        };
-                        if outside {
-                            consider(t, piece);
-                        }
-                    }
-                }
-            }
-        }
-        let (t, piece) = best?;
+        let (t, piece) = self.first_piece(ray, t_min, t_max, false)?;
         let point = ray.at(t);
         let normal = match piece {
             Piece::Tube => self.tube.normal_at(point),
@@ -315,6 +276,72 @@ impl Rod {
             shading: normal,
             part: 0,
         })
+    }
+
+    /// True if the ray meets the rod in `(t_min, t_max)`: exactly
+    /// `intersect(..).is_some()`, stopping at the first candidate accepted.
+    #[inline]
+    pub fn blocks(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        self.first_piece(ray, t_min, t_max, true).is_some()
+    }
+
+    /// The nearest accepted candidate among the (at most six) roots, or with
+    /// `any` the first one accepted. A root is only looked at (its point
+    /// built, its seam side checked) if it could still win: inside
+    /// `(t_min, t_max)` and before the best so far. The winner is the one
+    /// [`Rod::intersect`] has always chosen: the least accepted root, with
+    /// every root compared (rounding can put a tangent ray's "far" root an
+    /// ulp before its "near" one).
+    fn first_piece(&self, ray: &Ray, t_min: f64, t_max: f64, any: bool) -> Option<(f64, Piece)> {
+        let mut best: Option<(f64, Piece)> = None;
+        let wanted = |t: f64, best: &Option<(f64, Piece)>| {
+            t.is_finite() && t > t_min && t < t_max && best.is_none_or(|(bt, _)| t < bt)
+        };
+        // Looks at one root, and makes it the best if it is accepted.
+        let look = |t: f64, piece: Piece, best: &mut Option<(f64, Piece)>| {
+            if !wanted(t, best) {
+                return;
+            }
+            let x = ray.at(t);
+            let slack = SEAM_SLACK * x.w;
+            let inside = match piece {
+                Piece::Tube => !self.beyond_start(x, slack) && !self.beyond_end(x, slack),
+                Piece::StartCap => self
+                    .start_cap
+                    .as_ref()
+                    .is_some_and(|c| lorentz::dot(x, c.axis) <= slack),
+                Piece::EndCap => self
+                    .end_cap
+                    .as_ref()
+                    .is_some_and(|c| lorentz::dot(x, c.axis) >= -slack),
+            };
+            if inside {
+                *best = Some((t, piece));
+            }
+        };
+        if let Some((near, far)) = self.tube.roots(ray) {
+            for t in [near, far] {
+                look(t, Piece::Tube, &mut best);
+                if any && best.is_some() {
+                    return best;
+                }
+            }
+        }
+        for (cap, piece) in [
+            (self.start_cap.as_ref(), Piece::StartCap),
+            (self.end_cap.as_ref(), Piece::EndCap),
+        ] {
+            let Some(cap) = cap else { continue };
+            if let Some((near, far)) = cap.sphere.roots(ray) {
+                for t in [near, far] {
+                    look(t, piece, &mut best);
+                    if any && best.is_some() {
+                        return best;
+                    }
+                }
+            }
+        }
+        best
     }
 }
 
@@ -337,6 +364,32 @@ mod tests {
 
     fn p(x: f64, y: f64, z: f64) -> Point {
         Point::from_coords(DVec3::new(x, y, z)).unwrap()
+    }
+
+    /// The shadow test answers exactly what the nearest-hit test finds, for
+    /// rays that meet the tube, the caps, the seam or nothing, from outside
+    /// and from inside.
+    #[test]
+    fn blocks_agrees_with_intersect() {
+        let rod = Rod::new(p(-0.3, 0.1, 0.4).into(), p(0.25, -0.1, 0.5).into(), 0.07).unwrap();
+        let inside = p(0.0, 0.0, 0.45);
+        for i in 0..2000 {
+            let a = f64::from(i) * 2.399_963_229_728_653;
+            let r = 0.8 * (f64::from(i) / 2000.0).sqrt();
+            let dir = DVec3::new(r * a.cos(), r * a.sin(), 1.0);
+            for ray in [
+                Ray::from_origin_unchecked(dir),
+                Ray::from_ball_unchecked(&inside, dir),
+            ] {
+                for (lo, hi) in [(0.0, f64::INFINITY), (1e-9, 0.45), (0.5, 2.0)] {
+                    assert_eq!(
+                        rod.blocks(&ray, lo, hi),
+                        rod.intersect(&ray, lo, hi).is_some(),
+                        "ray {i} on ({lo}, {hi})"
+                    );
+                }
+            }
+        }
     }
 
     #[test]

@@ -191,6 +191,10 @@ impl Shape for Horosphere {
 
 impl Shape for Rod {
     forward_intersect_and_move!(Rod);
+    #[inline]
+    fn blocks(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        Rod::blocks(self, ray, t_min, t_max)
+    }
     fn bound(&self) -> Option<BoundingBall> {
         bound::rod_ball(self)
     }
