@@ -28,7 +28,8 @@ const MAX_LEAF: usize = 4;
 /// One leaf box and the item it bounds.
 #[derive(Clone, Copy, Debug)]
 pub struct Leaf {
-    bounds: KleinBox,
+    lo: DVec3,
+    hi: DVec3,
     centre: DVec3,
     item: u32,
 }
@@ -37,11 +38,28 @@ impl Leaf {
     /// A box around (part of) `item`.
     pub fn new(bounds: KleinBox, item: u32) -> Leaf {
         Leaf {
-            bounds,
+            lo: bounds.lo(),
+            hi: bounds.hi(),
             centre: bounds.centre(),
             item,
         }
     }
+}
+
+/// Componentwise minimum by plain comparison: one instruction per lane,
+/// where `f64::min` also handles NaN (the build never sees one: every leaf
+/// box is a finite `KleinBox`).
+#[inline(always)]
+fn min3(a: DVec3, b: DVec3) -> DVec3 {
+    let m = |x: f64, y: f64| if x < y { x } else { y };
+    DVec3::new(m(a.x, b.x), m(a.y, b.y), m(a.z, b.z))
+}
+
+/// Componentwise maximum, as [`min3`].
+#[inline(always)]
+fn max3(a: DVec3, b: DVec3) -> DVec3 {
+    let m = |x: f64, y: f64| if x > y { x } else { y };
+    DVec3::new(m(a.x, b.x), m(a.y, b.y), m(a.z, b.z))
 }
 
 /// Subtrees with more leaves than this are built on two threads.
@@ -75,7 +93,7 @@ fn build_parallel(leaves: &mut [Leaf], depth: usize) -> (Vec<Node>, Vec<u32>) {
         || build_parallel(left, depth + 1),
         || build_parallel(right, depth + 1),
     );
-    let (lo, hi) = outward(&bounds);
+    let (lo, hi) = outward(bounds);
     let node_offset = 1 + nodes.len() as u32;
     let item_offset = items.len() as u32;
     // The root goes first; every index below it moves by one.
@@ -102,14 +120,21 @@ fn build_parallel(leaves: &mut [Leaf], depth: usize) -> (Vec<Node>, Vec<u32>) {
     (all, items)
 }
 
-fn bounds_of(leaves: &[Leaf]) -> KleinBox {
-    leaves[1..]
-        .iter()
-        .fold(leaves[0].bounds, |b, l| b.union(&l.bounds))
+/// The leaves' box, and the box of their centres, in one pass.
+fn bounds_of(leaves: &[Leaf]) -> ((DVec3, DVec3), (DVec3, DVec3)) {
+    let inf = DVec3::splat(f64::INFINITY);
+    let (mut lo, mut hi, mut clo, mut chi) = (inf, -inf, inf, -inf);
+    for l in leaves {
+        lo = min3(lo, l.lo);
+        hi = max3(hi, l.hi);
+        clo = min3(clo, l.centre);
+        chi = max3(chi, l.centre);
+    }
+    ((lo, hi), (clo, chi))
 }
 
 /// Round outwards to `f32`.
-fn outward(b: &KleinBox) -> ([f32; 3], [f32; 3]) {
+fn outward((lo, hi): (DVec3, DVec3)) -> ([f32; 3], [f32; 3]) {
     let down = |x: f64| {
         let f = x as f32;
         if f64::from(f) > x { f.next_down() } else { f }
@@ -118,7 +143,6 @@ fn outward(b: &KleinBox) -> ([f32; 3], [f32; 3]) {
         let f = x as f32;
         if f64::from(f) < x { f.next_up() } else { f }
     };
-    let (lo, hi) = (b.lo(), b.hi());
     (
         [down(lo.x), down(lo.y), down(lo.z)],
         [up(hi.x), up(hi.y), up(hi.z)],
@@ -127,19 +151,19 @@ fn outward(b: &KleinBox) -> ([f32; 3], [f32; 3]) {
 
 /// The leaves' box, and where to split them (after reordering), or `None`
 /// for a leaf.
-fn choose(leaves: &mut [Leaf], depth: usize) -> (KleinBox, Option<usize>) {
-    let bounds = bounds_of(leaves);
+fn choose(leaves: &mut [Leaf], depth: usize) -> ((DVec3, DVec3), Option<usize>) {
+    let (bounds, centres) = bounds_of(leaves);
     let n = leaves.len();
     if n <= 1 || depth >= MAX_DEPTH - 1 {
         return (bounds, None);
     }
-    let cut = best_cut(leaves, &bounds).or_else(|| (n > MAX_LEAF).then_some(n / 2));
+    let cut = best_cut(leaves, bounds, centres).or_else(|| (n > MAX_LEAF).then_some(n / 2));
     (bounds, cut)
 }
 
 fn split(nodes: &mut Vec<Node>, items: &mut Vec<u32>, leaves: &mut [Leaf], depth: usize) {
     let (bounds, cut) = choose(leaves, depth);
-    let (lo, hi) = outward(&bounds);
+    let (lo, hi) = outward(bounds);
     let index = nodes.len();
     nodes.push(Node {
         lo,
@@ -167,12 +191,12 @@ fn half_area(lo: DVec3, hi: DVec3) -> f64 {
 
 /// Reorder `leaves` and return the split point with the least estimated
 /// cost, or `None` if a leaf of them all is cheaper (and small enough).
-fn best_cut(leaves: &mut [Leaf], bounds: &KleinBox) -> Option<usize> {
+fn best_cut(
+    leaves: &mut [Leaf],
+    (lo, hi): (DVec3, DVec3),
+    (clo, chi): (DVec3, DVec3),
+) -> Option<usize> {
     let n = leaves.len();
-    let (clo, chi) = leaves.iter().fold(
-        (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
-        |(lo, hi), l| (lo.min(l.centre), hi.max(l.centre)),
-    );
     let extent = chi - clo;
     let scale = DVec3::splat(BINS as f64) / extent;
     let bin = |l: &Leaf, axis: usize| {
@@ -187,8 +211,8 @@ fn best_cut(leaves: &mut [Leaf], bounds: &KleinBox) -> Option<usize> {
     for l in leaves.iter() {
         for (axis, bins) in bins.iter_mut().enumerate() {
             let b = &mut bins[bin(l, axis)];
-            b.0 = b.0.min(l.bounds.lo());
-            b.1 = b.1.max(l.bounds.hi());
+            b.0 = min3(b.0, l.lo);
+            b.1 = max3(b.1, l.hi);
             b.2 += 1;
         }
     }
@@ -201,15 +225,15 @@ fn best_cut(leaves: &mut [Leaf], bounds: &KleinBox) -> Option<usize> {
         let mut right = [(0.0, 0usize); BINS];
         let (mut lo, mut hi, mut c) = empty;
         for b in (1..BINS).rev() {
-            lo = lo.min(bins[b].0);
-            hi = hi.max(bins[b].1);
+            lo = min3(lo, bins[b].0);
+            hi = max3(hi, bins[b].1);
             c += bins[b].2;
             right[b] = (half_area(lo, hi), c);
         }
         let (mut lo, mut hi, mut c) = empty;
         for b in 0..BINS - 1 {
-            lo = lo.min(bins[b].0);
-            hi = hi.max(bins[b].1);
+            lo = min3(lo, bins[b].0);
+            hi = max3(hi, bins[b].1);
             c += bins[b].2;
             let (right_area, nr) = right[b + 1];
             if c == 0 || nr == 0 {
@@ -222,7 +246,7 @@ fn best_cut(leaves: &mut [Leaf], bounds: &KleinBox) -> Option<usize> {
         }
     }
     let (cost, axis, first_right) = best?;
-    let area = bounds.half_area();
+    let area = half_area(lo, hi);
     let split_cost = TRAVERSAL_COST + if area > 0.0 { cost / area } else { n as f64 };
     if n <= MAX_LEAF && split_cost >= n as f64 {
         return None;
@@ -249,7 +273,7 @@ mod tests {
             DVec3::new(0.2, 0.123456789012345, 0.9999999999),
         )
         .unwrap();
-        let (lo, hi) = outward(&b);
+        let (lo, hi) = outward((b.lo(), b.hi()));
         for k in 0..3 {
             assert!(f64::from(lo[k]) <= b.lo()[k]);
             assert!(f64::from(hi[k]) >= b.hi()[k]);
