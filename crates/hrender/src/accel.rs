@@ -78,8 +78,13 @@ pub struct Accel {
     nodes: Vec<PairNode>,
     /// Leaf contents, in node order.
     items: Vec<u32>,
-    unbounded: Vec<u32>,
+    /// Items every ray tests: those without a box, and all of them when
+    /// there are too few for a hierarchy to pay.
+    direct: Vec<u32>,
 }
+
+/// At most this many leaves are tested directly, without a hierarchy.
+const DIRECT_LEAVES: usize = 2;
 
 /// The deepest a hierarchy may be: the build stops splitting there (the
 /// binned build halves the item count at least every few levels, so real
@@ -91,12 +96,24 @@ impl Accel {
     /// several boxes; its exact test then runs at most once per box the ray
     /// enters, which is harmless: a repeated test finds nothing nearer), and
     /// the items with no box at all.
-    pub fn new(leaves: Vec<Leaf>, unbounded: Vec<u32>) -> Accel {
+    pub fn new(leaves: Vec<Leaf>, mut unbounded: Vec<u32>) -> Accel {
+        if leaves.len() <= DIRECT_LEAVES {
+            // Culling a ray against so few boxes costs more than it saves
+            // (the chord's set-up alone is four divisions): test directly.
+            let mut items: Vec<u32> = leaves.iter().map(Leaf::item).collect();
+            items.dedup();
+            unbounded.extend(items);
+            return Accel {
+                nodes: Vec::new(),
+                items: Vec::new(),
+                direct: unbounded,
+            };
+        }
         let (binary, items) = build::build(leaves);
         Accel {
             nodes: pair_up(&binary),
             items,
-            unbounded,
+            direct: unbounded,
         }
     }
 
@@ -113,7 +130,7 @@ impl Accel {
     ) -> Option<(Hit, u32)> {
         let mut best = None;
         let mut limit = t_max;
-        for &i in &self.unbounded {
+        for &i in &self.direct {
             if let Some(hit) = test(i, t_min, limit) {
                 limit = hit.t;
                 best = Some((hit, i));
@@ -195,7 +212,7 @@ impl Accel {
     /// particular order, until `visit` says stop.
     #[inline]
     pub fn any(&self, ray: &Ray, t_min: f64, t_max: f64, mut visit: impl FnMut(u32) -> Step) {
-        for &i in &self.unbounded {
+        for &i in &self.direct {
             if visit(i) == Step::Stop {
                 return;
             }

@@ -44,6 +44,11 @@ impl Leaf {
             item,
         }
     }
+
+    /// The item it bounds.
+    pub fn item(&self) -> u32 {
+        self.item
+    }
 }
 
 /// Componentwise minimum by plain comparison: one instruction per lane,
