@@ -273,6 +273,18 @@ fn object(i: usize, o: &Object) -> Value {
             "dropped_triangles": m.dropped_triangles(),
             "smooth": m.smooth_angle(),
         }),
+        Shape::Honeycomb(h) => {
+            let symbol = h.surface.symbol();
+            json!({
+                "symbol": [symbol.p(), symbol.q(), symbol.r()],
+                "base_center": point(&h.surface.base_cell_center()),
+                "edges": h.style.edges,
+                "vertices": h.style.vertices,
+                "depth": h.style.depth,
+                "face_material": h.materials.faces.map(|m| m.index() + 1),
+                "colors": h.materials.palette.iter().map(|m| m.index() + 1).collect::<Vec<_>>(),
+            })
+        }
     };
     if let (Value::Object(out), Value::Object(params)) = (&mut v, params) {
         out.insert("kind".into(), Value::from(o.shape.kind_name()));

@@ -138,6 +138,7 @@ codes! {
     DegeneratePlane = "HSC0310", Error, "degenerate plane";
     ImpossibleFigure = "HSC0311", Error, "impossible figure";
     NotAnimatable = "HSC0312", Error, "transformation cannot be animated";
+    NotHyperbolic = "HSC0313", Error, "symbol of no hyperbolic honeycomb";
     // Settings.
     ZeroResolution = "HSC0401", Error, "zero resolution";
     UnknownNetType = "HSC0402", Error, "unknown net type";
