@@ -80,8 +80,8 @@ pub use cylinder::HCylinder;
 pub use error::GeomError;
 pub use fermi::{fermi_coordinates, from_fermi_coordinates};
 pub use honeycomb::{
-    CUBE_435_DIHEDRAL, HoneycombCell, MAX_TESSELLATION_CELLS, SAME_CELL_DISTANCE, cube_435,
-    cube_435_circumradius, honeycomb_435, tessellate,
+    CUBE_435_DIHEDRAL, CoxeterSimplex, HoneycombCell, MAX_TESSELLATION_CELLS, SAME_CELL_DISTANCE,
+    Schlafli, SchlafliError, cube_435, cube_435_circumradius, honeycomb_435, tessellate,
 };
 pub use horosphere::Horosphere;
 pub use isometry::Isometry;

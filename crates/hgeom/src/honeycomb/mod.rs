@@ -1,0 +1,19 @@
+//! Regular honeycombs of hyperbolic 3-space.
+//!
+//! - [`cube435`]: the {4,3,5} cube and the tessellation by face
+//!   reflections (a list of explicit cells, `Tessellation435`).
+//! - [`schlafli`]: the symbols `{p,q,r}` and their classification by the
+//!   Gram matrix of the Coxeter group `[p,q,r]`.
+//! - [`simplex`]: the characteristic simplex, the fundamental domain of
+//!   `[p,q,r]`, in the base placement.
+
+mod cube435;
+mod schlafli;
+mod simplex;
+
+pub use cube435::{
+    CUBE_435_DIHEDRAL, HoneycombCell, MAX_TESSELLATION_CELLS, SAME_CELL_DISTANCE, cube_435,
+    cube_435_circumradius, honeycomb_435, tessellate,
+};
+pub use schlafli::{Schlafli, SchlafliError};
+pub use simplex::CoxeterSimplex;
