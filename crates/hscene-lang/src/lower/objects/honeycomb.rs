@@ -23,12 +23,6 @@ const MAX_ENTRY: u64 = 1_000_000;
 /// The 15 symbols, for the help of a refused one.
 const THE_FIFTEEN: &str = "the 15 regular honeycombs of hyperbolic space are {4,3,5}, {5,3,4}, {5,3,5}, {3,5,3} (compact) and {6,3,3}, {3,3,6}, {4,3,6}, {6,3,4}, {5,3,6}, {6,3,5}, {6,3,6}, {3,6,3}, {4,4,3}, {3,4,4}, {4,4,4} (paracompact)";
 
-/// Whether the honeycomb's vertices are ideal: its vertex figure `{q,r}` is
-/// a Euclidean tiling, `1/q + 1/r = 1/2`, i.e. `(q - 2)(r - 2) = 4`.
-pub(super) fn ideal_vertices(s: Schlafli) -> bool {
-    (s.q() - 2) * (s.r() - 2) == 4
-}
-
 impl Lowerer<'_> {
     /// A Schläfli symbol of one of the 15 hyperbolic regular honeycombs;
     /// any other is an error on its span saying which geometry it is.
@@ -49,7 +43,7 @@ impl Lowerer<'_> {
         };
         let [p, q, r] = entries.as_slice() else {
             let what = match entries.len() {
-                2 => "a regular tiling of a plane",
+                2 => "a regular polyhedron or a regular tiling of a plane",
                 _ => "a regular polytope or honeycomb of another dimension",
             };
             self.report(
@@ -70,19 +64,21 @@ impl Lowerer<'_> {
         for (slot, entry) in whole.iter_mut().zip([p, q, r]) {
             let x = self.number(entry)?;
             // At most MAX_ENTRY, so it fits in u32.
-            *slot = self.integer_value(x, 1, MAX_ENTRY, entry.span(), "an entry of a Schläfli symbol")?
-                as u32;
+            *slot = self.integer_value(
+                x,
+                0,
+                MAX_ENTRY,
+                entry.span(),
+                "an entry of a Schläfli symbol",
+            )? as u32;
         }
         match Schlafli::new(whole[0], whole[1], whole[2]) {
             Ok(s) => Some(s),
             Err(e) => {
                 self.report(
-                    Diagnostic::new(
-                        Code::NotHyperbolic,
-                        *span,
-                        format!("no regular honeycomb of hyperbolic space has this symbol: {e}"),
-                    )
-                    .with_help(THE_FIFTEEN),
+                    Diagnostic::new(Code::NotHyperbolic, *span, e.to_string())
+                        .with_label("not a honeycomb of hyperbolic space")
+                        .with_help(THE_FIFTEEN),
                 );
                 None
             }
@@ -108,14 +104,13 @@ impl Lowerer<'_> {
         let palette = colors.unwrap_or_default();
         let nothing_asked =
             edges.is_none() && faces.is_none() && vertices.is_none() && palette.is_empty();
-        if let Some((_, span)) = vertices.filter(|_| ideal_vertices(symbol)) {
+        if let Some((_, span)) = vertices.filter(|_| symbol.has_ideal_vertices()) {
             self.report(
                 Diagnostic::new(
                     Code::IneffectiveOption,
                     span,
                     format!(
-                        "every vertex of {} is ideal (on the absolute), so `vertices` draws nothing",
-                        symbol_text(symbol)
+                        "every vertex of {symbol} is ideal (on the absolute), so `vertices` draws nothing"
                     ),
                 )
                 .with_help("its edges run out to the absolute; remove `vertices`, or draw the edges with `edges = w`"),
@@ -149,16 +144,13 @@ impl Lowerer<'_> {
                     GeomError::TooManyCells { limit } => Diagnostic::new(
                         Code::InvalidValue,
                         span,
-                        format!(
-                            "{} at this depth has more than {limit} cells",
-                            symbol_text(symbol)
-                        ),
+                        format!("{symbol} at this depth has more than {limit} cells"),
                     )
                     .with_help("use a smaller depth, or none: without `depth` the whole honeycomb is drawn by walking, at no cost per cell"),
                     other => Diagnostic::new(
                         Code::ImpossibleFigure,
                         span,
-                        format!("cannot build {}: {other}", symbol_text(symbol)),
+                        format!("cannot build {symbol}: {other}"),
                     )
                     .with_help("edges and vertices must be thinner than the cells (see docs/honeycombs.md)"),
                 };
@@ -167,9 +159,4 @@ impl Lowerer<'_> {
             }
         }
     }
-}
-
-/// `{p,q,r}` as written.
-fn symbol_text(s: Schlafli) -> String {
-    format!("{{{},{},{}}}", s.p(), s.q(), s.r())
 }

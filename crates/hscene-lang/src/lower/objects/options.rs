@@ -193,9 +193,12 @@ impl Lowerer<'_> {
             ok = false;
         }
         let drawn = out.wireframe.is_some() || out.edges.is_some();
-        let useless = options
-            .iter()
-            .find(|(k, _)| option(&k.text) == Some(ObjectOption::EdgeMaterial) && !drawn);
+        // An `edge_material` the object does not take was refused above.
+        let useless = options.iter().find(|(k, _)| {
+            option(&k.text) == Some(ObjectOption::EdgeMaterial)
+                && accepted.contains(&ObjectOption::EdgeMaterial)
+                && !drawn
+        });
         if let Some((key, _)) = useless {
             self.report(
                 Diagnostic::new(
