@@ -1,0 +1,28 @@
+// The order-4 dodecahedral honeycomb {5,3,4} seen from inside a cell: dodecahedra,
+// 4 around every edge (dihedral angle 90 degrees); at every vertex the vertex
+// figure is an octahedron (6 edges, 8 cells).
+// Faces are translucent glass, edges solid rods (docs/honeycombs.md).
+Globals {
+    resolution = (400, 400);
+    from = (0.02, 0.03, 0.01);
+    to = (0.1, 0.14, 0.4);
+    fov = 100;
+    background = (0, 0, 0);
+    ambient = (0.6, 0.6, 0.6);
+    recursion_depth = 8;
+}
+
+BRDFs {
+    edge: ambient = (0.38, 0.32, 0.2), diffuse = (0.95, 0.8, 0.5),
+          specular = (1, 1, 1), shininess = 40;
+    glass: ambient = (0.05, 0.175, 0.15), diffuse = (0.07, 0.245, 0.21),
+           trans = 0.72;
+}
+
+Lights {
+    (0.02, 0.03, 0.01), (4, 4, 4), (3, 3, 3);
+}
+
+Objects {
+    Honeycomb {5,3,4}, #edge, edges = 0.025, faces = #glass, vertices = 0.045;
+}

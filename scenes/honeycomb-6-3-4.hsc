@@ -1,0 +1,32 @@
+// The order-4 hexagonal tiling honeycomb {6,3,4} seen from inside a cell: hexagonal tilings,
+// 4 around every edge (dihedral angle 90 degrees); at every vertex the vertex
+// figure is an octahedron (6 edges, 8 cells).
+// The cells are hexagonal tilings inscribed in horospheres: infinitely
+// many faces each, touching the absolute at the cell's ideal centre.
+// The origin is the centre of a face (the plane x = 0); the eye sits
+// inside the cell on its x < 0 side, looking along the face.
+// Faces are translucent glass, edges solid rods (docs/honeycombs.md).
+Globals {
+    resolution = (400, 400);
+    from = (-0.25, 0.02, 0.03);
+    to = (-0.25, 0.12, 0.3);
+    fov = 100;
+    background = (0, 0, 0);
+    ambient = (0.6, 0.6, 0.6);
+    recursion_depth = 8;
+}
+
+BRDFs {
+    edge: ambient = (0.38, 0.32, 0.16), diffuse = (0.95, 0.8, 0.4),
+          specular = (1, 1, 1), shininess = 40;
+    glass: ambient = (0.125, 0.075, 0.225), diffuse = (0.175, 0.105, 0.315),
+           trans = 0.72;
+}
+
+Lights {
+    (-0.25, 0.02, 0.03), (4, 4, 4), (3, 3, 3);
+}
+
+Objects {
+    Honeycomb {6,3,4}, #edge, edges = 0.025, faces = #glass, vertices = 0.045;
+}
