@@ -89,6 +89,9 @@ pub enum GeomError {
         /// The cell budget.
         limit: usize,
     },
+    /// A honeycomb's colouring needs at least one class.
+    #[error("a honeycomb needs at least 1 cell class, got 0")]
+    NoCellClasses,
     /// A mesh triangle refers to a vertex that does not exist.
     #[error("triangle {triangle} refers to vertex {index}, but the mesh has {vertices} vertices")]
     MeshIndexOutOfRange {

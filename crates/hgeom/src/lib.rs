@@ -23,7 +23,7 @@
 //! | `polygons` | predefined polygons: regular, ideal, Lambert, Saccheri |
 //! | `polyhedron` | [`Polyhedron`], [`Platonic`] solids, uniform and star figures, [`unique_edges`] |
 //! | `mesh` | [`TriangleMesh`]: triangle meshes with a Klein-coordinate BVH and a watertight exact test |
-//! | `honeycomb` | the {4,3,5} cube and tessellation by reflections |
+//! | `honeycomb` | the {4,3,5} cube and tessellation by reflections; [`Schlafli`] symbols; [`RegularHoneycomb`], any of the 15 regular honeycombs traced by walking the Coxeter simplex |
 //! | `error` | [`GeomError`] |
 //! | `shape` | the [`Shape`] and [`Solid`] traits every surface implements |
 //! | `ops` | `Isometry * Point`, `Isometry * Isometry` |
@@ -80,8 +80,10 @@ pub use cylinder::HCylinder;
 pub use error::GeomError;
 pub use fermi::{fermi_coordinates, from_fermi_coordinates};
 pub use honeycomb::{
-    CUBE_435_DIHEDRAL, CoxeterSimplex, HoneycombCell, MAX_TESSELLATION_CELLS, SAME_CELL_DISTANCE,
-    Schlafli, SchlafliError, cube_435, cube_435_circumradius, honeycomb_435, tessellate,
+    CUBE_435_DIHEDRAL, CoxeterSimplex, DEFAULT_HORIZON, HoneycombCell, HoneycombPart,
+    HoneycombStyle, MAX_TESSELLATION_CELLS, MAX_WALK_STEPS, RegularHoneycomb, SAME_CELL_DISTANCE,
+    Schlafli, SchlafliError, WalkStats, cube_435, cube_435_circumradius, decode_honeycomb_part,
+    honeycomb_435, tessellate,
 };
 pub use horosphere::Horosphere;
 pub use isometry::Isometry;

@@ -296,6 +296,7 @@ impl HPlane {
             point: ray.at(t),
             normal: self.normal,
             shading: self.normal,
+            part: 0,
         })
     }
 

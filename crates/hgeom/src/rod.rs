@@ -313,6 +313,7 @@ impl Rod {
             point,
             normal,
             shading: normal,
+            part: 0,
         })
     }
 }

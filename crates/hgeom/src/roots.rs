@@ -45,6 +45,7 @@ pub(crate) fn hit_at_first_root(
         point,
         normal,
         shading: normal,
+        part: 0,
     })
 }
 

@@ -11,6 +11,7 @@ use glam::DVec4;
 
 use crate::bound::{self, BoundingBall};
 use crate::cylinder::HCylinder;
+use crate::honeycomb::RegularHoneycomb;
 use crate::horosphere::Horosphere;
 use crate::isometry::Isometry;
 use crate::lorentz;
@@ -229,6 +230,23 @@ impl Shape for TriangleMesh {
         self.placement().translation_part().is_representable()
             && centre.is_finite()
             && radius.is_finite()
+    }
+}
+
+impl Shape for RegularHoneycomb {
+    forward_intersect_and_move!(RegularHoneycomb);
+    /// The walk stops at the first part it finds.
+    #[inline]
+    fn blocks(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        RegularHoneycomb::blocks(self, ray, t_min, t_max)
+    }
+    /// Unbounded: the honeycomb fills space (even a depth-limited one may
+    /// reach the absolute at ideal vertices); the walk bounds itself.
+    fn bound(&self) -> Option<BoundingBall> {
+        None
+    }
+    fn is_representable(&self) -> bool {
+        RegularHoneycomb::is_representable(self)
     }
 }
 

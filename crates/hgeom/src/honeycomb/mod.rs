@@ -1,15 +1,23 @@
 //! Regular honeycombs of hyperbolic 3-space.
 //!
-//! - [`cube435`]: the {4,3,5} cube and the tessellation by face
-//!   reflections (a list of explicit cells, `Tessellation435`).
-//! - [`schlafli`]: the symbols `{p,q,r}` and their classification by the
-//!   Gram matrix of the Coxeter group `[p,q,r]`.
-//! - [`simplex`]: the characteristic simplex, the fundamental domain of
+//! - `cube435`: the {4,3,5} cube and the tessellation by face reflections
+//!   (a list of explicit cells, `Tessellation435`).
+//! - `schlafli`: the symbols `{p,q,r}` and their classification by the Gram
+//!   matrix of the Coxeter group `[p,q,r]`.
+//! - `simplex`: the characteristic simplex, the fundamental domain of
 //!   `[p,q,r]`, in the base placement.
+//! - `cells`: the cells within a depth, the cells around a part, the
+//!   colouring rule.
+//! - `style`: what is drawn; the parts a hit reports.
+//! - `walk`: [`RegularHoneycomb`], the honeycomb as one surface traced by
+//!   walking each ray through the simplex.
 
+mod cells;
 mod cube435;
 mod schlafli;
 mod simplex;
+mod style;
+mod walk;
 
 pub use cube435::{
     CUBE_435_DIHEDRAL, HoneycombCell, MAX_TESSELLATION_CELLS, SAME_CELL_DISTANCE, cube_435,
@@ -17,3 +25,5 @@ pub use cube435::{
 };
 pub use schlafli::{Schlafli, SchlafliError};
 pub use simplex::CoxeterSimplex;
+pub use style::{HoneycombPart, HoneycombStyle, decode_honeycomb_part};
+pub use walk::{DEFAULT_HORIZON, MAX_WALK_STEPS, RegularHoneycomb, WalkStats};

@@ -245,6 +245,7 @@ impl TriangleMesh {
             point,
             normal: c.normal,
             shading,
+            part: 0,
         }
     }
 }

@@ -1,0 +1,603 @@
+//! [`RegularHoneycomb`]: a regular honeycomb `{p,q,r}` traced by walking
+//! the ray through the characteristic simplex.
+//!
+//! **The walk.** The ray is moved into the honeycomb's frame and its start
+//! folded into the simplex `C = {X : <X,n_i> >= 0}` (reflect in a wall it
+//! is behind until it is behind none: each reflection brings the point
+//! strictly closer to `C`). Inside `C`, along `X(τ) = cosh τ O + sinh τ D`,
+//! `<X(τ),n_i> = a_i cosh τ + b_i sinh τ` with `a_i = <O,n_i> >= 0`,
+//! `b_i = <D,n_i>`, so the ray leaves through wall `i` at
+//! `tanh τ_i = -a_i / b_i` (only walls with `b_i < 0` and a value below 1):
+//! the exit is the wall with the least `tanh τ_i`, one `atanh` per step.
+//! The ray is then re-based at the exit point
+//! (`cosh τ = 1/sqrt(1 - s²)`, `sinh τ = s cosh τ`) and reflected in that
+//! wall, *the ray, not the scene*: it stays in the base simplex, where all
+//! coordinates are of order 1, and the arc lengths add up to the distance
+//! along the original ray. After every step `<O,O> = -1`, `<D,D> = 1`,
+//! `<O,D> = 0` are restored. The product `M` of the reflections maps the
+//! simplex to the chamber the ray is in; it carries normals back.
+//!
+//! **The parts in one chamber.** For a point `X` of `C` and any `g` of the
+//! group, `d(X, gY) >= d(X, Y)` for `Y` in `C` (a geodesic from `X` to `gY`
+//! folded back into `C` is no longer than it is). So the nearest edge,
+//! vertex and face to a point of `C` are those of `C` itself: the edge
+//! `v0 v1`, the vertex `v0`, the face piece `v0 v1 v2` in `m3`. Within `C`:
+//!
+//! - *edge*: the tube of radius `w` about the line `v0 v1 = m2 ∩ m3`. The
+//!   foot of every point of `C` on that line lies on the segment: `m0` is
+//!   orthogonal to the edge at `v1` with `C` on the `v0` side, and every
+//!   direction of `C` at `v0` (towards `v1`, `v2`, `v3`) makes an angle
+//!   below 90° with the edge (angles of right triangles), so no caps are
+//!   needed. With the orthonormal pair `N1 = n3`,
+//!   `N2 = (n2 + cos(π/r) n3)/sin(π/r)` orthogonal to the line,
+//!   `sinh² d = <X,N1>² + <X,N2>²`, and both products are combinations of
+//!   the `a_i`, `b_i` already at hand: the tube is a quadratic in `e^{2τ}`
+//!   ([`HCylinder`](crate::HCylinder)'s).
+//! - *vertex*: the ball `-<X,v0> = cosh ρ`, a quadratic in `e^τ`; not drawn
+//!   at an ideal `v0`.
+//! - *face*: the face piece is the wall `m3` of `C` itself, so the ray
+//!   meets a face exactly when it leaves `C` through `m3`: no test at all.
+//!
+//! **Where the walk stops.** At `t_max`, at the *horizon* (distance
+//! [`DEFAULT_HORIZON`] from the origin of the frame the shape is in, which
+//! in a renderer is the eye; see [`RegularHoneycomb::with_horizon`]), where
+//! a depth-limited honeycomb can reach no listed cell any more, or after
+//! [`MAX_WALK_STEPS`] chambers. Nothing is drawn beyond: the ray misses (the
+//! background shows). Near the horizon of 15 a 1000-pixel image resolves
+//! nothing anyway: a cell of size 1 subtends `1/sinh 15 ≈ 6e-7` rad.
+//! [`RegularHoneycomb::horizon_for_pixel`] gives the distance where the
+//! smallest feature falls below a pixel.
+//!
+//! **Accuracy.** The hit point is the original ray's point at the summed arc
+//! length, so only `t` carries the walk's rounding; the local ray drifts by
+//! the rounding of each step, amplified like `e^{Δt}` by the divergence of
+//! geodesics (measured against a 320-bit walk in
+//! `tests/honeycomb_walk.rs`).
+
+use std::sync::Arc;
+
+use glam::{DMat4, DVec4};
+
+use crate::error::GeomError;
+use crate::isometry::Isometry;
+use crate::lorentz;
+use crate::point::Point;
+use crate::ray::{Hit, Ray};
+use crate::roots::exp_roots;
+
+use super::cells::{CellSet, Shells, orbit};
+use super::schlafli::Schlafli;
+use super::simplex::CoxeterSimplex;
+use super::style::{HoneycombPart, HoneycombStyle, encode_part};
+
+/// The default horizon: the walk stops at this distance from the origin of
+/// the frame (module docs).
+pub const DEFAULT_HORIZON: f64 = 15.0;
+
+/// The most chambers one ray may cross; a ray that would cross more (one
+/// aimed within `e^{-15}` of an ideal vertex, spiralling up its cusp) misses.
+pub const MAX_WALK_STEPS: u32 = 200_000;
+
+/// The most reflections that fold a ray's start into the simplex.
+const MAX_FOLD_STEPS: u32 = 100_000;
+
+/// Counts from one walk.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct WalkStats {
+    /// Chambers (copies of the simplex) entered, the first included.
+    pub chambers: u32,
+    /// Cells entered (crossings of face planes, plus the first cell).
+    pub cells: u32,
+    /// Reflections that folded the start into the simplex.
+    pub folds: u32,
+}
+
+/// What the walk needs of the symbol, in the base simplex.
+#[derive(Clone, Debug)]
+struct Local {
+    n: [DVec4; 4],
+    /// `N2 = k2 n2 + k3 n3`: the edge line's second normal.
+    k2: f64,
+    k3: f64,
+    /// `sinh²` of the edge radius.
+    sinh2_edge: Option<f64>,
+    /// `v0` and `cosh` of the vertex radius (finite vertices only).
+    vertex: Option<(DVec4, f64)>,
+    /// The centres of the cells around the edge, the vertex and the face.
+    edge_cells: Vec<DVec4>,
+    vertex_cells: Vec<DVec4>,
+    face_cells: [DVec4; 2],
+    /// Which mirror is a face plane.
+    reflections: [DMat4; 4],
+}
+
+/// A regular honeycomb `{p,q,r}` of hyperbolic space as one surface: edges
+/// as rods, faces as polygons, vertices as balls, found by walking each
+/// ray through the Coxeter group's fundamental simplex (module docs), so a
+/// ray costs the chambers it crosses, not the cells in the scene.
+///
+/// Invariants: `to_world` is the Lorentz matrix of `placement` and
+/// `to_local` its inverse; `style` is valid; `cells` holds the
+/// depth-limited set when `style.depth` is set.
+#[derive(Clone, Debug)]
+pub struct RegularHoneycomb {
+    symbol: Schlafli,
+    style: HoneycombStyle,
+    local: Arc<Local>,
+    cells: Option<Arc<CellSet>>,
+    shells: Shells,
+    placement: Isometry,
+    to_world: DMat4,
+    to_local: DMat4,
+    horizon: f64,
+    cosh_horizon: f64,
+    /// `cosh` of the radius of a ball about the base point holding every
+    /// part of a depth-limited honeycomb with finite cells and vertices.
+    cosh_reach: Option<f64>,
+}
+
+/// The inverse of a Lorentz matrix: `J Lᵀ J`.
+fn lorentz_inverse(l: DMat4) -> DMat4 {
+    let j = DMat4::from_diagonal(DVec4::new(1.0, 1.0, 1.0, -1.0));
+    j * l.transpose() * j
+}
+
+impl RegularHoneycomb {
+    /// The honeycomb `symbol` with its base cell centred at the origin (the
+    /// face centre when the cells are horosphere-inscribed; see
+    /// [`CoxeterSimplex`]): for `{4,3,5}` the cell of
+    /// [`cube_435`](super::cube_435), axis-aligned.
+    ///
+    /// Errors: those of [`HoneycombStyle::validate`]; with a depth,
+    /// [`GeomError::TooManyCells`] when the cells within it number more
+    /// than [`MAX_TESSELLATION_CELLS`](super::MAX_TESSELLATION_CELLS) (for
+    /// `{4,3,5}`, depth 8 and beyond), or for any depth above 0 when the
+    /// cells are horosphere-inscribed (each has infinitely many
+    /// neighbours).
+    pub fn new(symbol: Schlafli, style: HoneycombStyle) -> Result<RegularHoneycomb, GeomError> {
+        style.validate()?;
+        let simplex = CoxeterSimplex::new(symbol);
+        let n = simplex.normals();
+        let v = simplex.vertices();
+        let reflections = [0, 1, 2, 3].map(|i| simplex.reflection(i));
+        let rad = std::f64::consts::PI / f64::from(symbol.r());
+        let too_many = GeomError::TooManyCells {
+            limit: super::MAX_TESSELLATION_CELLS,
+        };
+        let edge_cells = orbit(v[3], &reflections[2..]).ok_or(too_many.clone())?;
+        let vertex_cells = if simplex.ideal()[0] {
+            Vec::new()
+        } else {
+            orbit(v[3], &reflections[1..]).ok_or(too_many)?
+        };
+        let local = Local {
+            n,
+            k2: 1.0 / rad.sin(),
+            k3: rad.cos() / rad.sin(),
+            sinh2_edge: style.edges.map(|w| w.sinh() * w.sinh()),
+            vertex: match (style.vertices, simplex.ideal()[0]) {
+                (Some(r), false) => Some((v[0], r.cosh())),
+                _ => None,
+            },
+            edge_cells,
+            vertex_cells,
+            face_cells: [v[3], reflections[3] * v[3]],
+            reflections,
+        };
+        let cells = match style.depth {
+            Some(depth) => Some(Arc::new(CellSet::build(&simplex, depth)?)),
+            None => None,
+        };
+        // Every part of a listed compact cell lies within its circumradius
+        // (plus the radii) of its centre.
+        let cosh_reach = match &cells {
+            Some(set) if !simplex.ideal()[0] && !simplex.ideal()[3] => {
+                let circum = lorentz::distance(v[3], v[0]);
+                let pad = style
+                    .edges
+                    .unwrap_or(0.0)
+                    .max(style.vertices.unwrap_or(0.0));
+                Some((set.reach() + circum + pad).cosh())
+            }
+            _ => None,
+        };
+        Ok(RegularHoneycomb {
+            symbol,
+            style,
+            local: Arc::new(local),
+            cells,
+            shells: Shells::new(&simplex),
+            placement: Isometry::IDENTITY,
+            to_world: DMat4::IDENTITY,
+            to_local: DMat4::IDENTITY,
+            horizon: DEFAULT_HORIZON,
+            cosh_horizon: DEFAULT_HORIZON.cosh(),
+            cosh_reach,
+        })
+    }
+
+    /// The same honeycomb walked only out to `distance` from the origin of
+    /// its frame (module docs).
+    ///
+    /// Errors: [`GeomError::BadRadius`] unless `0 < distance <= 36`
+    /// (beyond, f64 holds no ball point).
+    pub fn with_horizon(mut self, distance: f64) -> Result<RegularHoneycomb, GeomError> {
+        if !(distance > 0.0 && distance <= 36.0) {
+            return Err(GeomError::BadRadius(distance));
+        }
+        self.horizon = distance;
+        self.cosh_horizon = distance.cosh();
+        Ok(self)
+    }
+
+    /// The distance from the origin of the frame where the walk stops.
+    pub fn horizon(&self) -> f64 {
+        self.horizon
+    }
+
+    /// The distance from an eye at the origin beyond which the smallest
+    /// feature of the honeycomb (the distance from an edge's midpoint to the
+    /// face centre, doubled, or the rod's diameter if smaller) subtends
+    /// less than `pixel_angle` radians: a circle of radius `t` has
+    /// circumference `2π sinh t`, so a feature of size `s` at distance `t`
+    /// subtends `s / sinh t`, and `t = asinh(s / pixel_angle)`. Capped at
+    /// 36.
+    pub fn horizon_for_pixel(&self, pixel_angle: f64) -> f64 {
+        let v = CoxeterSimplex::new(self.symbol).vertices();
+        let mut size = 2.0 * lorentz::distance(v[1], v[2]);
+        if let Some(w) = self.style.edges {
+            size = size.min(2.0 * w);
+        }
+        (size / pixel_angle).asinh().clamp(f64::MIN_POSITIVE, 36.0)
+    }
+
+    /// The Schläfli symbol.
+    pub fn symbol(&self) -> Schlafli {
+        self.symbol
+    }
+
+    /// The style it was built with.
+    pub fn style(&self) -> HoneycombStyle {
+        self.style
+    }
+
+    /// The placement: the isometry from the base placement to this one.
+    pub fn placement(&self) -> Isometry {
+        self.placement
+    }
+
+    /// The base point after placement: the centre of the base cell, or the
+    /// centre of one of its faces when the cells are horosphere-inscribed
+    /// (their centres are ideal).
+    pub fn base_cell_center(&self) -> Point {
+        self.placement.translation_part()
+    }
+
+    /// The image under `iso` (composed with the placement).
+    pub fn transformed(&self, iso: &Isometry) -> RegularHoneycomb {
+        let placement = iso.compose(&self.placement);
+        let to_world = placement.to_lorentz();
+        RegularHoneycomb {
+            placement,
+            to_world,
+            to_local: lorentz_inverse(to_world),
+            ..self.clone()
+        }
+    }
+
+    /// True if the placement and its matrices are finite and usable.
+    pub fn is_representable(&self) -> bool {
+        self.placement.translation_part().is_representable()
+            && self.to_world.is_finite()
+            && self.to_local.is_finite()
+    }
+
+    /// The nearest hit in `(t_min, t_max)`.
+    ///
+    /// # Accuracy
+    ///
+    /// The hit point is the ray's point at `t`; `t` agrees with explicit
+    /// polygons, rods and balls of the same cells to 1e-9
+    /// (`walk_matches_explicit_cells` in `tests/honeycomb_walk.rs`).
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        self.walk(ray, t_min, t_max, false, &mut WalkStats::default())
+    }
+
+    /// True if the ray meets a part in `(t_min, t_max)` (the shadow test:
+    /// the walk stops at the first part found).
+    pub fn blocks(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        self.walk(ray, t_min, t_max, true, &mut WalkStats::default())
+            .is_some()
+    }
+
+    /// [`RegularHoneycomb::intersect`] with the counts of the walk.
+    pub fn intersect_with_stats(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+    ) -> (Option<Hit>, WalkStats) {
+        let mut stats = WalkStats::default();
+        let hit = self.walk(ray, t_min, t_max, false, &mut stats);
+        (hit, stats)
+    }
+
+    /// The arc lengths of the original ray inside the horizon and (with a
+    /// depth) the ball that holds every listed cell, clipped to
+    /// `(t_min, t_max)`.
+    fn window(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<(f64, f64)> {
+        let mut lo = t_min.max(0.0);
+        let mut hi = t_max;
+        // -<X(t),C> = a cosh t + b sinh t = k is (a+b) u² - 2k u + (a-b) = 0
+        // in u = e^t; a ± b > 0 for a future C (<O ± D, C> of null vectors).
+        let mut clip = |c: DVec4, k: f64| {
+            let a = -lorentz::dot(ray.origin, c);
+            let b = -lorentz::dot(ray.dir, c);
+            let (t_in, t_out) = exp_roots(a + b, k, a - b)?;
+            lo = lo.max(t_in);
+            hi = hi.min(t_out);
+            Some(())
+        };
+        clip(DVec4::W, self.cosh_horizon)?;
+        if let Some(k) = self.cosh_reach {
+            clip(self.to_world.col(3), k)?;
+        }
+        (lo < hi).then_some((lo, hi))
+    }
+
+    fn walk(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+        any: bool,
+        stats: &mut WalkStats,
+    ) -> Option<Hit> {
+        let (lo, hi) = self.window(ray, t_min, t_max)?;
+        let l = &*self.local;
+        let (ch, sh) = (lo.cosh(), lo.sinh());
+        let mut o = self.to_local * (ch * ray.origin + sh * ray.dir);
+        let mut d = self.to_local * (sh * ray.origin + ch * ray.dir);
+        renormalise(&mut o, &mut d);
+        let mut m = DMat4::IDENTITY;
+        loop {
+            let (i, a) = (0..4)
+                .map(|i| (i, lorentz::dot(o, l.n[i])))
+                .fold((0, f64::INFINITY), |b, x| if x.1 < b.1 { x } else { b });
+            if a >= 0.0 {
+                break;
+            }
+            if stats.folds >= MAX_FOLD_STEPS {
+                return None;
+            }
+            stats.folds += 1;
+            o = reflect(o, l.n[i]);
+            d = reflect(d, l.n[i]);
+            m *= l.reflections[i];
+        }
+        let mut t = lo;
+        let mut last = 4;
+        stats.cells = 1;
+        while stats.chambers < MAX_WALK_STEPS {
+            stats.chambers += 1;
+            let a = l.n.map(|n| lorentz::dot(o, n));
+            let b = l.n.map(|n| lorentz::dot(d, n));
+            let mut exit = 4;
+            let mut s_min = 1.0;
+            for i in 0..4 {
+                if i != last && b[i] < 0.0 {
+                    // Rounding can leave the start a hair behind a wall
+                    // (a_i ~ -1e-17): that exit is immediate.
+                    let s = (-a[i] / b[i]).max(0.0);
+                    if s < s_min {
+                        s_min = s;
+                        exit = i;
+                    }
+                }
+            }
+            let span = hi - t;
+            let tau_exit = if exit < 4 {
+                s_min.atanh()
+            } else {
+                f64::INFINITY
+            };
+            let window = tau_exit.min(span);
+            let floor = (t_min - t).max(0.0);
+            let chamber = Chamber {
+                o,
+                d,
+                a,
+                b,
+                exit,
+                tau_exit,
+                m: &m,
+                shadow: any,
+            };
+            if let Some((tau, kind)) = self.first_part(&chamber, floor, window) {
+                return Some(self.hit(ray, t + tau, &chamber, tau, kind));
+            }
+            if tau_exit >= span {
+                return None;
+            }
+            let c = 1.0 / (1.0 - s_min * s_min).sqrt();
+            let s = s_min * c;
+            let n = l.n[exit];
+            let mut o2 = c * o + s * d;
+            // The exit point lies on the wall: put it there exactly.
+            o2 -= lorentz::dot(o2, n) * n;
+            let d2 = reflect(s * o + c * d, n);
+            o = o2;
+            d = d2;
+            renormalise(&mut o, &mut d);
+            m *= l.reflections[exit];
+            t += tau_exit;
+            last = exit;
+            if exit == 3 {
+                stats.cells += 1;
+            }
+        }
+        None
+    }
+
+    /// The first part in this chamber met at `floor < τ <= window`, with
+    /// its class (0 for a shadow ray, which needs none).
+    fn first_part(
+        &self,
+        c: &Chamber,
+        floor: f64,
+        window: f64,
+    ) -> Option<(f64, (HoneycombPart, u32))> {
+        let l = &*self.local;
+        let (a, b) = (&c.a, &c.b);
+        let mut found: Option<(f64, HoneycombPart)> = None;
+        let in_window = |tau: f64, found: &Option<(f64, HoneycombPart)>| {
+            tau > floor && tau <= window && found.is_none_or(|(best, _)| tau < best)
+        };
+        let first_root = |(near, far): (f64, f64)| if near > floor { near } else { far };
+        if let Some(sinh2) = l.sinh2_edge {
+            let o = [a[3], l.k2 * a[2] + l.k3 * a[3]];
+            let v = [b[3], l.k2 * b[2] + l.k3 * b[3]];
+            if let Some(tau) = tube_roots(o, v, sinh2).map(first_root)
+                && in_window(tau, &found)
+                && self.present(&l.edge_cells, c.m)
+            {
+                found = Some((tau, HoneycombPart::Edge));
+            }
+        }
+        if let Some((v0, cosh_r)) = l.vertex {
+            // -<X(τ),v0> = α cosh τ + β sinh τ = cosh ρ.
+            let alpha = -lorentz::dot(c.o, v0);
+            let beta = -lorentz::dot(c.d, v0);
+            if let Some(tau) = exp_roots(alpha + beta, cosh_r, alpha - beta).map(first_root)
+                && in_window(tau, &found)
+                && self.present(&l.vertex_cells, c.m)
+            {
+                found = Some((tau, HoneycombPart::Vertex));
+            }
+        }
+        if self.style.faces
+            && c.exit == 3
+            && in_window(c.tau_exit, &found)
+            && self.present(&l.face_cells, c.m)
+        {
+            found = Some((c.tau_exit, HoneycombPart::Face));
+        }
+        let (tau, kind) = found?;
+        let class = if c.shadow { 0 } else { self.class(kind, c.m) };
+        Some((tau, (kind, class)))
+    }
+
+    /// True if one of the cells (local centres mapped by `m`) is drawn.
+    fn present(&self, cells: &[DVec4], m: &DMat4) -> bool {
+        match &self.cells {
+            None => true,
+            Some(set) => cells.iter().any(|c| set.layer(*m * *c).is_some()),
+        }
+    }
+
+    /// The class of a part: the least rank of its drawn cells, modulo the
+    /// number of classes.
+    fn class(&self, kind: HoneycombPart, m: &DMat4) -> u32 {
+        let k = self.style.cell_classes;
+        if k <= 1 {
+            return 0;
+        }
+        let l = &*self.local;
+        let cells: &[DVec4] = match kind {
+            HoneycombPart::Edge => &l.edge_cells,
+            HoneycombPart::Vertex => &l.vertex_cells,
+            HoneycombPart::Face => &l.face_cells,
+        };
+        let rank = cells
+            .iter()
+            .filter_map(|c| {
+                let c = *m * *c;
+                match &self.cells {
+                    Some(set) => set.layer(c).map(i64::from),
+                    None => Some(self.shells.rank(c)),
+                }
+            })
+            .min()
+            .unwrap_or(0);
+        // rem_euclid by a positive k is in 0..k, which fits u32.
+        rank.rem_euclid(i64::from(k)) as u32
+    }
+
+    fn hit(&self, ray: &Ray, t: f64, c: &Chamber, tau: f64, kind: (HoneycombPart, u32)) -> Hit {
+        let l = &*self.local;
+        let x = tau.cosh() * c.o + tau.sinh() * c.d;
+        let local_normal = match kind.0 {
+            // Two-sided: the normal faces the side the ray comes from.
+            HoneycombPart::Face => l.n[3],
+            HoneycombPart::Edge => {
+                let n2 = l.k2 * l.n[2] + l.k3 * l.n[3];
+                let g = lorentz::dot(x, l.n[3]) * l.n[3] + lorentz::dot(x, n2) * n2;
+                g + lorentz::dot(g, x) * x
+            }
+            HoneycombPart::Vertex => match l.vertex {
+                Some((v0, _)) => -(v0 + lorentz::dot(v0, x) * x),
+                None => l.n[3],
+            },
+        };
+        let point = ray.at(t);
+        let mut normal = self.to_world * (*c.m * local_normal);
+        normal += lorentz::dot(normal, point) * point;
+        let len = lorentz::norm(normal);
+        if len > 0.0 && len.is_finite() {
+            normal /= len;
+        }
+        Hit {
+            t,
+            point,
+            normal,
+            shading: normal,
+            part: encode_part(kind.0, kind.1),
+        }
+    }
+}
+
+/// The ray in one chamber: its start and direction in the base simplex,
+/// their products with the walls, where it leaves, and the product of
+/// reflections that maps the simplex to the chamber.
+struct Chamber<'a> {
+    o: DVec4,
+    d: DVec4,
+    a: [f64; 4],
+    b: [f64; 4],
+    exit: usize,
+    tau_exit: f64,
+    m: &'a DMat4,
+    shadow: bool,
+}
+
+/// `x - 2 <x,n> n`.
+#[inline]
+fn reflect(x: DVec4, n: DVec4) -> DVec4 {
+    x - 2.0 * lorentz::dot(x, n) * n
+}
+
+/// Restores `<O,O> = -1`, `<D,D> = 1`, `<O,D> = 0` after rounding.
+#[inline]
+fn renormalise(o: &mut DVec4, d: &mut DVec4) {
+    *o /= (-lorentz::dot(*o, *o)).sqrt();
+    *d += lorentz::dot(*o, *d) * *o;
+    *d /= lorentz::dot(*d, *d).sqrt();
+}
+
+/// The roots of `c_1(τ)² + c_2(τ)² = sinh² w` with
+/// `c_i = o_i cosh τ + v_i sinh τ` (the tube), as in
+/// [`HCylinder::roots`](crate::HCylinder::roots).
+#[inline]
+fn tube_roots(o: [f64; 2], v: [f64; 2], sinh2: f64) -> Option<(f64, f64)> {
+    let p = [o[0] + v[0], o[1] + v[1]];
+    let q = [o[0] - v[0], o[1] - v[1]];
+    let a = p[0] * p[0] + p[1] * p[1];
+    let c = q[0] * q[0] + q[1] * q[1];
+    let pq = (o[0] * o[0] + o[1] * o[1]) - (v[0] * v[0] + v[1] * v[1]);
+    let k = 2.0 * sinh2 - pq;
+    if !(k > 0.0) {
+        return None;
+    }
+    let (near, far) = exp_roots(a, k, c)?;
+    Some((0.5 * near, 0.5 * far))
+}
