@@ -231,7 +231,10 @@ impl Report {
             100.0 * self.walks.hits as f64 / self.walks.rays.max(1) as f64
         );
         for (n, d) in &self.drift {
-            let _ = writeln!(s, "  drift after {n:5} reflections: {d:.1e} (max over {DRIFT_RAYS} rays)");
+            let _ = writeln!(
+                s,
+                "  drift after {n:5} reflections: {d:.1e} (max over {DRIFT_RAYS} rays)"
+            );
         }
         s
     }
@@ -240,9 +243,12 @@ impl Report {
 fn run(resolution: u32, threads: Option<usize>) -> Result<Report, String> {
     let source = scene_source(resolution);
     let compiled = hscene_lang::compile(&source);
-    let scene = compiled
-        .scene
-        .ok_or_else(|| format!("the bench scene does not compile: {:?}", compiled.diagnostics))?;
+    let scene = compiled.scene.ok_or_else(|| {
+        format!(
+            "the bench scene does not compile: {:?}",
+            compiled.diagnostics
+        )
+    })?;
     let probe = Probe::new(&scene, GRID)?;
     let honeycomb = honeycomb_in(&scene, &probe).ok_or("the scene's object is not a honeycomb")?;
     let walks = walks(&honeycomb, &probe);
@@ -284,8 +290,7 @@ fn main() -> ExitCode {
     let resolution: u32 = common::arg_value(&args, "--resolution")
         .and_then(|s| s.parse().ok())
         .unwrap_or(1000);
-    let threads: Option<usize> =
-        common::arg_value(&args, "--threads").and_then(|s| s.parse().ok());
+    let threads: Option<usize> = common::arg_value(&args, "--threads").and_then(|s| s.parse().ok());
     match run(resolution, threads) {
         Ok(report) if json => {
             println!("{}", report.json(threads));

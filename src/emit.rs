@@ -275,12 +275,13 @@ fn object(i: usize, o: &Object) -> Value {
         }),
         Shape::Honeycomb(h) => {
             let symbol = h.surface.symbol();
+            let style = h.surface.style();
             json!({
                 "symbol": [symbol.p(), symbol.q(), symbol.r()],
                 "base_center": point(&h.surface.base_cell_center()),
-                "edges": h.style.edges,
-                "vertices": h.style.vertices,
-                "depth": h.style.depth,
+                "edges": style.edges,
+                "vertices": style.vertices,
+                "depth": style.depth,
                 "face_material": h.materials.faces.map(|m| m.index() + 1),
                 "colors": h.materials.palette.iter().map(|m| m.index() + 1).collect::<Vec<_>>(),
             })

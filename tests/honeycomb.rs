@@ -23,7 +23,9 @@ fn hscene() -> Command {
 
 /// The 8-bit RGB pixels of a rendered PNG.
 fn pixels(path: &Path) -> Vec<[u8; 3]> {
-    let img = image::open(path).expect("a PNG the renderer wrote").to_rgb8();
+    let img = image::open(path)
+        .expect("a PNG the renderer wrote")
+        .to_rgb8();
     img.pixels().map(|p| p.0).collect()
 }
 
@@ -84,10 +86,7 @@ fn each_of_the_fifteen_renders_and_draws_something() {
              Objects {{ Honeycomb {{{p},{q},{r}}}, #edge, edges = 0.03, faces = #glass; }}\n"
         );
         let (img, stderr) = render(dir.path(), &format!("h{p}{q}{r}"), &source, 48);
-        assert!(
-            !stderr.contains("numeric failure"),
-            "{symbol}: {stderr}"
-        );
+        assert!(!stderr.contains("numeric failure"), "{symbol}: {stderr}");
         let lit = img.iter().filter(|px| px.iter().any(|&c| c > 8)).count();
         assert!(
             lit * 2 > img.len(),
@@ -151,19 +150,26 @@ fn depth_draws_what_tessellation435_draws() {
         let (walk, _) = render(
             dir.path(),
             &format!("walk{depth}"),
-            &scene(&format!("Honeycomb {{4,3,5}}, #edge, edges = 0.03, depth = {depth};")),
+            &scene(&format!(
+                "Honeycomb {{4,3,5}}, #edge, edges = 0.03, depth = {depth};"
+            )),
             96,
         );
         let (cells, _) = render(
             dir.path(),
             &format!("cells{depth}"),
-            &scene(&format!("Tessellation435 {depth}, #edge, wireframe = 0.03;")),
+            &scene(&format!(
+                "Tessellation435 {depth}, #edge, wireframe = 0.03;"
+            )),
             96,
         );
         let share = agreement(&walk, &cells, TOLERANCE);
         assert!(share >= AGREE, "depth {depth}: {share} of the pixels agree");
         let lit = walk.iter().filter(|px| px.iter().any(|&c| c > 8)).count();
-        assert!(lit > walk.len() / 20, "depth {depth}: only {lit} pixels lit");
+        assert!(
+            lit > walk.len() / 20,
+            "depth {depth}: only {lit} pixels lit"
+        );
     }
 }
 

@@ -239,4 +239,3 @@ pub fn pov_source(c: &Case, resolution: u32) -> String {
     let _ = resolution;
     s
 }
-

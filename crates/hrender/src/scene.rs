@@ -5,9 +5,7 @@
 
 use hgeom::glam::{DVec3, DVec4};
 use hgeom::{Hit, Isometry, Point, Ray};
-use hscene_lang::ir::{
-    self, BoxedSurface, Fog, Material, PartMaterials, Rgb, Scene, Surfaces,
-};
+use hscene_lang::ir::{self, BoxedSurface, Fog, Material, PartMaterials, Rgb, Scene, Surfaces};
 
 use crate::bvh::{Bound, Bvh, Step};
 use crate::camera::CanonicalCamera;

@@ -44,9 +44,13 @@ fn every_hyperbolic_symbol_is_one_object_with_edges_by_default() {
         let h = only_honeycomb(&s);
         let symbol = h.surface.symbol();
         assert_eq!((symbol.p(), symbol.q(), symbol.r()), (p, q, r));
-        assert_eq!(h.style.edges, Some(0.02), "{{{p},{q},{r}}}");
-        assert!(!h.style.faces && h.style.vertices.is_none() && h.style.depth.is_none());
-        assert_eq!(h.style.cell_classes, 1);
+        assert_eq!(h.surface.style().edges, Some(0.02), "{{{p},{q},{r}}}");
+        assert!(
+            !h.surface.style().faces
+                && h.surface.style().vertices.is_none()
+                && h.surface.style().depth.is_none()
+        );
+        assert_eq!(h.surface.style().cell_classes, 1);
         assert_eq!(s.objects[0].shape.primitive_count(), 1);
         assert_eq!(s.objects[0].shape.kind_name(), "honeycomb");
         assert_eq!(s.objects[0].material, material(&s, "edge"));
@@ -62,27 +66,27 @@ fn options_become_the_style_and_the_materials_of_the_parts() {
         "Honeycomb {5,3,4}, #edge, edges = 0.03, faces = #glass, vertices = 0.05, depth = 2;",
     );
     let h = only_honeycomb(&s);
-    assert_eq!(h.style.edges, Some(0.03));
-    assert!(h.style.faces);
-    assert_eq!(h.style.vertices, Some(0.05));
-    assert_eq!(h.style.depth, Some(2));
+    assert_eq!(h.surface.style().edges, Some(0.03));
+    assert!(h.surface.style().faces);
+    assert_eq!(h.surface.style().vertices, Some(0.05));
+    assert_eq!(h.surface.style().depth, Some(2));
     assert_eq!(h.materials.faces, Some(material(&s, "glass")));
     assert!(h.materials.palette.is_empty());
 
     // `wireframe` is `edges`; faces alone draw no edges.
     let s = scene("Honeycomb {4,3,5}, #edge, wireframe = 0.01;");
-    assert_eq!(only_honeycomb(&s).style.edges, Some(0.01));
+    assert_eq!(only_honeycomb(&s).surface.style().edges, Some(0.01));
     let s = scene("Honeycomb {4,3,5}, #edge, faces = #glass;");
     let h = only_honeycomb(&s);
-    assert_eq!(h.style.edges, None);
-    assert!(h.style.faces);
+    assert_eq!(h.surface.style().edges, None);
+    assert!(h.surface.style().faces);
 
     // `colors` draws the faces in the palette, one class per colour.
     let s = scene("Honeycomb {3,5,3}, #edge, colors = (#a, #b, #glass);");
     let h = only_honeycomb(&s);
-    assert!(h.style.faces);
-    assert_eq!(h.style.edges, None);
-    assert_eq!(h.style.cell_classes, 3);
+    assert!(h.surface.style().faces);
+    assert_eq!(h.surface.style().edges, None);
+    assert_eq!(h.surface.style().cell_classes, 3);
     assert_eq!(
         h.materials.palette,
         [material(&s, "a"), material(&s, "b"), material(&s, "glass")]

@@ -1,6 +1,6 @@
 //! A regular honeycomb as a scene object: the surface hgeom walks
-//! ([`RegularHoneycomb`]), the style it was built with (for the IR's JSON
-//! form) and the materials of its parts.
+//! ([`RegularHoneycomb`], which holds its symbol, style and placement) and
+//! the materials of its parts.
 //!
 //! One object, several materials: the honeycomb's hits say what they met in
 //! [`hgeom::Hit::part`] (an edge, a face or a vertex, and the class of the
@@ -8,7 +8,7 @@
 //! material. The renderer asks only that method, so it names no kind of
 //! shape.
 
-use hgeom::{HoneycombPart, HoneycombStyle, RegularHoneycomb, decode_honeycomb_part};
+use hgeom::{HoneycombPart, RegularHoneycomb, decode_honeycomb_part};
 
 use super::MaterialId;
 
@@ -17,20 +17,17 @@ use super::MaterialId;
 pub struct Honeycomb {
     /// The walking surface, placed.
     pub surface: RegularHoneycomb,
-    /// What was asked for: edge and vertex radii, faces, depth, classes.
-    pub style: HoneycombStyle,
     /// The materials of its parts.
     pub materials: PartMaterials,
 }
 
-/// Two honeycombs are equal when they have the same symbol, style, base
-/// cell centre and materials: the walk itself holds only what follows from
-/// these and the placement.
+/// Two honeycombs are equal when they have the same symbol, style,
+/// placement and materials: the walk's tables follow from these.
 impl PartialEq for Honeycomb {
     fn eq(&self, other: &Honeycomb) -> bool {
         self.surface.symbol() == other.surface.symbol()
-            && self.style == other.style
-            && self.surface.base_cell_center() == other.surface.base_cell_center()
+            && self.surface.style() == other.surface.style()
+            && self.surface.placement() == other.surface.placement()
             && self.materials == other.materials
     }
 }

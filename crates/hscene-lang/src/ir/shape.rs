@@ -129,7 +129,6 @@ impl Shape {
             }
             Shape::Honeycomb(h) => Shape::Honeycomb(Box::new(Honeycomb {
                 surface: h.surface.transformed(iso),
-                style: h.style,
                 materials: h.materials.clone(),
             })),
         }

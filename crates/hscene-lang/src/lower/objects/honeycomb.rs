@@ -131,7 +131,6 @@ impl Lowerer<'_> {
         match RegularHoneycomb::new(symbol, style) {
             Ok(surface) => Some(vec![Shape::Honeycomb(Box::new(Honeycomb {
                 surface,
-                style,
                 materials: PartMaterials { faces, palette },
             }))]),
             Err(e) => {
