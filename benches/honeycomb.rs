@@ -24,15 +24,16 @@
 //! of cells in the scene. Rays per second are the image's primary rays
 //! plus one shadow ray per primary hit (the one light), over hscene's CPU
 //! time. The drift is the walk's accuracy: the hyperbolic distance between
-//! the f64 walk's local ray and a 320-bit walk's after `N` reflections
-//! (`hscene_test_support::reference::walk_drift`), the worst over rays in
-//! every direction.
+//! the f64 walk's local ray origin (`RegularHoneycomb::walk_steps`) and a
+//! 320-bit walk's through the same walls after `N` reflections, the worst
+//! over rays from the base cell's centre in 64 directions.
 
 use std::fmt::Write as _;
 use std::process::{Command, ExitCode};
 
-use hgeom::glam::DVec3;
-use hgeom::{Ray, RegularHoneycomb};
+use hgeom::glam::{DVec3, DVec4};
+use hgeom::{CoxeterSimplex, HoneycombStyle, Ray, RegularHoneycomb};
+use hscene_test_support::reference::{R, V4, distance_h, ldot};
 use hscene_lang::ir::{Scene, Shape};
 
 #[allow(dead_code)]
@@ -118,30 +119,98 @@ fn walks(h: &RegularHoneycomb, probe: &Probe) -> Walks {
     w
 }
 
+/// A direction from the base cell's centre folded into the base simplex:
+/// reflected in the simplex's walls through the centre (`m0`, `m1`, `m2`,
+/// whose normals have no time part there) until it points into it, so
+/// that the f64 walk starts without folding and both walks start alike.
+fn folded(normals: &[DVec4; 4], dir: DVec3) -> DVec3 {
+    let mut d = dir.normalize();
+    // The cell's own group is finite: a direction is folded in at most a
+    // few dozen reflections; the cap only guards the loop.
+    for _ in 0..1000 {
+        let Some(n) = normals[..3]
+            .iter()
+            .map(|n| n.truncate())
+            .find(|n| d.dot(*n) < -1e-15)
+        else {
+            break;
+        };
+        d -= 2.0 * d.dot(n) * n;
+    }
+    d.normalize()
+}
+
+/// The hyperbolic distance between the f64 walk's local ray origin and a
+/// 320-bit walk's after each of `steps` (1-based) reflections, for the ray
+/// from the base cell's centre along `dir`. The 320-bit walk crosses the
+/// same walls (the f64 walk's choices) of the same f64 simplex, so the
+/// difference is the walk's own rounding: the exit point (`tanh τ =
+/// -<O,n>/<D,n>`), the re-basing and the reflection, step after step.
+fn drift_of(h: &RegularHoneycomb, normals: &[DVec4; 4], dir: DVec3, steps: &[u32]) -> Vec<f64> {
+    let last = steps.iter().copied().max().unwrap_or(0) as usize;
+    let ray = Ray::from_origin_unchecked(folded(normals, dir));
+    let walk = h.walk_steps(&ray, last);
+    let n: Vec<V4> = normals.iter().map(|n| V4::from_f64(*n)).collect();
+    let one = R::f(1.0);
+    let two = R::f(2.0);
+    let mut o = V4::from_f64(ray.origin);
+    let mut d = V4::from_f64(ray.dir);
+    // Exactly unit, so the 320-bit walk has no rounding of its own to carry.
+    o = o.scale(&(one.clone() / (-ldot(&o, &o)).sqrt()));
+    d = d.scale(&(one.clone() / ldot(&d, &d).sqrt()));
+    let mut out = Vec::new();
+    for (k, step) in walk.iter().enumerate() {
+        let m = &n[step.wall];
+        let s = -(ldot(&o, m) / ldot(&d, m));
+        let c = one.clone() / (one.clone() - &s * &s).sqrt();
+        let sh = &s * &c;
+        let at = o.scale(&c).add(&d.scale(&sh));
+        let along = o.scale(&sh).add(&d.scale(&c));
+        let mm = ldot(m, m);
+        let reflect = |x: &V4| x.sub(&m.scale(&(&two * &ldot(x, m) / &mm)));
+        o = reflect(&at);
+        d = reflect(&along);
+        if steps.contains(&((k + 1) as u32)) {
+            out.push(distance_h(&o, &V4::from_f64(step.origin)).to_f64());
+        }
+    }
+    out
+}
+
 /// The worst drift after each of [`DRIFT_STEPS`] reflections, over rays
-/// from the base cell's centre in directions spread over the sphere.
-fn drift() -> Vec<(u32, f64)> {
+/// from the base cell's centre in directions spread over the sphere (rays
+/// that leave by the horizon before a step count are left out of it).
+fn drift() -> Vec<(u32, f64, usize)> {
     let Ok(symbol) = hgeom::Schlafli::new(4, 3, 5) else {
         return Vec::new();
     };
+    let style = HoneycombStyle {
+        edges: None,
+        faces: false,
+        vertices: None,
+        depth: None,
+        cell_classes: 1,
+    };
+    let Ok(h) = RegularHoneycomb::new(symbol, style) else {
+        return Vec::new();
+    };
+    let normals = CoxeterSimplex::new(symbol).normals();
     let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
-    let dirs: Vec<DVec3> = (0..DRIFT_RAYS)
-        .map(|i| {
-            let z = 1.0 - 2.0 * (f64::from(i) + 0.5) / f64::from(DRIFT_RAYS);
-            let rho = (1.0 - z * z).sqrt();
-            let a = golden * f64::from(i);
-            DVec3::new(rho * a.cos(), rho * a.sin(), z)
-        })
-        .collect();
+    let mut worst = vec![(0.0f64, 0usize); DRIFT_STEPS.len()];
+    for i in 0..DRIFT_RAYS {
+        let z = 1.0 - 2.0 * (f64::from(i) + 0.5) / f64::from(DRIFT_RAYS);
+        let rho = (1.0 - z * z).sqrt();
+        let a = golden * f64::from(i);
+        let dir = DVec3::new(rho * a.cos(), rho * a.sin(), z);
+        for (k, d) in drift_of(&h, &normals, dir, &DRIFT_STEPS).into_iter().enumerate() {
+            worst[k].0 = worst[k].0.max(d);
+            worst[k].1 += 1;
+        }
+    }
     DRIFT_STEPS
         .iter()
-        .map(|&n| {
-            let worst = dirs
-                .iter()
-                .map(|d| hscene_test_support::reference::walk_drift(symbol, *d, n))
-                .fold(0.0, f64::max);
-            (n, worst)
-        })
+        .zip(worst)
+        .map(|(&n, (d, rays))| (n, d, rays))
         .collect()
 }
 
@@ -150,7 +219,7 @@ struct Report {
     hscene: Measured,
     povray: Option<Measured>,
     walks: Walks,
-    drift: Vec<(u32, f64)>,
+    drift: Vec<(u32, f64, usize)>,
 }
 
 impl Report {
@@ -186,7 +255,7 @@ impl Report {
             "mean_chambers_per_ray": self.mean(self.walks.chambers),
             "max_cells_per_ray": self.walks.max_cells,
             "hit_share": self.walks.hits as f64 / self.walks.rays.max(1) as f64,
-            "drift": self.drift.iter().map(|(n, d)| serde_json::json!({"steps": n, "max": d})).collect::<Vec<_>>(),
+            "drift": self.drift.iter().map(|(n, d, rays)| serde_json::json!({"steps": n, "max": d, "rays": rays})).collect::<Vec<_>>(),
         })
         .to_string()
     }

@@ -12,21 +12,28 @@ Globals {
     to = (-0.25, 0.12, 0.3);
     fov = 100;
     background = (0, 0, 0);
-    ambient = (0.6, 0.6, 0.6);
-    recursion_depth = 8;
+    ambient = (0.35, 0.35, 0.35);
+    recursion_depth = 12;
 }
 
 BRDFs {
-    edge: ambient = (0.38, 0.3, 0.2), diffuse = (0.95, 0.75, 0.5),
+    glass: ambient = (0.01, 0.02, 0.04), diffuse = (0.03, 0.06, 0.12),
+           specular = (0.4, 0.4, 0.4), shininess = 80, trans = 0.88;
+    gold: ambient = (0.4, 0.3, 0.12), diffuse = (0.95, 0.75, 0.35),
           specular = (1, 1, 1), shininess = 40;
-    glass: ambient = (0.075, 0.2, 0.175), diffuse = (0.105, 0.28, 0.245),
-           trans = 0.72;
+    cyan: ambient = (0.1, 0.3, 0.35), diffuse = (0.25, 0.75, 0.85),
+          specular = (1, 1, 1), shininess = 40;
+    magenta: ambient = (0.35, 0.12, 0.3), diffuse = (0.85, 0.3, 0.75),
+             specular = (1, 1, 1), shininess = 40;
 }
 
 Lights {
-    (-0.25, 0.02, 0.03), (4, 4, 4), (3, 3, 3);
+    (-0.2, 0.2, -0.1), (4, 4, 4), (3, 3, 3);
 }
 
 Objects {
-    Honeycomb {6,3,5}, #edge, edges = 0.025, faces = #glass, vertices = 0.045;
+    // Edges and vertices coloured by the cell's shell around the base cell:
+    // gold for the base cell, then cyan, magenta, gold, ... outwards.
+    Honeycomb {6,3,5}, #gold, edges = 0.025, vertices = 0.045, faces = #glass,
+        colors = (#gold, #cyan, #magenta);
 }

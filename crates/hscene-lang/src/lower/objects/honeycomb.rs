@@ -101,6 +101,19 @@ impl Lowerer<'_> {
             depth,
             colors,
         } = opts.take_honeycomb();
+        if let Some((d, span)) = depth.filter(|(d, _)| *d > 0 && symbol.has_ideal_cells()) {
+            self.report(
+                Diagnostic::new(
+                    Code::InvalidValue,
+                    span,
+                    format!(
+                        "the cells of {symbol} are inscribed in horospheres, each with infinitely many faces and neighbours, so `depth = {d}` would draw infinitely many cells"
+                    ),
+                )
+                .with_help("use `depth = 0` (the base cell alone) or no `depth` (the whole honeycomb, walked)"),
+            );
+            return None;
+        }
         let palette = colors.unwrap_or_default();
         let nothing_asked =
             edges.is_none() && faces.is_none() && vertices.is_none() && palette.is_empty();
