@@ -1,11 +1,13 @@
 //! The regular honeycombs traced by walking the Coxeter simplex, checked
 //! against explicit cells, their own symmetries and a 320-bit walk.
 
-use glam::{DVec3, DVec4};
+use glam::{DMat3, DMat4, DVec3, DVec4};
 use hgeom::{
-    HoneycombPart, HoneycombStyle, Ray, RegularHoneycomb, Schlafli, Shape, decode_honeycomb_part,
-    lorentz,
+    ConvexPolygon, CoxeterSimplex, HSphere, Hit, HoneycombPart, HoneycombStyle, Isometry, Point,
+    Ray, RegularHoneycomb, Rod, Schlafli, Shape, cube_435, decode_honeycomb_part, lorentz,
+    tessellate, unique_edges,
 };
+use hscene_test_support::SplitMix64;
 
 fn honeycomb(p: u32, q: u32, r: u32, style: HoneycombStyle) -> RegularHoneycomb {
     RegularHoneycomb::new(Schlafli::new(p, q, r).unwrap(), style).unwrap()
@@ -32,4 +34,309 @@ fn a_ray_along_an_axis_meets_the_cube_face_at_the_inradius() {
     // The normal faces the ray.
     assert!(lorentz::dot(hit.normal, ray.tangent_at(hit.t)) < -0.999);
     let _ = DVec4::W;
+}
+
+/// The explicit {4,3,5} cells within `depth`: faces, rods about the unique
+/// edges, balls at the unique vertices, as the `Tessellation435` figure
+/// draws them.
+fn explicit_435(depth: usize, style: &HoneycombStyle) -> Vec<Box<dyn Shape>> {
+    let cells = tessellate(&cube_435().unwrap(), depth).unwrap();
+    let faces: Vec<ConvexPolygon> = cells
+        .iter()
+        .flat_map(|c| c.polyhedron.faces().to_vec())
+        .collect();
+    let mut shapes: Vec<Box<dyn Shape>> = Vec::new();
+    let edges = unique_edges(&faces);
+    if let Some(w) = style.edges {
+        for (a, b) in &edges {
+            shapes.push(Box::new(Rod::new(*a, *b, w).unwrap()));
+        }
+    }
+    if let Some(r) = style.vertices {
+        let mut seen: Vec<DVec3> = Vec::new();
+        for v in edges.iter().flat_map(|(a, b)| [*a, *b]) {
+            if seen.iter().all(|s| (*s - v.coords()).length() > 1e-9) {
+                seen.push(v.coords());
+                let p = Point::from_coords(v.coords()).unwrap();
+                shapes.push(Box::new(HSphere::new(p, r).unwrap()));
+            }
+        }
+    }
+    if style.faces {
+        for f in faces {
+            shapes.push(Box::new(f));
+        }
+    }
+    shapes
+}
+
+fn nearest(shapes: &[Box<dyn Shape>], ray: &Ray) -> Option<Hit> {
+    shapes
+        .iter()
+        .filter_map(|s| s.intersect(ray, 1e-9, f64::INFINITY))
+        .min_by(|a, b| a.t.total_cmp(&b.t))
+}
+
+/// A ray from a random point within `reach` of the origin in a random
+/// direction.
+fn random_ray(rng: &mut SplitMix64, reach: f64) -> Ray {
+    let p = Point::at_distance_from_origin(rng.direction(), rng.range(0.0, reach)).unwrap();
+    Ray::from_ball(&p, rng.direction()).unwrap()
+}
+
+#[test]
+fn walk_matches_explicit_cells() {
+    let styles = [
+        faces_only(),
+        HoneycombStyle {
+            edges: Some(0.08),
+            faces: false,
+            vertices: Some(0.3),
+            depth: None,
+            cell_classes: 1,
+        },
+        HoneycombStyle {
+            edges: Some(0.05),
+            faces: true,
+            vertices: Some(0.1),
+            depth: None,
+            cell_classes: 1,
+        },
+    ];
+    let mut rng = SplitMix64::new(435);
+    let mut worst: f64 = 0.0;
+    let mut kinds = [0usize; 3];
+    let mut misses = 0;
+    for depth in [1u32, 2] {
+        for style in styles {
+            let style = HoneycombStyle {
+                depth: Some(depth),
+                ..style
+            };
+            let walk = honeycomb(4, 3, 5, style);
+            let explicit = explicit_435(depth as usize, &style);
+            for _ in 0..150 {
+                let ray = random_ray(&mut rng, 1.0);
+                let a = walk.intersect(&ray, 1e-9, f64::INFINITY);
+                let b = nearest(&explicit, &ray);
+                match (a, b) {
+                    (Some(a), Some(b)) => {
+                        kinds[decode_honeycomb_part(a.part).0 as usize] += 1;
+                        worst = worst.max((a.t - b.t).abs());
+                        assert!((a.t - b.t).abs() < 1e-9, "{} vs {} ({style:?})", a.t, b.t);
+                        assert!(
+                            (a.normal - b.normal).length() < 1e-6
+                                || (a.normal + b.normal).length() < 1e-6,
+                            "{:?} vs {:?}",
+                            a.normal,
+                            b.normal
+                        );
+                    }
+                    (None, None) => misses += 1,
+                    (a, b) => panic!("walk {a:?} vs explicit {b:?} ({style:?}, {ray:?})"),
+                }
+            }
+        }
+    }
+    println!("walk vs explicit: worst |dt| = {worst:e}, hits {kinds:?}, misses {misses}");
+    // Every kind of part is met, and rays also leave the listed cells.
+    assert!(
+        kinds.iter().all(|&k| k > 20) && misses > 20,
+        "{kinds:?} {misses}"
+    );
+}
+
+fn everything(classes: u32) -> HoneycombStyle {
+    HoneycombStyle {
+        edges: Some(0.05),
+        faces: true,
+        vertices: Some(0.12),
+        depth: None,
+        cell_classes: classes,
+    }
+}
+
+fn moved(ray: &Ray, l: DMat4) -> Ray {
+    Ray {
+        origin: l * ray.origin,
+        dir: l * ray.dir,
+    }
+}
+
+#[test]
+fn unlimited_walk_matches_explicit_cells_near_the_base() {
+    // Edges only: rays pass through several cells before meeting a rod.
+    let style = HoneycombStyle {
+        edges: Some(0.06),
+        faces: false,
+        vertices: Some(0.1),
+        depth: None,
+        cell_classes: 1,
+    };
+    let walk = honeycomb(4, 3, 5, style);
+    let explicit = explicit_435(3, &style);
+    let mut rng = SplitMix64::new(7);
+    let mut compared = 0;
+    for _ in 0..400 {
+        let ray = random_ray(&mut rng, 0.3);
+        let a = walk.intersect(&ray, 1e-9, f64::INFINITY);
+        let b = nearest(&explicit, &ray);
+        // Depth 3 holds every point within 1.6 of the origin.
+        if let Some(a) = a.filter(|h| h.t < 1.3) {
+            let b = b.unwrap();
+            assert!((a.t - b.t).abs() < 1e-9, "{} vs {}", a.t, b.t);
+            compared += 1;
+        } else if let Some(b) = b {
+            assert!(b.t >= 1.3 - 1e-9, "explicit {} missed by the walk", b.t);
+        }
+    }
+    assert!(compared > 50, "{compared}");
+}
+
+#[test]
+fn symmetries_of_the_honeycomb_leave_hits_unchanged() {
+    let mut rng = SplitMix64::new(15);
+    for (p, q, r) in Schlafli::ALL {
+        let symbol = Schlafli::new(p, q, r).unwrap();
+        let h = RegularHoneycomb::new(symbol, everything(3)).unwrap();
+        let simplex = CoxeterSimplex::new(symbol);
+        let mut hits = 0;
+        for _ in 0..40 {
+            let ray = random_ray(&mut rng, 0.3);
+            let a = h.intersect(&ray, 1e-9, f64::INFINITY);
+            for k in 0..4 {
+                let b = h.intersect(&moved(&ray, simplex.reflection(k)), 1e-9, f64::INFINITY);
+                match (a, b) {
+                    (Some(a), Some(b)) => {
+                        assert!(
+                            (a.t - b.t).abs() < 1e-9,
+                            "{symbol} m{k}: {} vs {}",
+                            a.t,
+                            b.t
+                        );
+                        let (ka, ca) = decode_honeycomb_part(a.part);
+                        let (kb, cb) = decode_honeycomb_part(b.part);
+                        assert_eq!(ka, kb);
+                        // The mirrors through the base point and the base
+                        // cell's centre (or, for an ideal centre, the line
+                        // to it) fix the base cell's ranking.
+                        if k < 2 || (k == 2 && !symbol.has_ideal_cells()) {
+                            assert_eq!(ca, cb, "{symbol} m{k}");
+                        }
+                        let n = simplex.reflection(k) * a.normal;
+                        // Far out the components are ~e^t and mostly
+                        // null: compare by the Lorentz angle.
+                        let cos = lorentz::dot(n, b.normal);
+                        let tol = 1e-12 * (1.0 + n.length_squared());
+                        assert!((1.0 - cos).abs() < tol, "{symbol} m{k}: {cos}");
+                    }
+                    (None, None) => {}
+                    _ => panic!("{symbol} m{k}: {a:?} vs {b:?}"),
+                }
+            }
+            hits += usize::from(a.is_some());
+        }
+        assert!(hits > 30, "{symbol}: {hits}");
+    }
+}
+
+#[test]
+fn placement_moves_the_honeycomb_with_the_ray() {
+    let h = honeycomb(5, 3, 4, everything(2));
+    let g = Isometry::transvection_from_origin(Point::new(0.3, -0.2, 0.4).unwrap())
+        .compose(&Isometry::orthogonal(DMat3::from_rotation_y(0.7)).unwrap());
+    let placed = h.transformed(&g);
+    assert!((placed.base_cell_center().coords() - DVec3::new(0.3, -0.2, 0.4)).length() < 1e-15);
+    let l = g.to_lorentz();
+    let mut rng = SplitMix64::new(3);
+    for _ in 0..100 {
+        let ray = random_ray(&mut rng, 0.5);
+        let a = h.intersect(&ray, 1e-9, f64::INFINITY);
+        let b = placed.intersect(&moved(&ray, l), 1e-9, f64::INFINITY);
+        assert_eq!(a.is_some(), b.is_some());
+        if let (Some(a), Some(b)) = (a, b) {
+            assert!((a.t - b.t).abs() < 1e-9);
+            assert_eq!(a.part, b.part);
+            assert!((l * a.normal - b.normal).length() < 1e-8);
+        }
+    }
+}
+
+#[test]
+fn shadow_rays_agree_with_nearest_hits() {
+    let mut rng = SplitMix64::new(99);
+    for (p, q, r) in Schlafli::ALL {
+        for depth in [None, Some(0)] {
+            let style = HoneycombStyle {
+                depth,
+                ..everything(1)
+            };
+            let h = honeycomb(p, q, r, style);
+            for _ in 0..30 {
+                let ray = random_ray(&mut rng, 0.5);
+                let t_max = rng.range(0.0, 3.0);
+                assert_eq!(
+                    h.blocks(&ray, 1e-9, t_max),
+                    h.intersect(&ray, 1e-9, t_max).is_some(),
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn rays_into_ideal_vertices_end_on_the_rods_without_nan() {
+    for (p, q, r) in Schlafli::ALL {
+        let symbol = Schlafli::new(p, q, r).unwrap();
+        let simplex = CoxeterSimplex::new(symbol);
+        let ideal: Vec<(usize, DVec4)> = (0..4)
+            .filter(|&k| simplex.ideal()[k])
+            .map(|k| (k, simplex.vertices()[k]))
+            .collect();
+        for (k, v) in ideal {
+            for style in [everything(2), faces_only()] {
+                let h = RegularHoneycomb::new(symbol, style).unwrap();
+                for wobble in [0.0, 1e-12, 1e-6, 1e-3] {
+                    let dir = v.truncate() + DVec3::new(wobble, -0.5 * wobble, 0.0);
+                    let ray = Ray::from_origin(dir).unwrap();
+                    let (hit, stats) = h.intersect_with_stats(&ray, 1e-9, f64::INFINITY);
+                    assert!(stats.chambers > 0);
+                    if let Some(hit) = hit {
+                        assert!(hit.t.is_finite() && hit.point.is_finite());
+                        assert!(hit.normal.is_finite());
+                        assert!((lorentz::dot(hit.normal, hit.normal) - 1.0).abs() < 1e-6);
+                    } else {
+                        // Up the cusp of an ideal vertex the rods widen
+                        // until they fill it; the cusp of an ideal cell
+                        // centre is the cell's inside, which the ray may
+                        // cross to the horizon without meeting a part.
+                        assert!(style.edges.is_none() || k == 3, "{symbol} {wobble}");
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn hit_normals_are_unit_tangents_facing_the_ray() {
+    let mut rng = SplitMix64::new(5);
+    for (p, q, r) in Schlafli::ALL {
+        let h = honeycomb(p, q, r, everything(4));
+        for _ in 0..30 {
+            let ray = random_ray(&mut rng, 0.5);
+            let Some(hit) = h.intersect(&ray, 1e-9, f64::INFINITY) else {
+                continue;
+            };
+            assert!((lorentz::dot(hit.normal, hit.normal) - 1.0).abs() < 1e-9);
+            assert!(lorentz::dot(hit.normal, hit.point).abs() < 1e-9);
+            assert!((hit.point - ray.at(hit.t)).length() < 1e-12 * hit.point.length());
+            let (kind, class) = decode_honeycomb_part(hit.part);
+            assert!(class < 4);
+            if kind != HoneycombPart::Face {
+                // Rods and balls: the ray enters from outside.
+                assert!(lorentz::dot(hit.normal, ray.tangent_at(hit.t)) < 0.0);
+            }
+        }
+    }
 }

@@ -26,4 +26,4 @@ pub use cube435::{
 pub use schlafli::{Schlafli, SchlafliError};
 pub use simplex::CoxeterSimplex;
 pub use style::{HoneycombPart, HoneycombStyle, decode_honeycomb_part};
-pub use walk::{DEFAULT_HORIZON, MAX_WALK_STEPS, RegularHoneycomb, WalkStats};
+pub use walk::{DEFAULT_HORIZON, MAX_WALK_STEPS, RegularHoneycomb, WalkStats, WalkStep};

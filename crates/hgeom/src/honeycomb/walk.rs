@@ -78,6 +78,10 @@ pub const DEFAULT_HORIZON: f64 = 15.0;
 /// aimed within `e^{-15}` of an ideal vertex, spiralling up its cusp) misses.
 pub const MAX_WALK_STEPS: u32 = 200_000;
 
+/// The walk restores `<O,O> = -1`, `<D,D> = 1`, `<O,D> = 0` every this
+/// many chambers (rounding drifts them by a few ulps per step).
+const RENORMALISE_EVERY: u32 = 8;
+
 /// The most reflections that fold a ray's start into the simplex.
 const MAX_FOLD_STEPS: u32 = 100_000;
 
@@ -90,6 +94,23 @@ pub struct WalkStats {
     pub cells: u32,
     /// Reflections that folded the start into the simplex.
     pub folds: u32,
+}
+
+/// One step of a walk ([`RegularHoneycomb::walk_steps`]): the ray after
+/// it has crossed a wall, in the base simplex.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WalkStep {
+    /// The wall crossed (`0..4`; 3 is a face plane).
+    pub wall: usize,
+    /// The arc length along the original ray at the crossing.
+    pub t: f64,
+    /// The crossing point, reflected into the base simplex (on the wall).
+    pub origin: DVec4,
+    /// The reflected direction there.
+    pub dir: DVec4,
+    /// The Lorentz matrix from the base simplex to the chamber entered
+    /// (in the honeycomb's frame, before placement).
+    pub chamber: DMat4,
 }
 
 /// What the walk needs of the symbol, in the base simplex.
@@ -107,8 +128,6 @@ struct Local {
     edge_cells: Vec<DVec4>,
     vertex_cells: Vec<DVec4>,
     face_cells: [DVec4; 2],
-    /// Which mirror is a face plane.
-    reflections: [DMat4; 4],
 }
 
 /// A regular honeycomb `{p,q,r}` of hyperbolic space as one surface: edges
@@ -182,7 +201,6 @@ impl RegularHoneycomb {
             edge_cells,
             vertex_cells,
             face_cells: [v[3], reflections[3] * v[3]],
-            reflections,
         };
         let cells = match style.depth {
             Some(depth) => Some(Arc::new(CellSet::build(&simplex, depth)?)),
@@ -300,13 +318,13 @@ impl RegularHoneycomb {
     /// polygons, rods and balls of the same cells to 1e-9
     /// (`walk_matches_explicit_cells` in `tests/honeycomb_walk.rs`).
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        self.walk(ray, t_min, t_max, false, &mut WalkStats::default())
+        self.walk(ray, t_min, t_max, false, &mut WalkStats::default(), None)
     }
 
     /// True if the ray meets a part in `(t_min, t_max)` (the shadow test:
     /// the walk stops at the first part found).
     pub fn blocks(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
-        self.walk(ray, t_min, t_max, true, &mut WalkStats::default())
+        self.walk(ray, t_min, t_max, true, &mut WalkStats::default(), None)
             .is_some()
     }
 
@@ -318,8 +336,40 @@ impl RegularHoneycomb {
         t_max: f64,
     ) -> (Option<Hit>, WalkStats) {
         let mut stats = WalkStats::default();
-        let hit = self.walk(ray, t_min, t_max, false, &mut stats);
+        let hit = self.walk(ray, t_min, t_max, false, &mut stats, None);
         (hit, stats)
+    }
+
+    /// The walk of a ray that meets nothing (parts are ignored), step by
+    /// step, for at most `max_steps` walls: for measuring the drift of the
+    /// walk against a high-precision one. The start is the ray's origin
+    /// (`t = 0`); it must lie in the base simplex (`<X,n_i> >= 0`, e.g. the
+    /// base point) for the steps to be comparable.
+    pub fn walk_steps(&self, ray: &Ray, max_steps: usize) -> Vec<WalkStep> {
+        let bare = RegularHoneycomb {
+            style: HoneycombStyle {
+                edges: None,
+                faces: false,
+                vertices: None,
+                ..self.style
+            },
+            local: Arc::new(Local {
+                sinh2_edge: None,
+                vertex: None,
+                ..(*self.local).clone()
+            }),
+            ..self.clone()
+        };
+        let mut steps = Vec::new();
+        bare.walk(
+            ray,
+            0.0,
+            f64::INFINITY,
+            false,
+            &mut WalkStats::default(),
+            Some((&mut steps, max_steps)),
+        );
+        steps
     }
 
     /// The arc lengths of the original ray inside the horizon and (with a
@@ -352,6 +402,7 @@ impl RegularHoneycomb {
         t_max: f64,
         any: bool,
         stats: &mut WalkStats,
+        mut trace: Option<(&mut Vec<WalkStep>, usize)>,
     ) -> Option<Hit> {
         let (lo, hi) = self.window(ray, t_min, t_max)?;
         let l = &*self.local;
@@ -373,9 +424,15 @@ impl RegularHoneycomb {
             stats.folds += 1;
             o = reflect(o, l.n[i]);
             d = reflect(d, l.n[i]);
-            m *= l.reflections[i];
+            m = times_reflection(&m, l.n[i]);
         }
-        let mut t = lo;
+        // Arc lengths are kept as v = e^{2τ} (a product along the walk),
+        // which the exits give without a logarithm: e^{2 atanh s} =
+        // (1+s)/(1-s). Only a hit takes the one logarithm.
+        let mut u_acc = 1.0;
+        let v_span = (2.0 * (hi - lo)).exp();
+        // A shadow ray of an unlimited honeycomb needs no chamber matrix.
+        let need_m = !any || self.cells.is_some();
         let mut last = 4;
         stats.cells = 1;
         while stats.chambers < MAX_WALK_STEPS {
@@ -395,96 +452,115 @@ impl RegularHoneycomb {
                     }
                 }
             }
-            let span = hi - t;
-            let tau_exit = if exit < 4 {
-                s_min.atanh()
+            let span = v_span / u_acc;
+            let v_exit = if exit < 4 {
+                (1.0 + s_min) / (1.0 - s_min)
             } else {
                 f64::INFINITY
             };
-            let window = tau_exit.min(span);
-            let floor = (t_min - t).max(0.0);
             let chamber = Chamber {
                 o,
                 d,
                 a,
                 b,
                 exit,
-                tau_exit,
+                v_exit,
                 m: &m,
                 shadow: any,
             };
-            if let Some((tau, kind)) = self.first_part(&chamber, floor, window) {
-                return Some(self.hit(ray, t + tau, &chamber, tau, kind));
+            if let Some((v, kind)) = self.first_part(&chamber, v_exit.min(span)) {
+                let t = lo + 0.5 * (u_acc * v).ln();
+                return Some(self.hit(ray, t, &chamber, v, kind));
             }
-            if tau_exit >= span {
+            if v_exit >= span {
                 return None;
             }
-            let c = 1.0 / (1.0 - s_min * s_min).sqrt();
-            let s = s_min * c;
+            // The exit point and tangent, both scaled by cosh τ: the walk
+            // keeps o and d with a common scale λ (`<o,o> = -λ²`), which
+            // the exit ratios ignore and the part tests divide out, and
+            // restores λ = 1 every few steps.
             let n = l.n[exit];
-            let mut o2 = c * o + s * d;
+            let mut o2 = o + s_min * d;
             // The exit point lies on the wall: put it there exactly.
             o2 -= lorentz::dot(o2, n) * n;
-            let d2 = reflect(s * o + c * d, n);
+            d = reflect(s_min * o + d, n);
             o = o2;
-            d = d2;
-            renormalise(&mut o, &mut d);
-            m *= l.reflections[exit];
-            t += tau_exit;
+            if stats.chambers % RENORMALISE_EVERY == 0 {
+                renormalise(&mut o, &mut d);
+            }
+            if need_m {
+                m = times_reflection(&m, n);
+            }
+            u_acc *= v_exit;
             last = exit;
             if exit == 3 {
                 stats.cells += 1;
+            }
+            if let Some((steps, max)) = trace.as_mut() {
+                if steps.len() >= *max {
+                    return None;
+                }
+                let (mut o, mut d) = (o, d);
+                renormalise(&mut o, &mut d);
+                steps.push(WalkStep {
+                    wall: exit,
+                    t: lo + 0.5 * u_acc.ln(),
+                    origin: o,
+                    dir: d,
+                    chamber: m,
+                });
             }
         }
         None
     }
 
-    /// The first part in this chamber met at `floor < τ <= window`, with
-    /// its class (0 for a shadow ray, which needs none).
-    fn first_part(
-        &self,
-        c: &Chamber,
-        floor: f64,
-        window: f64,
-    ) -> Option<(f64, (HoneycombPart, u32))> {
+    /// The first part in this chamber met at `1 < v <= window`, in
+    /// `v = e^{2τ}`, with its class (0 for a shadow ray, which needs none).
+    fn first_part(&self, c: &Chamber, window: f64) -> Option<(f64, (HoneycombPart, u32))> {
         let l = &*self.local;
         let (a, b) = (&c.a, &c.b);
         let mut found: Option<(f64, HoneycombPart)> = None;
-        let in_window = |tau: f64, found: &Option<(f64, HoneycombPart)>| {
-            tau > floor && tau <= window && found.is_none_or(|(best, _)| tau < best)
+        let in_window = |v: f64, found: &Option<(f64, HoneycombPart)>| {
+            v > 1.0 && v <= window && found.is_none_or(|(best, _)| v < best)
         };
-        let first_root = |(near, far): (f64, f64)| if near > floor { near } else { far };
+        let first_root = |(near, far): (f64, f64)| if near > 1.0 { near } else { far };
+        // o and d carry a common scale λ, λ² = -<o,o>: the tube's
+        // quadratic is homogeneous of degree 2 in (o, d, sinh w), the ball's
+        // of degree 1 in (o, d, cosh ρ), and their roots do not change.
+        let lambda2 = -lorentz::dot(c.o, c.o);
         if let Some(sinh2) = l.sinh2_edge {
             let o = [a[3], l.k2 * a[2] + l.k3 * a[3]];
             let v = [b[3], l.k2 * b[2] + l.k3 * b[3]];
-            if let Some(tau) = tube_roots(o, v, sinh2).map(first_root)
-                && in_window(tau, &found)
+            if let Some(v) = tube_roots(o, v, sinh2 * lambda2).map(first_root)
+                && in_window(v, &found)
                 && self.present(&l.edge_cells, c.m)
             {
-                found = Some((tau, HoneycombPart::Edge));
+                found = Some((v, HoneycombPart::Edge));
             }
         }
         if let Some((v0, cosh_r)) = l.vertex {
-            // -<X(τ),v0> = α cosh τ + β sinh τ = cosh ρ.
+            // -<X(τ),v0> = α cosh τ + β sinh τ = cosh ρ, in u = e^τ.
             let alpha = -lorentz::dot(c.o, v0);
             let beta = -lorentz::dot(c.d, v0);
-            if let Some(tau) = exp_roots(alpha + beta, cosh_r, alpha - beta).map(first_root)
-                && in_window(tau, &found)
+            let k = cosh_r * lambda2.sqrt();
+            if let Some((near, far)) = exp_roots_plain(alpha + beta, k, alpha - beta)
+                && let v = first_root((near * near, far * far))
+                && in_window(v, &found)
                 && self.present(&l.vertex_cells, c.m)
             {
-                found = Some((tau, HoneycombPart::Vertex));
+                found = Some((v, HoneycombPart::Vertex));
             }
         }
         if self.style.faces
             && c.exit == 3
-            && in_window(c.tau_exit, &found)
+            && in_window(c.v_exit, &found)
             && self.present(&l.face_cells, c.m)
         {
-            found = Some((c.tau_exit, HoneycombPart::Face));
+            found = Some((c.v_exit, HoneycombPart::Face));
         }
-        let (tau, kind) = found?;
+        let (v, kind) = found?;
         let class = if c.shadow { 0 } else { self.class(kind, c.m) };
-        Some((tau, (kind, class)))
+        Some((v, (kind, class)))
     }
 
     /// True if one of the cells (local centres mapped by `m`) is drawn.
@@ -523,9 +599,13 @@ impl RegularHoneycomb {
         rank.rem_euclid(i64::from(k)) as u32
     }
 
-    fn hit(&self, ray: &Ray, t: f64, c: &Chamber, tau: f64, kind: (HoneycombPart, u32)) -> Hit {
+    fn hit(&self, ray: &Ray, t: f64, c: &Chamber, v: f64, kind: (HoneycombPart, u32)) -> Hit {
         let l = &*self.local;
-        let x = tau.cosh() * c.o + tau.sinh() * c.d;
+        let (mut o, mut d) = (c.o, c.d);
+        renormalise(&mut o, &mut d);
+        // e^τ = sqrt v.
+        let e = v.sqrt();
+        let x = (0.5 * (e + 1.0 / e)) * o + (0.5 * (e - 1.0 / e)) * d;
         let local_normal = match kind.0 {
             // Two-sided: the normal faces the side the ray comes from.
             HoneycombPart::Face => l.n[3],
@@ -565,7 +645,8 @@ struct Chamber<'a> {
     a: [f64; 4],
     b: [f64; 4],
     exit: usize,
-    tau_exit: f64,
+    /// `e^{2τ}` at the exit.
+    v_exit: f64,
     m: &'a DMat4,
     shadow: bool,
 }
@@ -574,6 +655,19 @@ struct Chamber<'a> {
 #[inline]
 fn reflect(x: DVec4, n: DVec4) -> DVec4 {
     x - 2.0 * lorentz::dot(x, n) * n
+}
+
+/// `M R` for the reflection `R` in the unit normal `n`:
+/// `M (X - 2 <X,n> n) = M X - 2 (M n) (J n)ᵀ X`, a rank-one update.
+#[inline]
+fn times_reflection(m: &DMat4, n: DVec4) -> DMat4 {
+    let mn = 2.0 * (*m * n);
+    DMat4::from_cols(
+        m.x_axis - n.x * mn,
+        m.y_axis - n.y * mn,
+        m.z_axis - n.z * mn,
+        m.w_axis + n.w * mn,
+    )
 }
 
 /// Restores `<O,O> = -1`, `<D,D> = 1`, `<O,D> = 0` after rounding.
@@ -585,8 +679,8 @@ fn renormalise(o: &mut DVec4, d: &mut DVec4) {
 }
 
 /// The roots of `c_1(τ)² + c_2(τ)² = sinh² w` with
-/// `c_i = o_i cosh τ + v_i sinh τ` (the tube), as in
-/// [`HCylinder::roots`](crate::HCylinder::roots).
+/// `c_i = o_i cosh τ + v_i sinh τ` (the tube), as values of `e^{2τ}`, from
+/// [`HCylinder::roots`](crate::HCylinder::roots)'s quadratic.
 #[inline]
 fn tube_roots(o: [f64; 2], v: [f64; 2], sinh2: f64) -> Option<(f64, f64)> {
     let p = [o[0] + v[0], o[1] + v[1]];
@@ -598,6 +692,20 @@ fn tube_roots(o: [f64; 2], v: [f64; 2], sinh2: f64) -> Option<(f64, f64)> {
     if !(k > 0.0) {
         return None;
     }
-    let (near, far) = exp_roots(a, k, c)?;
-    Some((0.5 * near, 0.5 * far))
+    exp_roots_plain(a, k, c)
+}
+
+/// The roots `u_near <= u_far` of `alpha u² - 2 k u + beta = 0` for
+/// `alpha, beta >= 0`, `k > 0`: [`exp_roots`] without the logarithms.
+#[inline]
+fn exp_roots_plain(alpha: f64, k: f64, beta: f64) -> Option<(f64, f64)> {
+    let disc = k * k - alpha * beta;
+    if !(disc >= 0.0) {
+        return None;
+    }
+    let big = k + disc.sqrt();
+    if !(big > 0.0) {
+        return None;
+    }
+    Some((beta / big, big / alpha))
 }
