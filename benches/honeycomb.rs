@@ -33,8 +33,8 @@ use std::process::{Command, ExitCode};
 
 use hgeom::glam::{DVec3, DVec4};
 use hgeom::{CoxeterSimplex, HoneycombStyle, Ray, RegularHoneycomb};
-use hscene_test_support::reference::{R, V4, distance_h, ldot};
 use hscene_lang::ir::{Scene, Shape};
+use hscene_test_support::reference::{R, V4, distance_h, ldot};
 
 #[allow(dead_code)]
 mod common;
@@ -202,7 +202,10 @@ fn drift() -> Vec<(u32, f64, usize)> {
         let rho = (1.0 - z * z).sqrt();
         let a = golden * f64::from(i);
         let dir = DVec3::new(rho * a.cos(), rho * a.sin(), z);
-        for (k, d) in drift_of(&h, &normals, dir, &DRIFT_STEPS).into_iter().enumerate() {
+        for (k, d) in drift_of(&h, &normals, dir, &DRIFT_STEPS)
+            .into_iter()
+            .enumerate()
+        {
             worst[k].0 = worst[k].0.max(d);
             worst[k].1 += 1;
         }
@@ -299,10 +302,10 @@ impl Report {
             self.walks.max_cells,
             100.0 * self.walks.hits as f64 / self.walks.rays.max(1) as f64
         );
-        for (n, d) in &self.drift {
+        for (n, d, rays) in &self.drift {
             let _ = writeln!(
                 s,
-                "  drift after {n:5} reflections: {d:.1e} (max over {DRIFT_RAYS} rays)"
+                "  drift after {n:5} reflections: {d:.1e} (max over the {rays} of {DRIFT_RAYS} rays still walking)"
             );
         }
         s

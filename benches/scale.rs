@@ -30,7 +30,7 @@
 //! (`misses`: a hierarchy that loses objects shows here).
 
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, ExitCode};
 
 use hgeom::glam::DVec3;

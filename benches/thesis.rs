@@ -16,7 +16,6 @@
 //! the max and median hyperbolic distance between the renderer's primary hit
 //! points and a 320-bit recomputation, on a 48x48 grid of pixels.
 
-use std::fmt::Write as _;
 use std::process::ExitCode;
 use std::time::Instant;
 
@@ -27,7 +26,7 @@ use hscene_lang::ir::{Net, Resolution};
 // of POV-Ray are not in the thesis's tables.
 #[allow(dead_code)]
 mod common;
-use common::thesis_scenes::{Case, Kind, cases, pov_source, scene_source};
+use common::thesis_scenes::{Case, cases, pov_source, scene_source};
 
 /// Wall time of POV-Ray rendering the twin, if `povray` runs.
 fn povray_seconds(c: &Case, resolution: u32) -> Option<f64> {
