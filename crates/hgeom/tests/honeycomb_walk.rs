@@ -8,6 +8,7 @@ use hgeom::{
     tessellate, unique_edges,
 };
 use hscene_test_support::SplitMix64;
+use hscene_test_support::reference::{R, V4, distance_h, ldot};
 
 fn honeycomb(p: u32, q: u32, r: u32, style: HoneycombStyle) -> RegularHoneycomb {
     RegularHoneycomb::new(Schlafli::new(p, q, r).unwrap(), style).unwrap()
@@ -339,4 +340,187 @@ fn hit_normals_are_unit_tangents_facing_the_ray() {
             }
         }
     }
+}
+
+/// The walk of `walls` replayed at 320 bits from the same f64 ray and
+/// normals: the arc length and the point after each step, and whether
+/// the reference itself would have left through that wall.
+fn reference_walk(normals: &[DVec4; 4], ray: &Ray, walls: &[usize]) -> Vec<(R, V4, bool)> {
+    let n: Vec<V4> = normals.iter().map(|v| V4::from_f64(*v)).collect();
+    let mut o = V4::from_f64(ray.origin);
+    let mut d = V4::from_f64(ray.dir);
+    let mut t = R::f(0.0);
+    let one = R::f(1.0);
+    let two = R::f(2.0);
+    let mut last = 4;
+    let mut out = Vec::new();
+    for &w in walls {
+        // The exit the reference would choose: least -a/b over b < 0.
+        let mut best: Option<(usize, R)> = None;
+        for (i, ni) in n.iter().enumerate() {
+            let b = ldot(&d, ni);
+            if i == last || !b.is_negative() {
+                continue;
+            }
+            let s = -(ldot(&o, ni) / b);
+            if best.as_ref().is_none_or(|(_, bs)| s.lt(bs)) {
+                best = Some((i, s));
+            }
+        }
+        let agrees = best.as_ref().is_some_and(|(i, _)| *i == w);
+        let s = -(ldot(&o, &n[w]) / ldot(&d, &n[w]));
+        let c = one.clone() / (one.clone() - s.clone() * &s).sqrt();
+        let o2 = o.add(&d.scale(&s)).scale(&c);
+        let d2 = o.scale(&s).add(&d).scale(&c);
+        let reflect = |x: &V4| x.sub(&n[w].scale(&(two.clone() * ldot(x, &n[w]))));
+        o = reflect(&o2);
+        d = reflect(&d2);
+        t = t + ((one.clone() + &s) / (one.clone() - &s)).ln() * R::f(0.5);
+        last = w;
+        out.push((t.clone(), o.clone(), agrees));
+    }
+    out
+}
+
+#[test]
+fn walk_drift_against_a_320_bit_walk() {
+    let mut rng = SplitMix64::new(320);
+    for (p, q, r) in [
+        (4, 3, 5),
+        (5, 3, 4),
+        (3, 5, 3),
+        (6, 3, 3),
+        (3, 3, 6),
+        (4, 4, 4),
+    ] {
+        let symbol = Schlafli::new(p, q, r).unwrap();
+        let h = RegularHoneycomb::new(symbol, faces_only())
+            .unwrap()
+            .with_horizon(30.0)
+            .unwrap();
+        let normals = CoxeterSimplex::new(symbol).normals();
+        // Drift grows like eps e^t (nearby geodesics diverge like e^t, and
+        // each step adds a rounding): checkpoints by arc length.
+        let checkpoints = [5.0, 10.0, 12.0, 15.0];
+        let mut worst_t = [0.0f64; 4];
+        let mut worst_x = [0.0f64; 4];
+        for _ in 0..6 {
+            // From the base point, which lies in the simplex.
+            let ray = Ray::from_origin(rng.direction()).unwrap();
+            let steps = h.walk_steps(&ray, 400);
+            let walls: Vec<usize> = steps.iter().map(|s| s.wall).collect();
+            let reference = reference_walk(&normals, &ray, &walls);
+            for (k, &at) in checkpoints.iter().enumerate() {
+                let Some(n) = steps.iter().position(|s| s.t >= at) else {
+                    continue;
+                };
+                if !reference[..=n].iter().all(|r| r.2) {
+                    continue;
+                }
+                let (t, x, _) = &reference[n];
+                let dt = (t.clone() - R::f(steps[n].t)).abs().to_f64();
+                let dx = distance_h(x, &V4::from_f64(steps[n].origin)).to_f64();
+                worst_t[k] = worst_t[k].max(dt);
+                worst_x[k] = worst_x[k].max(dx);
+            }
+        }
+        println!("{symbol}: drift at t = {checkpoints:?}: t {worst_t:?}, point {worst_x:?}");
+        // Nearby geodesics of the folded walk part like e^{2t} (measured:
+        // a 1e-13 change of the start grows the same way), and the walk's
+        // own rounding with them: 3e-15 e^{2t}, 3e-5 at the default
+        // horizon of 12.
+        for (k, at) in checkpoints.iter().enumerate() {
+            let bound = 3e-15 * (2.0 * at).exp();
+            assert!(
+                worst_t[k] < bound && worst_x[k] < bound,
+                "{symbol} t = {at}"
+            );
+        }
+    }
+}
+
+/// A ray back from a hit towards where it came from crosses nothing: the
+/// walk from the hit does not find the part it starts on again, even far
+/// out where the two walks drift apart.
+#[test]
+fn rays_back_from_far_hits_are_clear() {
+    let mut rng = SplitMix64::new(11);
+    for (p, q, r) in [(4, 3, 5), (6, 3, 3), (4, 4, 4)] {
+        // Thin rods: rays go far before meeting one.
+        let style = HoneycombStyle {
+            edges: Some(0.001),
+            faces: false,
+            vertices: None,
+            depth: None,
+            cell_classes: 1,
+        };
+        let h = honeycomb(p, q, r, style).with_horizon(15.0).unwrap();
+        let mut bad = Vec::new();
+        let mut ts = Vec::new();
+        for _ in 0..400 {
+            let ray = random_ray(&mut rng, 0.3);
+            let Some(hit) = h.intersect(&ray, 1e-9, f64::INFINITY) else {
+                continue;
+            };
+            ts.push(hit.t);
+            let back = Ray {
+                origin: hit.point,
+                dir: -ray.tangent_at(hit.t),
+            };
+            if let Some(b) = h.intersect(&back, 1e-9, hit.t * (1.0 - 1e-9)) {
+                bad.push((hit.t, b.t));
+            }
+        }
+        ts.sort_by(f64::total_cmp);
+        assert!(bad.is_empty(), "{p}{q}{r}: {bad:?}");
+        assert!(
+            ts.iter().filter(|&&t| t > 10.0).count() >= 3,
+            "{p}{q}{r}: {ts:?}"
+        );
+    }
+}
+
+/// The cells a walk enters are cells of `Tessellation435`: the centre of
+/// each (the chamber matrix applied to the base centre) is one of
+/// `tessellate`'s, and rays in all directions enter every cell of depth 1.
+#[test]
+fn cells_entered_by_walks_are_those_of_tessellate() {
+    let h = honeycomb(4, 3, 5, faces_only());
+    let explicit: Vec<DVec4> = tessellate(&cube_435().unwrap(), 3)
+        .unwrap()
+        .iter()
+        .map(|c| c.polyhedron.center().to_hyperboloid())
+        .collect();
+    let near: Vec<DVec4> = explicit[..7].to_vec();
+    let mut entered = vec![false; near.len()];
+    let mut rng = SplitMix64::new(8);
+    let mut checked = 0;
+    for _ in 0..300 {
+        let ray = Ray::from_origin(rng.direction()).unwrap();
+        for step in h.walk_steps(&ray, 40).iter().filter(|s| s.wall == 3) {
+            // The chamber entered across a face plane: its cell's centre.
+            let c = step.chamber.col(3);
+            if c.w > 4.0 {
+                break;
+            }
+            assert!(
+                explicit.iter().any(|e| lorentz::distance(*e, c) < 1e-9),
+                "{c:?} is no cell of depth 3"
+            );
+            checked += 1;
+            for (k, e) in near.iter().enumerate() {
+                entered[k] |= lorentz::distance(*e, c) < 1e-9;
+            }
+        }
+    }
+    assert!(checked > 300);
+    assert!(entered[1..].iter().all(|&e| e), "{entered:?}");
+}
+
+#[test]
+fn honeycombs_can_be_shared_between_threads() {
+    fn shareable<T: Send + Sync + Clone + std::fmt::Debug>() {}
+    shareable::<RegularHoneycomb>();
+    let h: Box<dyn Shape + Send + Sync> = Box::new(honeycomb(3, 5, 3, everything(1)));
+    assert!(h.bound().is_none() && h.is_representable());
 }

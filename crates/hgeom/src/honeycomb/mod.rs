@@ -10,10 +10,12 @@
 //!   colouring rule.
 //! - `style`: what is drawn; the parts a hit reports.
 //! - `walk`: [`RegularHoneycomb`], the honeycomb as one surface traced by
-//!   walking each ray through the simplex.
+//!   walking each ray through the simplex; `kernels`: the arithmetic of one
+//!   step.
 
 mod cells;
 mod cube435;
+mod kernels;
 mod schlafli;
 mod simplex;
 mod style;

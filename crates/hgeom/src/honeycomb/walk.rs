@@ -7,15 +7,19 @@
 //! strictly closer to `C`). Inside `C`, along `X(τ) = cosh τ O + sinh τ D`,
 //! `<X(τ),n_i> = a_i cosh τ + b_i sinh τ` with `a_i = <O,n_i> >= 0`,
 //! `b_i = <D,n_i>`, so the ray leaves through wall `i` at
-//! `tanh τ_i = -a_i / b_i` (only walls with `b_i < 0` and a value below 1):
-//! the exit is the wall with the least `tanh τ_i`, one `atanh` per step.
-//! The ray is then re-based at the exit point
-//! (`cosh τ = 1/sqrt(1 - s²)`, `sinh τ = s cosh τ`) and reflected in that
-//! wall, *the ray, not the scene*: it stays in the base simplex, where all
-//! coordinates are of order 1, and the arc lengths add up to the distance
-//! along the original ray. After every step `<O,O> = -1`, `<D,D> = 1`,
-//! `<O,D> = 0` are restored. The product `M` of the reflections maps the
-//! simplex to the chamber the ray is in; it carries normals back.
+//! `s_i = tanh τ_i = -a_i / b_i` (only walls with `b_i < 0` and `s_i < 1`):
+//! the exit is the wall with the least `s_i`. The ray is then re-based at
+//! the exit point, `(O + s D, s O + D)` (the unit pair times `cosh τ`), and
+//! reflected in that wall, *the ray, not the scene*: it stays in the base
+//! simplex, where all coordinates are of order 1. The common factor
+//! `cosh τ` changes no ratio `a_i / b_i`, so the walk carries it along
+//! (the part tests divide it out, `kernels.rs`) and
+//! restores `<O,O> = -1`, `<D,D> = 1`, `<O,D> = 0` every few steps. Arc
+//! lengths are kept as `e^{2τ} = (1 + s)/(1 - s)`, multiplied along the
+//! walk: a step costs eight Lorentz products and a few divisions, no
+//! square root and no logarithm. The product `M` of the reflections maps
+//! the simplex to the chamber the ray is in; it carries normals back and
+//! finds the cells of a part.
 //!
 //! **The parts in one chamber.** For a point `X` of `C` and any `g` of the
 //! group, `d(X, gY) >= d(X, Y)` for `Y` in `C` (a geodesic from `X` to `gY`
@@ -28,31 +32,54 @@
 //!   orthogonal to the edge at `v1` with `C` on the `v0` side, and every
 //!   direction of `C` at `v0` (towards `v1`, `v2`, `v3`) makes an angle
 //!   below 90° with the edge (angles of right triangles), so no caps are
-//!   needed. With the orthonormal pair `N1 = n3`,
+//!   needed, and the tube pieces of all chambers make up exactly the
+//!   capped rods about all edges. With the orthonormal pair `N1 = n3`,
 //!   `N2 = (n2 + cos(π/r) n3)/sin(π/r)` orthogonal to the line,
 //!   `sinh² d = <X,N1>² + <X,N2>²`, and both products are combinations of
 //!   the `a_i`, `b_i` already at hand: the tube is a quadratic in `e^{2τ}`
-//!   ([`HCylinder`](crate::HCylinder)'s).
+//!   ([`HCylinder`](crate::HCylinder)'s). An edge to an ideal vertex is the
+//!   same tube, out to the absolute.
 //! - *vertex*: the ball `-<X,v0> = cosh ρ`, a quadratic in `e^τ`; not drawn
-//!   at an ideal `v0`.
+//!   at an ideal `v0` (it would be a horoball).
 //! - *face*: the face piece is the wall `m3` of `C` itself, so the ray
 //!   meets a face exactly when it leaves `C` through `m3`: no test at all.
+//!   The faces of horosphere-inscribed cells (infinitely many per cell) come
+//!   out the same way. Faces are two-sided: the normal faces the ray.
 //!
 //! **Where the walk stops.** At `t_max`, at the *horizon* (distance
-//! [`DEFAULT_HORIZON`] from the origin of the frame the shape is in, which
-//! in a renderer is the eye; see [`RegularHoneycomb::with_horizon`]), where
-//! a depth-limited honeycomb can reach no listed cell any more, or after
-//! [`MAX_WALK_STEPS`] chambers. Nothing is drawn beyond: the ray misses (the
-//! background shows). Near the horizon of 15 a 1000-pixel image resolves
-//! nothing anyway: a cell of size 1 subtends `1/sinh 15 ≈ 6e-7` rad.
-//! [`RegularHoneycomb::horizon_for_pixel`] gives the distance where the
-//! smallest feature falls below a pixel.
+//! [`DEFAULT_HORIZON`] = 12 from the origin of the frame the shape is in,
+//! which in a renderer is the eye; [`RegularHoneycomb::with_horizon`]
+//! changes it), where a depth-limited honeycomb can reach no listed cell
+//! any more (a ball about the base cell holding all of them), or after
+//! [`MAX_WALK_STEPS`] chambers. Nothing is drawn beyond: the ray misses and
+//! the background shows. At distance 12 a cell of size 1 subtends
+//! `1/sinh 12 ≈ 1.2e-5` rad, a hundredth of a pixel of a 1000-pixel image
+//! with a 90° field; [`RegularHoneycomb::horizon_for_pixel`] gives the
+//! distance where a cell's features fall below a given pixel. Up the cusp
+//! of an ideal vertex the rods widen (in the upper half-space with the
+//! vertex at infinity they are cones about vertical lines) until they fill
+//! it, so rays towards ideal vertices end on rods; a ray into the cusp of an
+//! ideal cell centre is inside that cell and may reach the horizon.
 //!
-//! **Accuracy.** The hit point is the original ray's point at the summed arc
-//! length, so only `t` carries the walk's rounding; the local ray drifts by
-//! the rounding of each step, amplified like `e^{Δt}` by the divergence of
-//! geodesics (measured against a 320-bit walk in
-//! `tests/honeycomb_walk.rs`).
+//! **Accuracy.** The hit point is the original ray's point at the walked
+//! arc length, so only `t` carries the walk's rounding. Against a 320-bit
+//! walk of the same f64 ray through the same walls
+//! (`walk_drift_against_a_320_bit_walk` in `tests/honeycomb_walk.rs`,
+//! worst of 6 rays for each of 6 honeycombs) the arc length and the point
+//! in the simplex drift by 1e-11 at `t = 5`, 2e-7 at 10, 1e-5 at 12 and
+//! 4e-3 at 15: about `3e-15 e^{2t}`, the growth of a 1e-13 change of the
+//! ray's start under the same walk, so the walk adds a few ulps per step
+//! and the folding of geodesics does the rest. Walks that agree on their
+//! parts agree on `t` to 1e-9 within the horizon (`symmetries_…` and
+//! `walk_matches_explicit_cells` in the same file: 3e-13 against explicit
+//! `{4,3,5}` polygons, rods and balls). Normals are the local normal carried
+//! by `M` and made tangent at the hit point again; they agree with the
+//! explicit cells' to 1e-6. A ray that starts on a part far from the base
+//! point (a shadow or reflected ray from a far hit) would meet that part
+//! again within the two walks' drift, so parts within `1e-14 x0²` of a
+//! ray's start are skipped (`x0` the cosh of the start's distance from the
+//! base point: 1e-14 near it, 3e-4 at distance 12;
+//! `rays_back_from_far_hits_are_clear`).
 
 use std::sync::Arc;
 
@@ -66,17 +93,28 @@ use crate::ray::{Hit, Ray};
 use crate::roots::exp_roots;
 
 use super::cells::{CellSet, Shells, orbit};
+use super::kernels::{
+    exp_roots_plain, lorentz_inverse, reflect, renormalise, times_reflection, tube_roots,
+};
 use super::schlafli::Schlafli;
 use super::simplex::CoxeterSimplex;
 use super::style::{HoneycombPart, HoneycombStyle, encode_part};
 
 /// The default horizon: the walk stops at this distance from the origin of
 /// the frame (module docs).
-pub const DEFAULT_HORIZON: f64 = 15.0;
+pub const DEFAULT_HORIZON: f64 = 12.0;
 
 /// The most chambers one ray may cross; a ray that would cross more (one
 /// aimed within `e^{-15}` of an ideal vertex, spiralling up its cusp) misses.
 pub const MAX_WALK_STEPS: u32 = 200_000;
+
+/// Parts within `SELF_HIT x0²` of a ray's start are skipped, `x0` the
+/// cosh of the start's distance from the base point: the drift of a walk
+/// to distance `d` is about `1e-16 e^{2d}` (module docs), and a ray that
+/// starts on a part found by another walk must not find it again. Near the
+/// base point this is 1e-14; at distance 12, 3e-4 (a thousandth of a pixel
+/// of a 1000-pixel image seen from the base point).
+const SELF_HIT: f64 = 1e-14;
 
 /// The walk restores `<O,O> = -1`, `<D,D> = 1`, `<O,D> = 0` every this
 /// many chambers (rounding drifts them by a few ulps per step).
@@ -153,12 +191,6 @@ pub struct RegularHoneycomb {
     /// `cosh` of the radius of a ball about the base point holding every
     /// part of a depth-limited honeycomb with finite cells and vertices.
     cosh_reach: Option<f64>,
-}
-
-/// The inverse of a Lorentz matrix: `J Lᵀ J`.
-fn lorentz_inverse(l: DMat4) -> DMat4 {
-    let j = DMat4::from_diagonal(DVec4::new(1.0, 1.0, 1.0, -1.0));
-    j * l.transpose() * j
 }
 
 impl RegularHoneycomb {
@@ -253,19 +285,16 @@ impl RegularHoneycomb {
         self.horizon
     }
 
-    /// The distance from an eye at the origin beyond which the smallest
-    /// feature of the honeycomb (the distance from an edge's midpoint to the
-    /// face centre, doubled, or the rod's diameter if smaller) subtends
-    /// less than `pixel_angle` radians: a circle of radius `t` has
-    /// circumference `2π sinh t`, so a feature of size `s` at distance `t`
-    /// subtends `s / sinh t`, and `t = asinh(s / pixel_angle)`. Capped at
-    /// 36.
+    /// The distance from an eye at the origin beyond which a cell's
+    /// features subtend less than `pixel_angle` radians: a circle of radius
+    /// `t` has circumference `2π sinh t`, so a feature of size `s` at
+    /// distance `t` subtends `s / sinh t`, and `t = asinh(s / pixel_angle)`,
+    /// with `s` twice the distance from an edge's midpoint to a face centre
+    /// (the width of a face across its middle: 1.06 for `{4,3,5}`). Thin
+    /// rods vanish sooner; this is where the cells themselves do. At most 36.
     pub fn horizon_for_pixel(&self, pixel_angle: f64) -> f64 {
         let v = CoxeterSimplex::new(self.symbol).vertices();
-        let mut size = 2.0 * lorentz::distance(v[1], v[2]);
-        if let Some(w) = self.style.edges {
-            size = size.min(2.0 * w);
-        }
+        let size = 2.0 * lorentz::distance(v[1], v[2]);
         (size / pixel_angle).asinh().clamp(f64::MIN_POSITIVE, 36.0)
     }
 
@@ -408,6 +437,11 @@ impl RegularHoneycomb {
         let l = &*self.local;
         let (ch, sh) = (lo.cosh(), lo.sinh());
         let mut o = self.to_local * (ch * ray.origin + sh * ray.dir);
+        // A ray that starts on a part far from the base point (a shadow or
+        // reflected ray from a far hit) would meet that part again within
+        // the drift of the two walks; parts nearer than this to the start
+        // are skipped (module docs, "Accuracy").
+        let v_guard = (2.0 * SELF_HIT * o.w * o.w).exp();
         let mut d = self.to_local * (sh * ray.origin + ch * ray.dir);
         renormalise(&mut o, &mut d);
         let mut m = DMat4::IDENTITY;
@@ -468,7 +502,8 @@ impl RegularHoneycomb {
                 m: &m,
                 shadow: any,
             };
-            if let Some((v, kind)) = self.first_part(&chamber, v_exit.min(span)) {
+            let floor = (v_guard / u_acc).max(1.0);
+            if let Some((v, kind)) = self.first_part(&chamber, floor, v_exit.min(span)) {
                 let t = lo + 0.5 * (u_acc * v).ln();
                 return Some(self.hit(ray, t, &chamber, v, kind));
             }
@@ -485,7 +520,7 @@ impl RegularHoneycomb {
             o2 -= lorentz::dot(o2, n) * n;
             d = reflect(s_min * o + d, n);
             o = o2;
-            if stats.chambers % RENORMALISE_EVERY == 0 {
+            if stats.chambers.is_multiple_of(RENORMALISE_EVERY) {
                 renormalise(&mut o, &mut d);
             }
             if need_m {
@@ -514,16 +549,21 @@ impl RegularHoneycomb {
         None
     }
 
-    /// The first part in this chamber met at `1 < v <= window`, in
+    /// The first part in this chamber met at `floor < v <= window`, in
     /// `v = e^{2τ}`, with its class (0 for a shadow ray, which needs none).
-    fn first_part(&self, c: &Chamber, window: f64) -> Option<(f64, (HoneycombPart, u32))> {
+    fn first_part(
+        &self,
+        c: &Chamber,
+        floor: f64,
+        window: f64,
+    ) -> Option<(f64, (HoneycombPart, u32))> {
         let l = &*self.local;
         let (a, b) = (&c.a, &c.b);
         let mut found: Option<(f64, HoneycombPart)> = None;
         let in_window = |v: f64, found: &Option<(f64, HoneycombPart)>| {
-            v > 1.0 && v <= window && found.is_none_or(|(best, _)| v < best)
+            v > floor && v <= window && found.is_none_or(|(best, _)| v < best)
         };
-        let first_root = |(near, far): (f64, f64)| if near > 1.0 { near } else { far };
+        let first_root = |(near, far): (f64, f64)| if near > floor { near } else { far };
         // o and d carry a common scale λ, λ² = -<o,o>: the tube's
         // quadratic is homogeneous of degree 2 in (o, d, sinh w), the ball's
         // of degree 1 in (o, d, cosh ρ), and their roots do not change.
@@ -649,63 +689,4 @@ struct Chamber<'a> {
     v_exit: f64,
     m: &'a DMat4,
     shadow: bool,
-}
-
-/// `x - 2 <x,n> n`.
-#[inline]
-fn reflect(x: DVec4, n: DVec4) -> DVec4 {
-    x - 2.0 * lorentz::dot(x, n) * n
-}
-
-/// `M R` for the reflection `R` in the unit normal `n`:
-/// `M (X - 2 <X,n> n) = M X - 2 (M n) (J n)ᵀ X`, a rank-one update.
-#[inline]
-fn times_reflection(m: &DMat4, n: DVec4) -> DMat4 {
-    let mn = 2.0 * (*m * n);
-    DMat4::from_cols(
-        m.x_axis - n.x * mn,
-        m.y_axis - n.y * mn,
-        m.z_axis - n.z * mn,
-        m.w_axis + n.w * mn,
-    )
-}
-
-/// Restores `<O,O> = -1`, `<D,D> = 1`, `<O,D> = 0` after rounding.
-#[inline]
-fn renormalise(o: &mut DVec4, d: &mut DVec4) {
-    *o /= (-lorentz::dot(*o, *o)).sqrt();
-    *d += lorentz::dot(*o, *d) * *o;
-    *d /= lorentz::dot(*d, *d).sqrt();
-}
-
-/// The roots of `c_1(τ)² + c_2(τ)² = sinh² w` with
-/// `c_i = o_i cosh τ + v_i sinh τ` (the tube), as values of `e^{2τ}`, from
-/// [`HCylinder::roots`](crate::HCylinder::roots)'s quadratic.
-#[inline]
-fn tube_roots(o: [f64; 2], v: [f64; 2], sinh2: f64) -> Option<(f64, f64)> {
-    let p = [o[0] + v[0], o[1] + v[1]];
-    let q = [o[0] - v[0], o[1] - v[1]];
-    let a = p[0] * p[0] + p[1] * p[1];
-    let c = q[0] * q[0] + q[1] * q[1];
-    let pq = (o[0] * o[0] + o[1] * o[1]) - (v[0] * v[0] + v[1] * v[1]);
-    let k = 2.0 * sinh2 - pq;
-    if !(k > 0.0) {
-        return None;
-    }
-    exp_roots_plain(a, k, c)
-}
-
-/// The roots `u_near <= u_far` of `alpha u² - 2 k u + beta = 0` for
-/// `alpha, beta >= 0`, `k > 0`: [`exp_roots`] without the logarithms.
-#[inline]
-fn exp_roots_plain(alpha: f64, k: f64, beta: f64) -> Option<(f64, f64)> {
-    let disc = k * k - alpha * beta;
-    if !(disc >= 0.0) {
-        return None;
-    }
-    let big = k + disc.sqrt();
-    if !(big > 0.0) {
-        return None;
-    }
-    Some((beta / big, big / alpha))
 }
