@@ -219,3 +219,43 @@ fn a_symmetry_applied_to_the_camera_leaves_the_picture_unchanged() {
     eprintln!("half a turn: {share} of the pixels agree");
     assert!(share < 0.9);
 }
+
+/// Shadow rays walk the honeycomb and lose light at every face they cross:
+/// a ball in the base cell lit from the next cell is brighter behind clear
+/// faces than behind opaque ones, and brightest with no faces at all.
+#[test]
+fn shadow_rays_cross_faces_by_their_transmission() {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    // The {4,3,5} cube's face `x = +h` is at ball x = 0.26; the light is
+    // beyond it, the ball and the eye inside, the light off the picture.
+    let scene = |faces: &str| {
+        format!(
+            "Globals {{ from = (0, 0, -0.2); to = (0, 0, 0); fov = 40; background = (0, 0, 0); \
+             ambient = (0, 0, 0); recursion_depth = 0; }}\n\
+             BRDFs {{ ball: diffuse = (1, 1, 1); edge: diffuse = (0.5, 0.5, 0.5); \
+             clear: diffuse = (0, 0, 0), trans = 0.9; dark: diffuse = (0, 0, 0), trans = 0; }}\n\
+             Lights {{ (0.45, 0, 0), (20, 20, 20), (0, 0, 0); }}\n\
+             Objects {{ Sphere (0, 0, 0), 0.1, #ball; Honeycomb {{4,3,5}}, #edge, edges = 0.01{faces}; }}\n"
+        )
+    };
+    let brightness = |name: &str, faces: &str| -> f64 {
+        let (img, _) = render(dir.path(), name, &scene(faces), 32);
+        // The middle of the picture: the lit ball.
+        let mut sum = 0.0;
+        for y in 12..20 {
+            for x in 12..20 {
+                sum += f64::from(img[y * 32 + x][0]);
+            }
+        }
+        sum
+    };
+    let open = brightness("open", "");
+    let clear = brightness("clear", ", faces = #clear");
+    let dark = brightness("dark", ", faces = #dark");
+    eprintln!("ball brightness: no faces {open}, clear faces {clear}, opaque faces {dark}");
+    assert!(open > clear && clear > dark, "{open} {clear} {dark}");
+    assert!(
+        dark < 0.05 * open,
+        "opaque faces cast a shadow: {dark} of {open}"
+    );
+}

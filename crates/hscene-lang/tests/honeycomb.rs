@@ -156,3 +156,49 @@ fn the_formatter_keeps_the_symbol_as_mathematicians_write_it() {
     let out = hscene_lang::format(src).expect("no syntax errors");
     assert_eq!(out, "Objects {\n    Honeycomb {6,3,3}, #1, depth = 1;\n}\n");
 }
+
+/// Every hit says what it met; faces take `faces = #F` or the palette by
+/// class, edges and vertices `#M` or, with `faces` too, the palette.
+#[test]
+fn each_part_is_drawn_in_its_material() {
+    use hgeom::{HoneycombPart, Ray, Shape as _, decode_honeycomb_part};
+    let directions = (0..3000).map(|i| {
+        let a = f64::from(i) * 0.618_033_988_749_895 * std::f64::consts::TAU;
+        let z = 1.0 - 2.0 * (f64::from(i) + 0.5) / 3000.0;
+        let r = (1.0 - z * z).sqrt();
+        DVec3::new(r * a.cos(), r * a.sin(), z)
+    });
+    let directions: Vec<DVec3> = directions.collect();
+    let cases = [
+        "Honeycomb {5,3,4}, #edge, edges = 0.05, vertices = 0.15, colors = (#a, #b);",
+        "Honeycomb {5,3,4}, #edge, edges = 0.05, vertices = 0.15, faces = #glass, colors = (#a, #b);",
+        "Honeycomb {5,3,4}, #edge, edges = 0.05, vertices = 0.15, faces = #glass;",
+    ];
+    for (case, objects) in cases.iter().enumerate() {
+        let s = scene(objects);
+        let h = only_honeycomb(&s);
+        let own = s.objects[0].material.index();
+        let [edge, glass, a, b] = ["edge", "glass", "a", "b"].map(|n| material(&s, n).index());
+        let mut seen = [false; 3];
+        for dir in &directions {
+            let ray = Ray::from_origin_unchecked(*dir);
+            let Some(hit) = h.surface.intersect(&ray, 0.0, f64::INFINITY) else {
+                continue;
+            };
+            let (kind, class) = decode_honeycomb_part(hit.part);
+            let coloured = if class % 2 == 0 { a } else { b };
+            let got = h.materials.material(hit.part, own);
+            let want = match (case, kind) {
+                (0, HoneycombPart::Face) => coloured,
+                (0, _) => edge,
+                (1, HoneycombPart::Face) => glass,
+                (1, _) => coloured,
+                (_, HoneycombPart::Face) => glass,
+                (_, _) => edge,
+            };
+            assert_eq!(got, want, "case {case}: {kind:?} of class {class}");
+            seen[kind as usize] = true;
+        }
+        assert!(seen.iter().all(|s| *s), "case {case}: parts met {seen:?}");
+    }
+}
