@@ -46,7 +46,7 @@ const GRID: u32 = 64;
 /// The edges' radius: the language's default.
 const EDGE_RADIUS: f64 = 0.02;
 /// Reflections after which the drift is measured, and the rays measured.
-const DRIFT_STEPS: [u32; 3] = [10, 100, 1000];
+const DRIFT_STEPS: [u32; 4] = [10, 20, 40, 60];
 const DRIFT_RAYS: u32 = 64;
 
 /// The honeycomb scene: the eye at the centre of the base cube, looking at
