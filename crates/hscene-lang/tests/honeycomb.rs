@@ -161,7 +161,7 @@ fn the_formatter_keeps_the_symbol_as_mathematicians_write_it() {
 /// class, edges and vertices `#M` or, with `faces` too, the palette.
 #[test]
 fn each_part_is_drawn_in_its_material() {
-    use hgeom::{HoneycombPart, Ray, Shape as _, decode_honeycomb_part};
+    use hgeom::{HoneycombPart, Ray, decode_honeycomb_part};
     let directions = (0..3000).map(|i| {
         let a = f64::from(i) * 0.618_033_988_749_895 * std::f64::consts::TAU;
         let z = 1.0 - 2.0 * (f64::from(i) + 0.5) / 3000.0;
