@@ -30,7 +30,7 @@
 //! (`misses`: a hierarchy that loses objects shows here).
 
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, ExitCode};
 
 use hgeom::glam::DVec3;
@@ -39,7 +39,7 @@ use hscene_lang::ir::{Scene, Shape};
 use hscene_test_support::SplitMix64;
 
 mod common;
-use common::{Measured, Probe, v};
+use common::{Measured, Probe, hscene_binary, povray_installed, v};
 
 /// Horizontal (and, the image being square, vertical) field of view.
 const FOV_DEGREES: f64 = 60.0;
@@ -279,20 +279,6 @@ fn hierarchy_misses(probe: &Probe) -> usize {
 }
 
 /// The `hscene` binary this bench measures.
-fn hscene_binary() -> Option<PathBuf> {
-    if let Some(path) = option_env!("CARGO_BIN_EXE_hscene") {
-        return Some(path.into());
-    }
-    let exe = std::env::current_exe().ok()?;
-    let path = exe.parent()?.parent()?.join("hscene");
-    path.is_file().then_some(path)
-}
-
-fn povray_installed() -> bool {
-    std::env::var_os("PATH")
-        .is_some_and(|paths| std::env::split_paths(&paths).any(|d| d.join("povray").is_file()))
-}
-
 struct Row {
     name: String,
     objects: usize,

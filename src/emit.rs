@@ -273,6 +273,19 @@ fn object(i: usize, o: &Object) -> Value {
             "dropped_triangles": m.dropped_triangles(),
             "smooth": m.smooth_angle(),
         }),
+        Shape::Honeycomb(h) => {
+            let symbol = h.surface.symbol();
+            let style = h.surface.style();
+            json!({
+                "symbol": [symbol.p(), symbol.q(), symbol.r()],
+                "base_center": point(&h.surface.base_cell_center()),
+                "edges": style.edges,
+                "vertices": style.vertices,
+                "depth": style.depth,
+                "face_material": h.materials.faces.map(|m| m.index() + 1),
+                "colors": h.materials.palette.iter().map(|m| m.index() + 1).collect::<Vec<_>>(),
+            })
+        }
     };
     if let (Value::Object(out), Value::Object(params)) = (&mut v, params) {
         out.insert("kind".into(), Value::from(o.shape.kind_name()));
@@ -299,6 +312,7 @@ Objects {
   Rod %a, %b, 0.01, #1;
   Cylinder %a, %i, 0.01, #1;
   Horosphere %i, %c, #1;
+  Honeycomb {5,3,4}, #1, edges = 0.03, faces = #m, depth = 1, colors = (#1, #m), at = %c;
 }";
         let compiled = hscene_lang::compile(src);
         assert!(!compiled.has_errors(), "{:#?}", compiled.diagnostics);
@@ -327,9 +341,19 @@ Objects {
                 "plane",
                 "rod",
                 "cylinder",
-                "horosphere"
+                "horosphere",
+                "honeycomb"
             ]
         );
+        let h = &v["objects"][8];
+        assert_eq!(h["symbol"], json!([5, 3, 4]));
+        assert_eq!(h["edges"], 0.03);
+        assert_eq!(h["vertices"], Value::Null);
+        assert_eq!(h["depth"], 1);
+        assert_eq!(h["face_material"], 1);
+        assert_eq!(h["colors"], json!([1, 1]));
+        let z = h["base_center"][2].as_f64().unwrap();
+        assert!((z - 0.3).abs() < 1e-15, "{}", h["base_center"]);
         assert_eq!(v["objects"][0]["name"], "ball");
         assert_eq!(v["objects"][0]["radius"], 0.05);
         assert_eq!(v["objects"][2]["faces"].as_array().unwrap().len(), 6);

@@ -2,7 +2,7 @@
 //! renderers run as measured child processes (POV-Ray among them), and the
 //! error of primary hits against the 320-bit reference.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::Instant;
 
@@ -11,6 +11,28 @@ use hgeom::{HCylinder, HSphere, Ray, Rod, Vertex};
 use hrender::{CanonicalCamera, Nearest, PixelNet, PreparedScene, Sample};
 use hscene_lang::ir::{Net, Resolution, Scene, Shape};
 use hscene_test_support::reference::{self as r, R, V4};
+
+// The thesis and honeycomb benches use these; the scale bench does not.
+#[allow(dead_code)]
+pub mod thesis_scenes;
+
+/// The `hscene` binary Cargo built for this bench (`CARGO_BIN_EXE_hscene`);
+/// failing that, the one two directories above the bench's executable
+/// (`target/release/deps/..`).
+pub fn hscene_binary() -> Option<PathBuf> {
+    if let Some(path) = option_env!("CARGO_BIN_EXE_hscene") {
+        return Some(path.into());
+    }
+    let exe = std::env::current_exe().ok()?;
+    let path = exe.parent()?.parent()?.join("hscene");
+    path.is_file().then_some(path)
+}
+
+/// Whether `povray` is on the PATH.
+pub fn povray_installed() -> bool {
+    std::env::var_os("PATH")
+        .is_some_and(|paths| std::env::split_paths(&paths).any(|d| d.join("povray").is_file()))
+}
 
 /// The value after `--name` on the command line.
 pub fn arg_value<'a>(args: &'a [String], name: &str) -> Option<&'a str> {

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Render the thesis gallery (docs/gallery.md): every scenes/thesis/fig*.hsc
-# becomes docs/gallery/<same name>.png, at the resolution the scene file
-# sets (at most 400 pixels wide), with 4 samples per pixel for
-# anti-aliasing.
+# Render the thesis gallery (docs/gallery.md) and the gallery of the 15
+# regular honeycombs (docs/honeycombs.md): every scenes/thesis/fig*.hsc and
+# scenes/honeycomb-p-q-r.hsc becomes docs/gallery/<same name>.png, at the
+# resolution the scene file sets (at most 400 pixels wide), with 4 samples
+# per pixel for anti-aliasing.
 #
 # Usage: docs/gallery/render.sh [SCENE...]   (default: all of them)
 # Environment: SAMPLES (default 4), THREADS (default: all cores).
@@ -18,7 +19,11 @@ samples=${SAMPLES:-4}
 threads=()
 if [[ -n "${THREADS:-}" ]]; then threads=(--threads "$THREADS"); fi
 
-if [[ $# -gt 0 ]]; then scenes=("$@"); else scenes=(scenes/thesis/fig*.hsc); fi
+if [[ $# -gt 0 ]]; then
+    scenes=("$@")
+else
+    scenes=(scenes/thesis/fig*.hsc scenes/honeycomb-?-?-?.hsc)
+fi
 
 start=$(date +%s.%N)
 for scene in "${scenes[@]}"; do

@@ -6,7 +6,7 @@
 
 use hgeom::glam::{DVec3, DVec4};
 use hgeom::{Hit, Isometry, KleinBox, Point, Ray};
-use hscene_lang::ir::{self, BoxedSurface, Fog, Material, Rgb, Scene, Surfaces};
+use hscene_lang::ir::{self, BoxedSurface, Fog, Material, PartMaterials, Rgb, Scene, Surfaces};
 
 use rayon::prelude::*;
 
@@ -23,10 +23,25 @@ pub struct PreparedObject {
     pub surfaces: Vec<BoxedSurface>,
     /// Index into the materials.
     pub material: usize,
+    /// The materials of its parts, for an object drawn in several (a
+    /// honeycomb's faces, edges and cell colours): each hit's `part` picks
+    /// one ([`PreparedObject::material_of`]).
+    pub parts: Option<PartMaterials>,
     /// From the canonical frame to the object's local space, where its
     /// texture is fixed: `(to_canonical ∘ placement)^-1`.
     pub to_local: Isometry,
 }
+
+/// Shadow rays through an object drawn in several materials stop counting
+/// its crossings here: the light left is below 1/1000 (counted as none) or
+/// the ray has crossed this many of its parts.
+const MIN_TRANSMITTANCE: f64 = 1e-3;
+const MAX_PART_CROSSINGS: u32 = 64;
+
+/// How far past a part's crossing the next one is looked for: the hit was
+/// on a wall the walk crosses there, and finding it again would count one
+/// face twice. The tracer's own offset for secondary rays.
+const PART_GAP: f64 = crate::tracer::T_MIN;
 
 impl std::fmt::Debug for PreparedObject {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -38,6 +53,14 @@ impl std::fmt::Debug for PreparedObject {
 }
 
 impl PreparedObject {
+    /// The index of the material of the part a hit met (`hit.part`).
+    pub fn material_of(&self, part: u32) -> usize {
+        match &self.parts {
+            None => self.material,
+            Some(p) => p.material(part, self.material),
+        }
+    }
+
     /// The shape moved by each of `stages` in turn, as surfaces.
     fn surfaces_of(shape: &ir::Shape, stages: &[Isometry]) -> Vec<BoxedSurface> {
         let mut moved = shape.transformed(&stages[0]);
@@ -160,6 +183,21 @@ impl PreparedScene {
                         scene.materials.len()
                     )));
                 }
+                let parts = o.shape.part_materials().cloned();
+                let part_ids = parts
+                    .iter()
+                    .flat_map(|p| p.faces.iter().chain(&p.palette));
+                if let Some(bad) = part_ids
+                    .map(|m| m.index())
+                    .find(|&m| m >= scene.materials.len())
+                {
+                    return Err(RenderError::InvalidScene(format!(
+                        "object {} uses material {} for some of its parts, but there are only {}",
+                        index + 1,
+                        bad + 1,
+                        scene.materials.len()
+                    )));
+                }
                 let surfaces = PreparedObject::surfaces_of(&o.shape, stages);
                 if !surfaces.iter().all(|s| s.is_traceable()) {
                     return Err(RenderError::OutOfRange {
@@ -169,6 +207,7 @@ impl PreparedScene {
                 Ok(PreparedObject {
                     surfaces,
                     material: o.material.index(),
+                    parts,
                     to_local: stages
                         .iter()
                         .fold(o.placement, |f, iso| iso.compose(&f))
@@ -256,7 +295,9 @@ impl PreparedScene {
 
     /// The fraction of light passing along the ray's arc `(t_min, t_max)`:
     /// each object met multiplies it by its transmission coefficient, once
-    /// per object. The search ends at the first opaque blocker.
+    /// per object; an object drawn in several materials (a honeycomb) by
+    /// that of each part crossed, since its transparent faces are many
+    /// separate sheets. The search ends at the first opaque blocker.
     pub fn transmittance(&self, ray: &Ray, t_min: f64, t_max: f64) -> f64 {
         let mut s = 1.0;
         // The objects already counted: only translucent ones get here, and
@@ -268,7 +309,14 @@ impl PreparedScene {
                 return Step::Continue;
             }
             let o = &self.objects[r.object as usize];
-            if o.surfaces[r.surface as usize].blocks(ray, t_min, t_max) {
+            let surface = &o.surfaces[r.surface as usize];
+            if o.parts.is_some() {
+                s *= self.parts_transmittance(o, surface, ray, t_min, t_max);
+                if s == 0.0 {
+                    return Step::Stop;
+                }
+                counted.push(r.object);
+            } else if surface.blocks(ray, t_min, t_max) {
                 // PreparedScene::new checked every material index.
                 s *= self.materials[o.material].transmission;
                 if s == 0.0 {
@@ -278,6 +326,34 @@ impl PreparedScene {
             }
             Step::Continue
         });
+        s
+    }
+
+    /// The light an object drawn in several materials lets through along
+    /// `(t_min, t_max)` of one of its surfaces: the product of the
+    /// transmissions of the parts the ray crosses, found one after the
+    /// other.
+    fn parts_transmittance(
+        &self,
+        o: &PreparedObject,
+        surface: &BoxedSurface,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+    ) -> f64 {
+        let mut s = 1.0;
+        let mut from = t_min;
+        for _ in 0..MAX_PART_CROSSINGS {
+            let Some(hit) = surface.intersect(ray, from, t_max) else {
+                return s;
+            };
+            // PreparedScene::new checked every material index of the parts.
+            s *= self.materials[o.material_of(hit.part)].transmission;
+            if s < MIN_TRANSMITTANCE {
+                return 0.0;
+            }
+            from = hit.t + PART_GAP;
+        }
         s
     }
 }

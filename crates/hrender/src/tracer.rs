@@ -115,7 +115,7 @@ impl<'s> Tracer<'s> {
         };
         let object = &self.scene.objects[index];
         // PreparedScene::new checked every material index.
-        let m = &self.scene.materials[object.material];
+        let m = &self.scene.materials[object.material_of(hit.part)];
         let d = ray.tangent_at(hit.t);
         // The hyperboloid loses unit tangent vectors far from the eye (its
         // f64 range ends near distance 19, docs/geometry.md section 16). Along a ray the error of

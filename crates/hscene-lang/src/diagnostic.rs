@@ -138,6 +138,7 @@ codes! {
     DegeneratePlane = "HSC0310", Error, "degenerate plane";
     ImpossibleFigure = "HSC0311", Error, "impossible figure";
     NotAnimatable = "HSC0312", Error, "transformation cannot be animated";
+    NotHyperbolic = "HSC0313", Error, "symbol of no hyperbolic honeycomb";
     // Settings.
     ZeroResolution = "HSC0401", Error, "zero resolution";
     UnknownNetType = "HSC0402", Error, "unknown net type";
@@ -343,7 +344,7 @@ mod tests {
     #[test]
     fn code_table_is_consistent() {
         assert_eq!(Code::ALL.len(), CODES.len());
-        assert_eq!(Code::ALL.len(), 46);
+        assert_eq!(Code::ALL.len(), 47);
         let mut strings = HashSet::new();
         for &(code, s, sev, title) in CODES {
             assert_eq!(code.as_str(), s);

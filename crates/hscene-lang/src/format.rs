@@ -13,6 +13,8 @@
 //!   indentation, as the thesis writes its `BRDFs`;
 //! - `, ` after commas, ` = ` around `=`, `: ` after a label, no space inside
 //!   parentheses, around `->` or before the `(` of an application;
+//! - a Schläfli symbol inside a statement is written `{4,3,5}`, as
+//!   mathematicians write it: no space inside its braces;
 //! - comments stay where they were: a comment that ended a line still ends
 //!   it, a comment on its own line stays on its own line (re-indented), and
 //!   one blank line is kept where the author left one or more.
@@ -69,6 +71,7 @@ pub fn format(source: &str) -> Result<String, FormatError> {
         in_section: false,
         statement: None,
         paren_depth: 0,
+        in_symbol: false,
     };
     for i in 0..tokens.len() {
         w.token(i);
@@ -118,6 +121,9 @@ struct Writer<'a> {
     in_section: bool,
     statement: Option<Statement>,
     paren_depth: usize,
+    /// Between the braces of a Schläfli symbol (`{4,3,5}`): braces inside a
+    /// section are only ever those, and they do not nest.
+    in_symbol: bool,
 }
 
 impl Writer<'_> {
@@ -158,6 +164,8 @@ impl Writer<'_> {
             s.at_clause_start = false;
         }
         match t.kind {
+            TokenKind::LBrace if self.in_section => self.in_symbol = true,
+            TokenKind::RBrace if self.in_symbol => self.in_symbol = false,
             TokenKind::LBrace => {
                 self.in_section = true;
                 self.pending = Pending::Break;
@@ -174,7 +182,7 @@ impl Writer<'_> {
             }
             TokenKind::LParen => self.paren_depth += 1,
             TokenKind::RParen => self.paren_depth = self.paren_depth.saturating_sub(1),
-            TokenKind::Comma if self.paren_depth == 0 => {
+            TokenKind::Comma if self.paren_depth == 0 && !self.in_symbol => {
                 if let Some(s) = &mut self.statement
                     && s.clause_per_line
                 {
@@ -270,6 +278,9 @@ impl Writer<'_> {
         let Some(prev) = self.prev else {
             return false;
         };
+        if self.in_symbol {
+            return false;
+        }
         !matches!(
             (prev, next),
             (_, Comma | Semi | RParen | Colon) | (LParen | Arrow, _) | (_, Arrow) | (Ident, LParen)
@@ -339,6 +350,21 @@ mod tests {
         assert_eq!(fmt("  \n\n"), "");
         assert_eq!(fmt("// only\n"), "// only\n");
         assert_eq!(fmt("Points {\n\n}"), "Points {\n}\n");
+    }
+
+    #[test]
+    fn schlafli_symbols_keep_their_braces_tight() {
+        let src = "Objects{Honeycomb { 4 , 3,5 },#1,depth=2;\nTessellation435 1, #1;}";
+        assert_eq!(
+            fmt(src),
+            "Objects {\n    Honeycomb {4,3,5}, #1, depth = 2;\n    Tessellation435 1, #1;\n}\n"
+        );
+        // A material-like statement is not split inside a symbol.
+        let src = "Objects { Honeycomb {5,3,4}, #1, edges = 0.01, faces = #2; }";
+        assert_eq!(
+            fmt(src),
+            "Objects {\n    Honeycomb {5,3,4}, #1, edges = 0.01, faces = #2;\n}\n"
+        );
     }
 
     #[test]

@@ -9,9 +9,11 @@ use std::num::NonZeroU32;
 use hgeom::{Isometry, Point, Vertex};
 
 pub(crate) mod animation;
+mod honeycomb;
 mod shape;
 
 pub use animation::{Animation, FrameError, Motion, Track, TrackBase, compose, frame_time};
+pub use honeycomb::{Honeycomb, PartMaterials};
 pub use shape::{BoxedSurface, Shape, Surfaces};
 
 /// A linear RGB triple.

@@ -276,7 +276,7 @@ impl SymbolIndex {
                     self.value_uses(v);
                 }
             }
-            Value::Number { .. } | Value::Ident(_) | Value::Str { .. } => {}
+            Value::Number { .. } | Value::Ident(_) | Value::Str { .. } | Value::Symbol { .. } => {}
         }
     }
 

@@ -11,9 +11,11 @@
 //! clause     = Ident "=" value                     -- Clause::Assign
 //!            | (reference "->")? Ident value?      -- Clause::Apply
 //!            | value                               -- Clause::Value
-//! value      = number | reference | tuple | string -- (inside tuples also Ident)
+//! value      = number | reference | tuple | string | symbol
+//!                                                  -- (inside tuples also Ident)
 //! string     = '"' (any character but '"' and line breaks)* '"'
 //! tuple      = "(" item ("," item)* ")"
+//! symbol     = "{" number ("," number)+ "}"        -- a Schläfli symbol
 //! reference  = ("%" | "#" | "@") (digits | Ident)  -- no whitespace inside
 //! ```
 //!
@@ -155,15 +157,24 @@ pub enum Value {
         /// From the opening to the closing quote.
         span: Span,
     },
+    /// `{4,3,5}`: a Schläfli symbol, at least two numbers in braces (each a
+    /// [`Value::Number`]; the lowering checks they are whole).
+    Symbol {
+        /// The entries.
+        entries: Vec<Value>,
+        /// From `{` to `}`.
+        span: Span,
+    },
 }
 
 impl Value {
     /// Where the value is.
     pub fn span(&self) -> Span {
         match self {
-            Value::Number { span, .. } | Value::Tuple { span, .. } | Value::Str { span, .. } => {
-                *span
-            }
+            Value::Number { span, .. }
+            | Value::Tuple { span, .. }
+            | Value::Str { span, .. }
+            | Value::Symbol { span, .. } => *span,
             Value::Reference(r) => r.span,
             Value::Ident(i) => i.span,
         }
@@ -182,6 +193,7 @@ impl Value {
             Value::Tuple { .. } => "a tuple",
             Value::Ident(_) => "a name",
             Value::Str { .. } => "a string",
+            Value::Symbol { .. } => "a Schläfli symbol",
         }
     }
 }

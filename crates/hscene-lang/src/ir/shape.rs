@@ -9,6 +9,8 @@
 //! writer (`docs/ARCHITECTURE.md`, "Adding a primitive").
 
 use hgeom::glam::{DVec3, DVec4};
+
+use super::honeycomb::{Honeycomb, PartMaterials};
 use hgeom::{
     ConvexPolygon, HCylinder, HPlane, HSphere, Horosphere, Isometry, Point, Polyhedron, Rod,
     Shape as Surface, TriangleMesh, Vertex, lorentz,
@@ -51,6 +53,9 @@ pub enum Shape {
     Wireframe(Vec<Rod>),
     /// A triangle mesh (from an OBJ or PLY file).
     Mesh(TriangleMesh),
+    /// A regular honeycomb, walked ray by ray (boxed: its walk tables are
+    /// large, and a scene has few of them).
+    Honeycomb(Box<Honeycomb>),
 }
 
 impl Shape {
@@ -67,6 +72,17 @@ impl Shape {
             Shape::Horosphere(_) => "horosphere",
             Shape::Wireframe(_) => "wireframe",
             Shape::Mesh(_) => "mesh",
+            Shape::Honeycomb(_) => "honeycomb",
+        }
+    }
+
+    /// The materials of the parts of a shape drawn in several (a
+    /// honeycomb's faces, edges and cells), if it is one; every other
+    /// shape is drawn in its object's material.
+    pub fn part_materials(&self) -> Option<&PartMaterials> {
+        match self {
+            Shape::Honeycomb(h) => Some(&h.materials),
+            _ => None,
         }
     }
 
@@ -111,6 +127,10 @@ impl Shape {
             Shape::Wireframe(rods) => {
                 Shape::Wireframe(rods.iter().map(|r| r.transformed(iso)).collect())
             }
+            Shape::Honeycomb(h) => Shape::Honeycomb(Box::new(Honeycomb {
+                surface: h.surface.transformed(iso),
+                materials: h.materials.clone(),
+            })),
         }
     }
 
@@ -139,6 +159,7 @@ impl Shape {
             Shape::Horosphere(h) => test(h),
             Shape::Wireframe(rods) => rods.iter().all(|r| test(r)),
             Shape::Mesh(m) => test(m),
+            Shape::Honeycomb(h) => test(&h.surface),
         }
     }
 
@@ -155,7 +176,10 @@ impl Shape {
             | Shape::Plane(_)
             | Shape::Rod(_)
             | Shape::Cylinder(_)
-            | Shape::Horosphere(_) => 1,
+            | Shape::Horosphere(_)
+            // One walk, whatever the number of cells: its cost per ray is
+            // the cells the ray crosses, and its memory a few tables.
+            | Shape::Honeycomb(_) => 1,
         };
         n as u64
     }
@@ -177,6 +201,7 @@ impl Shape {
             Shape::Horosphere(h) => Surfaces::Single(boxed(h)),
             Shape::Wireframe(rods) => Surfaces::Parts(rods.into_iter().map(boxed).collect()),
             Shape::Mesh(m) => Surfaces::Single(boxed(m)),
+            Shape::Honeycomb(h) => Surfaces::Single(boxed(h.surface)),
         }
     }
 
@@ -190,7 +215,10 @@ impl Shape {
         let here = DVec4::W;
         match self {
             Shape::Sphere(s) => point.distance(s.center()) < s.radius(),
-            Shape::Polygon(_) | Shape::Plane(_) | Shape::Mesh(_) => false,
+            // A honeycomb fills space: the eye is always in some cell, which
+            // is where it is meant to be; its rods and balls are too thin
+            // to matter for the lint.
+            Shape::Polygon(_) | Shape::Plane(_) | Shape::Mesh(_) | Shape::Honeycomb(_) => false,
             Shape::Polyhedron(p) => {
                 // Behind every face plane means inside only for a closed
                 // surface (the golden rectangles are not one): there every
@@ -242,7 +270,9 @@ impl Shape {
                 .iter()
                 .all(|f| f.vertices().iter().all(vertex_behind)),
             // Unbounded surfaces always reach in front of the plane.
-            Shape::Plane(_) | Shape::Cylinder(_) | Shape::Horosphere(_) => false,
+            Shape::Plane(_) | Shape::Cylinder(_) | Shape::Horosphere(_) | Shape::Honeycomb(_) => {
+                false
+            }
             Shape::Rod(r) => rod_behind(r),
             Shape::Wireframe(rods) => rods.iter().all(rod_behind),
             Shape::Mesh(m) => m.vertices().iter().all(|p| sinh_ahead(p) < 0.0),

@@ -15,7 +15,7 @@ fn each_reference<'a>(value: &'a Value, f: &mut impl FnMut(&'a Reference)) {
     match value {
         Value::Reference(r) => f(r),
         Value::Tuple { items, .. } => items.iter().for_each(|v| each_reference(v, f)),
-        Value::Number { .. } | Value::Ident(_) | Value::Str { .. } => {}
+        Value::Number { .. } | Value::Ident(_) | Value::Str { .. } | Value::Symbol { .. } => {}
     }
 }
 

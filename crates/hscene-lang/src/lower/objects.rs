@@ -13,6 +13,7 @@
 mod args;
 mod build;
 pub(super) mod figures;
+mod honeycomb;
 pub(super) mod keywords;
 mod mesh;
 pub(super) mod options;
@@ -39,7 +40,7 @@ impl Lowerer<'_> {
 
     /// Lowers one object statement; returns the indices of the IR objects it
     /// produced (none on error, two for `edges = t`, one per cell for
-    /// tessellations).
+    /// tessellations, one for a honeycomb however many cells it has).
     fn object_statement(&mut self, st: &Statement) -> Vec<usize> {
         let Some((
             Clause::Apply {
@@ -121,7 +122,7 @@ impl Lowerer<'_> {
         }
         let material = self.material_arg(positional[wanted - 1]);
         let opts = self.object_options(name, signature.options, &options);
-        let (Some(material), Some(opts), true) = (material, opts, ok) else {
+        let (Some(material), Some(mut opts), true) = (material, opts, ok) else {
             return Vec::new();
         };
         if let ObjectKeyword::Figure(f) = row.builds {
@@ -131,7 +132,8 @@ impl Lowerer<'_> {
                 return Vec::new();
             }
         }
-        let Some(built) = self.build(row.builds, name, &args, &positional, opts.smooth) else {
+        let Some(built) = self.build(row.builds, name, &args, &positional, &mut opts, st.span)
+        else {
             return Vec::new();
         };
         let placed = self.place(built, material, opts, st);

@@ -55,6 +55,7 @@ fn rule_words(rule: Rule) -> &'static str {
         Rule::number => "a number",
         Rule::reference => "a reference",
         Rule::tuple => "a tuple",
+        Rule::symbol => "a Schläfli symbol",
         Rule::string | Rule::string_inner => "a string",
         Rule::ident | Rule::label | Rule::assignment | Rule::application => "a name",
         Rule::sigil => "`%`, `#` or `@`",

@@ -4,7 +4,7 @@
 //! comes). The nesting depth of parentheses is counted here, before pest
 //! sees a statement.
 
-use super::lexer::{ScanKind, ScanToken};
+use super::lexer::{ScanKind, ScanToken, skip_trivia};
 use super::{MAX_NESTING, Scanner};
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::syntax::{BrokenStatement, Ident, Section, SourceFile, Statement};
@@ -168,7 +168,8 @@ impl Scanner<'_> {
                 ScanKind::LBrace
                     if stmt.braces == 0
                         && stmt.parens == 0
-                        && stmt.last.is_some_and(|t| t.kind == ScanKind::Ident) =>
+                        && stmt.last.is_some_and(|t| t.kind == ScanKind::Ident)
+                        && !self.symbol_at(tok.span.end) =>
                 {
                     // `Name {` inside a body: this section lacks its `}`.
                     let Some(last) = stmt.last else {
@@ -192,6 +193,21 @@ impl Scanner<'_> {
             broken: statements.broken,
         });
         (section, next)
+    }
+
+    /// Whether the `{` ending just before `pos` opens a Schläfli symbol
+    /// (`Honeycomb {4,3,5}`) rather than a section: its first token is a
+    /// number. No section body starts with one (statements start with a
+    /// name, a reference, a label or a tuple), so `Name {` followed by a
+    /// digit is a value, and a missing `}` before a section is still found.
+    fn symbol_at(&self, pos: usize) -> bool {
+        let (at, unterminated) = skip_trivia(self.src, pos);
+        unterminated.is_none()
+            && self
+                .src
+                .as_bytes()
+                .get(at)
+                .is_some_and(|b| b.is_ascii_digit())
     }
 
     fn report_unclosed(&mut self, name: Option<&Ident>, open: Span, next: Option<&Ident>) {
@@ -316,8 +332,74 @@ mod tests {
         let src = "S { a = {1}; b = 2; }";
         let p = parse(src);
         assert_eq!(codes(&p), [Code::Syntax]);
-        assert_eq!(text(src, p.diagnostics[0].span), "{");
+        // A Schläfli symbol has at least two entries: pest stops at the `}`.
+        assert_eq!(text(src, p.diagnostics[0].span), "}");
         assert_eq!(p.file.sections[0].statements.len(), 1);
+    }
+
+    #[test]
+    fn schlafli_symbol_is_a_value_not_a_section() {
+        use crate::parser::fixtures::{clean, number};
+        let src = "Objects { Honeycomb {4,3,5}, #1, depth = 2;\n\
+                   Honeycomb { 5 , /* c */ 3,\n 4 }, #1; Sphere %1, 0.1, #1; }";
+        let file = clean(src);
+        let objects = &file.sections[0];
+        assert_eq!(objects.statements.len(), 3);
+        for (st, entries, written) in [
+            (&objects.statements[0], [4.0, 3.0, 5.0], "{4,3,5}"),
+            (
+                &objects.statements[1],
+                [5.0, 3.0, 4.0],
+                "{ 5 , /* c */ 3,\n 4 }",
+            ),
+        ] {
+            let Clause::Apply {
+                name,
+                arg: Some(Value::Symbol { entries: e, span }),
+                ..
+            } = &st.clauses[0]
+            else {
+                panic!("{st:?}")
+            };
+            assert_eq!(name.text, "Honeycomb");
+            assert_eq!(text(src, *span), written);
+            let got: Vec<f64> = e.iter().map(number).collect();
+            assert_eq!(got, entries);
+        }
+        // As an option's value too, and in the whole-file grammar.
+        clean("S { a = {3,5,3}; }");
+        use pest::Parser as _;
+        assert!(crate::parser::SceneGrammar::parse(crate::parser::Rule::file, src).is_ok());
+
+        // A section that lacks its `}` before one with a symbol is still
+        // found, and the symbol's braces close nothing.
+        let src = "Points { (0,0,0);\nObjects { Honeycomb {4,3,5}, #1; }\nLights { %1, (1,1,1), (1,1,1); }";
+        let p = parse(src);
+        assert_eq!(codes(&p), [Code::Syntax]);
+        assert!(
+            p.diagnostics[0]
+                .message
+                .contains("before section `Objects`")
+        );
+        assert_eq!(p.file.sections.len(), 3);
+        assert!(p.file.sections.iter().all(|s| s.statements.len() == 1));
+    }
+
+    #[test]
+    fn malformed_symbols_are_one_error_each() {
+        for (src, at, message) in [
+            ("S { Honeycomb {4}, #1; b = 2; }", "}", "expected `,`"),
+            ("S { Honeycomb {4,3,5, #1; b = 2; }", "#1", "expected"),
+            ("S { Honeycomb {4,,5}, #1; b = 2; }", ",", "expected"),
+        ] {
+            let p = parse(src);
+            assert_eq!(codes(&p), [Code::Syntax], "{src}");
+            let d = &p.diagnostics[0];
+            assert_eq!(text(src, d.span), at, "{src}: {}", d.message);
+            assert!(d.message.contains(message), "{}", d.message);
+            assert_eq!(p.file.sections.len(), 1, "{src}");
+            assert_eq!(p.file.sections[0].statements.len(), 1, "{src}");
+        }
     }
 
     #[test]

@@ -115,6 +115,15 @@ impl Scanner<'_> {
                 }
                 Some(Value::Tuple { items, span })
             }
+            Rule::symbol => {
+                let mut entries = Vec::new();
+                for p in pair.into_inner() {
+                    if p.as_rule() == Rule::number {
+                        entries.push(self.value(p, off)?);
+                    }
+                }
+                Some(Value::Symbol { entries, span })
+            }
             Rule::ident => Some(Value::Ident(pair_ident(pair, off))),
             Rule::string => Some(Value::Str {
                 text: pair.into_inner().next()?.as_str().to_string(),

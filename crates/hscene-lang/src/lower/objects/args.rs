@@ -1,7 +1,7 @@
 //! The positional arguments of an object statement, checked against the
 //! parameters of its keyword.
 
-use hgeom::{IdealPoint, Point, Vertex};
+use hgeom::{IdealPoint, Point, Schlafli, Vertex};
 
 use crate::diagnostic::{Code, Diagnostic};
 use crate::lower::Lowerer;
@@ -25,6 +25,8 @@ pub(super) enum Param {
     Vertices,
     /// A file name in quotes.
     File(&'static str),
+    /// A Schläfli symbol `{p,q,r}` of a hyperbolic regular honeycomb.
+    Symbol,
 }
 
 /// A checked positional argument.
@@ -37,6 +39,7 @@ pub(super) enum Arg {
     Number(f64),
     Vertices(Vec<Vertex>),
     File(String),
+    Symbol(Schlafli),
 }
 
 impl Arg {
@@ -57,6 +60,7 @@ impl Lowerer<'_> {
             Param::Vertex(role) => self.vertex_arg_for(value, role).map(Arg::Vertex),
             Param::Ideal(role) => self.ideal_arg(value, role).map(Arg::Ideal),
             Param::Length(what) => self.length(value, what).map(Arg::Number),
+            Param::Symbol => self.schlafli(value, usage).map(Arg::Symbol),
             Param::Count(what, min, max) => {
                 let x = self.number(value)?;
                 if x.fract() == 0.0 && x >= min as f64 && x <= max as f64 {

@@ -8,6 +8,7 @@ use hgeom::{
 use super::args::Arg;
 use super::figures::{self, Figure, FigureError};
 use super::keywords::ObjectKeyword;
+use super::options::ObjectOptions;
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::Shape;
 use crate::lower::Lowerer;
@@ -24,7 +25,8 @@ impl Lowerer<'_> {
         name: &Ident,
         args: &[Arg],
         values: &[&Value],
-        smooth: Option<f64>,
+        opts: &mut ObjectOptions,
+        statement: Span,
     ) -> Option<Vec<Shape>> {
         // Exhaustive over the keywords, so a new keyword without a case here
         // does not compile; the arguments were checked against the keyword's
@@ -110,7 +112,7 @@ impl Lowerer<'_> {
                 let [Arg::File(file), Arg::Number(size)] = args else {
                     return None;
                 };
-                self.mesh(file, *size, values, smooth)
+                self.mesh(file, *size, values, opts.smooth)
                     .map(|m| vec![Shape::Mesh(m)])
             }
             ObjectKeyword::Platonic(k) => {
@@ -139,6 +141,12 @@ impl Lowerer<'_> {
                     // The arguments were checked against the same table.
                     Err(FigureError::Arguments) => None,
                 }
+            }
+            ObjectKeyword::Honeycomb => {
+                let [Arg::Symbol(symbol)] = args else {
+                    return None;
+                };
+                self.honeycomb(*symbol, opts, statement)
             }
         }
     }

@@ -25,6 +25,8 @@ pub(super) enum ObjectKeyword {
     Mesh,
     /// A predefined figure centred at the origin (see `figures.rs`).
     Figure(Figure),
+    /// A regular honeycomb `{p,q,r}`, walked (see `honeycomb.rs`).
+    Honeycomb,
 }
 
 /// How an object keyword is written: its positional parameters (the
@@ -76,6 +78,18 @@ const FIGURE: &[ObjectOption] = &[
     ObjectOption::Edges,
     ObjectOption::EdgeMaterial,
     ObjectOption::At,
+];
+
+/// The options of a honeycomb: what it draws, how deep, in which colours,
+/// and where its base cell is.
+const HONEYCOMB: &[ObjectOption] = &[
+    ObjectOption::Wireframe,
+    ObjectOption::Edges,
+    ObjectOption::At,
+    ObjectOption::Faces,
+    ObjectOption::Vertices,
+    ObjectOption::Depth,
+    ObjectOption::Colors,
 ];
 
 const SIZE: &[Param] = &[Param::Length("the size")];
@@ -348,6 +362,16 @@ pub(super) const KEYWORDS: &[KeywordRow] = &[
             takes: "a depth and a material",
             usage: "write `Tessellation435 depth, #M;` (depth 0 to 7: 1, 7, 37, 163, 661, 2643, 10497 or 41511 cells)",
             options: FIGURE,
+        },
+    ),
+    row(
+        "Honeycomb",
+        ObjectKeyword::Honeycomb,
+        Signature {
+            params: &[Param::Symbol],
+            takes: "a Schläfli symbol and a material",
+            usage: "write `Honeycomb {4,3,5}, #M;` (one of the 15 regular honeycombs of hyperbolic space; options edges = w, faces = #F, vertices = r, depth = N, colors = (#A, #B), at = %P)",
+            options: HONEYCOMB,
         },
     ),
 ];

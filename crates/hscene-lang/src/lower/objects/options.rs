@@ -1,7 +1,8 @@
 //! The `key = value` options that end an object statement: `wireframe`,
 //! `edges` and `edge_material` (the edges of faceted objects as rods),
-//! `at` (where a figure built at the origin goes) and `smooth` (a mesh's
-//! crease angle); and placing the built shapes by them.
+//! `at` (where a figure built at the origin goes), `smooth` (a mesh's
+//! crease angle) and a honeycomb's `faces`, `vertices`, `depth` and
+//! `colors`; and placing the built shapes by them.
 
 use hgeom::{ConvexPolygon, GeomError, Isometry, Point, Rod, Vertex};
 
@@ -25,6 +26,14 @@ pub(super) enum ObjectOption {
     At,
     /// `smooth = ANGLE`: a mesh's crease angle in degrees.
     Smooth,
+    /// `faces = #F`: a honeycomb's faces, in material `#F`.
+    Faces,
+    /// `vertices = r`: a honeycomb's vertices as balls of radius `r`.
+    Vertices,
+    /// `depth = N`: a honeycomb's cells within `N` face reflections.
+    Depth,
+    /// `colors = (#A, #B, ...)`: a honeycomb's cells coloured by class.
+    Colors,
 }
 
 /// Every object option, in the order the help lists them.
@@ -34,7 +43,18 @@ const OPTIONS: &[(&str, ObjectOption)] = &[
     ("edge_material", ObjectOption::EdgeMaterial),
     ("at", ObjectOption::At),
     ("smooth", ObjectOption::Smooth),
+    ("faces", ObjectOption::Faces),
+    ("vertices", ObjectOption::Vertices),
+    ("depth", ObjectOption::Depth),
+    ("colors", ObjectOption::Colors),
 ];
+
+/// The deepest `depth` of a honeycomb, as for `Tessellation435` (whose
+/// cells at that depth it draws).
+pub(super) const MAX_HONEYCOMB_DEPTH: u64 = super::figures::MAX_TESSELLATION_DEPTH;
+
+/// The most colours a honeycomb's `colors` may list.
+pub(super) const MAX_CELL_COLORS: usize = 16;
 
 /// The names of the object options, in the order of [`OPTIONS`].
 pub(crate) const OPTION_NAMES: [&str; OPTIONS.len()] = words!(OPTIONS, 0);
@@ -51,6 +71,21 @@ pub(super) struct ObjectOptions {
     edge_material: Option<MaterialId>,
     at: Option<(Point, Span)>,
     pub(super) smooth: Option<f64>,
+    faces_material: Option<MaterialId>,
+    vertices: Option<(f64, Span)>,
+    depth: Option<(u32, Span)>,
+    colors: Option<Vec<MaterialId>>,
+}
+
+/// A honeycomb's own options, taken out of [`ObjectOptions`] (its edges are
+/// part of its walk, not rods added beside it).
+pub(super) struct HoneycombOptions {
+    /// The rod radius (`edges` or `wireframe`) and where it was given.
+    pub(super) edges: Option<(f64, Span)>,
+    pub(super) faces: Option<MaterialId>,
+    pub(super) vertices: Option<(f64, Span)>,
+    pub(super) depth: Option<(u32, Span)>,
+    pub(super) colors: Option<Vec<MaterialId>>,
 }
 
 impl ObjectOptions {
@@ -62,6 +97,17 @@ impl ObjectOptions {
     /// Whether the edges are drawn.
     pub(super) fn edges(&self) -> bool {
         self.wireframe.or(self.edges).is_some()
+    }
+
+    /// Takes the options a honeycomb draws itself, leaving `at`.
+    pub(super) fn take_honeycomb(&mut self) -> HoneycombOptions {
+        HoneycombOptions {
+            edges: self.wireframe.take().or(self.edges.take()),
+            faces: self.faces_material.take(),
+            vertices: self.vertices.take(),
+            depth: self.depth.take(),
+            colors: self.colors.take(),
+        }
     }
 }
 
@@ -108,24 +154,51 @@ impl Lowerer<'_> {
                     Some(p) => out.at = Some((p, value.span())),
                     None => ok = false,
                 },
+                ObjectOption::Faces => match self.material_arg(value) {
+                    Some(m) => out.faces_material = Some(m),
+                    None => ok = false,
+                },
+                ObjectOption::Vertices => match self.length(value, "the `vertices` radius") {
+                    Some(r) => out.vertices = Some((r, value.span())),
+                    None => ok = false,
+                },
+                ObjectOption::Depth => {
+                    match self.integer(value, 0, MAX_HONEYCOMB_DEPTH, "the `depth`") {
+                        // At most MAX_HONEYCOMB_DEPTH, so it fits.
+                        Some(d) => out.depth = Some((d as u32, value.span())),
+                        None => ok = false,
+                    }
+                }
+                ObjectOption::Colors => match self.cell_colors(value) {
+                    Some(c) => out.colors = Some(c),
+                    None => ok = false,
+                },
             }
         }
         if let (Some((_, w)), Some((_, e))) = (out.wireframe, out.edges) {
             let second = if w.start < e.start { e } else { w };
+            let help = if accepted.contains(&ObjectOption::Faces) {
+                "for a honeycomb they are the same option (the edges' radius; its faces are drawn by `faces` or `colors`): keep one"
+            } else {
+                "`wireframe = t` draws only the edges; `edges = t` draws the faces and the edges: keep one"
+            };
             self.report(
                 Diagnostic::new(
                     Code::ConflictingOptions,
                     second,
                     "`wireframe` and `edges` cannot both be given",
                 )
-                .with_help("`wireframe = t` draws only the edges; `edges = t` draws the faces and the edges: keep one"),
+                .with_help(help),
             );
             ok = false;
         }
         let drawn = out.wireframe.is_some() || out.edges.is_some();
-        let useless = options
-            .iter()
-            .find(|(k, _)| option(&k.text) == Some(ObjectOption::EdgeMaterial) && !drawn);
+        // An `edge_material` the object does not take was refused above.
+        let useless = options.iter().find(|(k, _)| {
+            option(&k.text) == Some(ObjectOption::EdgeMaterial)
+                && accepted.contains(&ObjectOption::EdgeMaterial)
+                && !drawn
+        });
         if let Some((key, _)) = useless {
             self.report(
                 Diagnostic::new(
@@ -135,6 +208,47 @@ impl Lowerer<'_> {
                 )
                 .with_help("add `edges = 0.01` (faces and edges) or `wireframe = 0.01` (edges only), or remove `edge_material`"),
             );
+        }
+        ok.then_some(out)
+    }
+
+    /// `colors = (#A, #B, ...)`: one to [`MAX_CELL_COLORS`] materials.
+    fn cell_colors(&mut self, value: &Value) -> Option<Vec<MaterialId>> {
+        let Value::Tuple { items, span } = value else {
+            self.report(
+                Diagnostic::new(
+                    Code::WrongType,
+                    value.span(),
+                    format!(
+                        "expected a list of materials like `(#1, #2)`, found {}",
+                        value.describe()
+                    ),
+                )
+                .with_help("write `colors = (#red, #green, #blue)`: cell class k is drawn in the k-th material, counting round"),
+            );
+            return None;
+        };
+        if items.len() > MAX_CELL_COLORS {
+            self.report(
+                Diagnostic::new(
+                    Code::InvalidValue,
+                    *span,
+                    format!(
+                        "`colors` lists {} materials; at most {MAX_CELL_COLORS} are used",
+                        items.len()
+                    ),
+                )
+                .with_help("a few colours are enough to read the structure: list fewer"),
+            );
+            return None;
+        }
+        let mut out = Vec::with_capacity(items.len());
+        let mut ok = true;
+        for item in items {
+            match self.material_arg(item) {
+                Some(m) => out.push(m),
+                None => ok = false,
+            }
         }
         ok.then_some(out)
     }

@@ -1,0 +1,380 @@
+//! The unlimited `{4,3,5}` honeycomb against POV-Ray (docs/performance.md,
+//! "The honeycomb"): issue 15 asks that the whole order-5 cubic honeycomb
+//! with edges, at 1000x1000, one light, recursion depth 0, cost at most
+//! twice the CPU time of POV-Ray rendering the thesis's 16-sphere scene at
+//! 1000x1000.
+//!
+//! ```text
+//! cargo bench --bench honeycomb                    # 1000x1000
+//! cargo bench --bench honeycomb -- --resolution 400
+//! cargo bench --bench honeycomb -- --threads 1 --json
+//! ```
+//!
+//! Both renders run as measured child processes (`common::measure`: CPU
+//! time user + system from `wait4`, wall time from the clock): `hscene
+//! render` on the honeycomb scene, and POV-Ray on the Euclidean twin of the
+//! thesis's "16 h-spheres, 1 light, recursion 0" scene
+//! (`common::thesis_scenes`, the `thesis` bench's own). The ratio is
+//! hscene's CPU time over POV-Ray's.
+//!
+//! In-process, on a 64x64 grid of the same primary rays (net 0, the
+//! scene's camera), the walk reports how many cells and chambers (copies
+//! of the characteristic simplex) each ray crosses: the mean number of
+//! cells crossed per ray is the cost the walk pays instead of the number
+//! of cells in the scene. Rays per second are the image's primary rays
+//! plus one shadow ray per primary hit (the one light), over hscene's CPU
+//! time. The drift is the walk's accuracy: the hyperbolic distance between
+//! the f64 walk's local ray origin (`RegularHoneycomb::walk_steps`) and a
+//! 320-bit walk's through the same walls after `N` reflections, the worst
+//! over rays from the base cell's centre in 64 directions.
+
+use std::fmt::Write as _;
+use std::process::{Command, ExitCode};
+
+use hgeom::glam::{DVec3, DVec4};
+use hgeom::{CoxeterSimplex, HoneycombStyle, Ray, RegularHoneycomb};
+use hscene_lang::ir::{Scene, Shape};
+use hscene_test_support::reference::{R, V4, distance_h, ldot};
+
+#[allow(dead_code)]
+mod common;
+use common::thesis_scenes::{Case, Kind, pov_source};
+use common::{Measured, Probe, hscene_binary, povray_installed};
+
+/// Rays per side of the in-process grid.
+const GRID: u32 = 64;
+/// The edges' radius: the language's default.
+const EDGE_RADIUS: f64 = 0.02;
+/// Reflections after which the drift is measured, and the rays measured.
+const DRIFT_STEPS: [u32; 4] = [10, 20, 40, 60];
+const DRIFT_RAYS: u32 = 64;
+
+/// The honeycomb scene: the eye at the centre of the base cube, looking at
+/// the middle of a face, tilted so that no edge points straight at it;
+/// one light at the eye.
+fn scene_source(resolution: u32) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "// The unlimited {{4,3,5}} honeycomb, edges only: the honeycomb bench.\n\
+         Globals {{ resolution = ({resolution}, {resolution}); to = (0.1, 0.13, 0.4); fov = 90; \
+         background = (0, 0, 0); ambient = (0.4, 0.4, 0.4); recursion_depth = 0; }}\n\
+         BRDFs {{ edge: ambient = (0.4, 0.3, 0.2), diffuse = (0.9, 0.75, 0.45), \
+         specular = (1, 1, 1), shininess = 40; }}\n\
+         Lights {{ (0, 0, 0), (6, 6, 6), (4, 4, 4); }}\n\
+         Objects {{ Honeycomb {{4,3,5}}, #edge, edges = {EDGE_RADIUS}; }}"
+    );
+    s
+}
+
+/// The thesis's 16-sphere case: 1 light, recursion 0.
+fn sixteen_spheres() -> Case {
+    Case {
+        kind: Kind::Spheres,
+        count: 16,
+        lights: 1,
+        depth: 0,
+        thesis_s: 22.0,
+    }
+}
+
+/// The honeycomb of `scene`, in the camera's frame.
+fn honeycomb_in(scene: &Scene, probe: &Probe) -> Option<RegularHoneycomb> {
+    let mut shape = scene.objects.first()?.shape.clone();
+    for stage in &probe.camera.stages {
+        shape = shape.transformed(stage);
+    }
+    match shape {
+        Shape::Honeycomb(h) => Some(h.surface),
+        _ => None,
+    }
+}
+
+/// Walk counts over the probe's primary rays.
+struct Walks {
+    rays: u64,
+    hits: u64,
+    cells: u64,
+    chambers: u64,
+    max_cells: u32,
+}
+
+fn walks(h: &RegularHoneycomb, probe: &Probe) -> Walks {
+    let mut w = Walks {
+        rays: 0,
+        hits: 0,
+        cells: 0,
+        chambers: 0,
+        max_cells: 0,
+    };
+    for dir in &probe.dirs {
+        let ray = Ray::from_origin_unchecked(*dir);
+        let (hit, stats) = h.intersect_with_stats(&ray, 0.0, f64::INFINITY);
+        w.rays += 1;
+        w.hits += u64::from(hit.is_some());
+        w.cells += u64::from(stats.cells);
+        w.chambers += u64::from(stats.chambers);
+        w.max_cells = w.max_cells.max(stats.cells);
+    }
+    w
+}
+
+/// A direction from the base cell's centre folded into the base simplex:
+/// reflected in the simplex's walls through the centre (`m0`, `m1`, `m2`,
+/// whose normals have no time part there) until it points into it, so
+/// that the f64 walk starts without folding and both walks start alike.
+fn folded(normals: &[DVec4; 4], dir: DVec3) -> DVec3 {
+    let mut d = dir.normalize();
+    // The cell's own group is finite: a direction is folded in at most a
+    // few dozen reflections; the cap only guards the loop.
+    for _ in 0..1000 {
+        let Some(n) = normals[..3]
+            .iter()
+            .map(|n| n.truncate())
+            .find(|n| d.dot(*n) < -1e-15)
+        else {
+            break;
+        };
+        d -= 2.0 * d.dot(n) * n;
+    }
+    d.normalize()
+}
+
+/// The hyperbolic distance between the f64 walk's local ray origin and a
+/// 320-bit walk's after each of `steps` (1-based) reflections, for the ray
+/// from the base cell's centre along `dir`. The 320-bit walk crosses the
+/// same walls (the f64 walk's choices) of the same f64 simplex, so the
+/// difference is the walk's own rounding: the exit point (`tanh τ =
+/// -<O,n>/<D,n>`), the re-basing and the reflection, step after step.
+fn drift_of(h: &RegularHoneycomb, normals: &[DVec4; 4], dir: DVec3, steps: &[u32]) -> Vec<f64> {
+    let last = steps.iter().copied().max().unwrap_or(0) as usize;
+    let ray = Ray::from_origin_unchecked(folded(normals, dir));
+    let walk = h.walk_steps(&ray, last);
+    let n: Vec<V4> = normals.iter().map(|n| V4::from_f64(*n)).collect();
+    let one = R::f(1.0);
+    let two = R::f(2.0);
+    let mut o = V4::from_f64(ray.origin);
+    let mut d = V4::from_f64(ray.dir);
+    // Exactly unit, so the 320-bit walk has no rounding of its own to carry.
+    o = o.scale(&(one.clone() / (-ldot(&o, &o)).sqrt()));
+    d = d.scale(&(one.clone() / ldot(&d, &d).sqrt()));
+    let mut out = Vec::new();
+    for (k, step) in walk.iter().enumerate() {
+        let m = &n[step.wall];
+        let s = -(ldot(&o, m) / ldot(&d, m));
+        let c = one.clone() / (one.clone() - &s * &s).sqrt();
+        let sh = &s * &c;
+        let at = o.scale(&c).add(&d.scale(&sh));
+        let along = o.scale(&sh).add(&d.scale(&c));
+        let mm = ldot(m, m);
+        let reflect = |x: &V4| x.sub(&m.scale(&(&two * &ldot(x, m) / &mm)));
+        o = reflect(&at);
+        d = reflect(&along);
+        if steps.contains(&((k + 1) as u32)) {
+            out.push(distance_h(&o, &V4::from_f64(step.origin)).to_f64());
+        }
+    }
+    out
+}
+
+/// The worst drift after each of [`DRIFT_STEPS`] reflections, over rays
+/// from the base cell's centre in directions spread over the sphere (rays
+/// that leave by the horizon before a step count are left out of it).
+fn drift() -> Vec<(u32, f64, usize)> {
+    let Ok(symbol) = hgeom::Schlafli::new(4, 3, 5) else {
+        return Vec::new();
+    };
+    let style = HoneycombStyle {
+        edges: None,
+        faces: false,
+        vertices: None,
+        depth: None,
+        cell_classes: 1,
+    };
+    let Ok(h) = RegularHoneycomb::new(symbol, style) else {
+        return Vec::new();
+    };
+    let normals = CoxeterSimplex::new(symbol).normals();
+    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
+    let mut worst = vec![(0.0f64, 0usize); DRIFT_STEPS.len()];
+    for i in 0..DRIFT_RAYS {
+        let z = 1.0 - 2.0 * (f64::from(i) + 0.5) / f64::from(DRIFT_RAYS);
+        let rho = (1.0 - z * z).sqrt();
+        let a = golden * f64::from(i);
+        let dir = DVec3::new(rho * a.cos(), rho * a.sin(), z);
+        for (k, d) in drift_of(&h, &normals, dir, &DRIFT_STEPS)
+            .into_iter()
+            .enumerate()
+        {
+            worst[k].0 = worst[k].0.max(d);
+            worst[k].1 += 1;
+        }
+    }
+    DRIFT_STEPS
+        .iter()
+        .zip(worst)
+        .map(|(&n, (d, rays))| (n, d, rays))
+        .collect()
+}
+
+struct Report {
+    resolution: u32,
+    hscene: Measured,
+    povray: Option<Measured>,
+    walks: Walks,
+    drift: Vec<(u32, f64, usize)>,
+}
+
+impl Report {
+    fn ratio(&self) -> Option<f64> {
+        self.povray.map(|p| self.hscene.cpu_s / p.cpu_s)
+    }
+
+    /// Primary rays plus one shadow ray per primary hit (estimated from
+    /// the grid's hit share), per CPU second.
+    fn rays_per_second(&self) -> f64 {
+        let primary = f64::from(self.resolution) * f64::from(self.resolution);
+        let hit_share = self.walks.hits as f64 / self.walks.rays.max(1) as f64;
+        primary * (1.0 + hit_share) / self.hscene.cpu_s
+    }
+
+    fn mean(&self, total: u64) -> f64 {
+        total as f64 / self.walks.rays.max(1) as f64
+    }
+
+    fn json(&self, threads: Option<usize>) -> String {
+        serde_json::json!({
+            "scene": "{4,3,5} edges, unlimited",
+            "resolution": self.resolution,
+            "threads": threads,
+            "hscene_cpu_s": self.hscene.cpu_s,
+            "hscene_wall_s": self.hscene.wall_s,
+            "hscene_peak_mib": self.hscene.peak_mib,
+            "povray_16_spheres_cpu_s": self.povray.map(|p| p.cpu_s),
+            "povray_16_spheres_wall_s": self.povray.map(|p| p.wall_s),
+            "cpu_ratio": self.ratio(),
+            "rays_per_cpu_s": self.rays_per_second(),
+            "mean_cells_per_ray": self.mean(self.walks.cells),
+            "mean_chambers_per_ray": self.mean(self.walks.chambers),
+            "max_cells_per_ray": self.walks.max_cells,
+            "hit_share": self.walks.hits as f64 / self.walks.rays.max(1) as f64,
+            "drift": self.drift.iter().map(|(n, d, rays)| serde_json::json!({"steps": n, "max": d, "rays": rays})).collect::<Vec<_>>(),
+        })
+        .to_string()
+    }
+
+    fn table(&self) -> String {
+        let mut s = String::new();
+        let r = self.resolution;
+        let _ = writeln!(
+            s,
+            "{{4,3,5}} unlimited, edges {EDGE_RADIUS}, {r}x{r}, 1 light, depth 0"
+        );
+        let _ = writeln!(
+            s,
+            "  hscene        CPU {:8.2} s   wall {:7.2} s   peak {:6.1} MiB",
+            self.hscene.cpu_s, self.hscene.wall_s, self.hscene.peak_mib
+        );
+        match self.povray {
+            Some(p) => {
+                let _ = writeln!(
+                    s,
+                    "  POV-Ray 16 h-spheres  CPU {:8.2} s   wall {:7.2} s",
+                    p.cpu_s, p.wall_s
+                );
+            }
+            None => s.push_str("  POV-Ray: not installed\n"),
+        }
+        if let Some(ratio) = self.ratio() {
+            let verdict = if ratio <= 2.0 { "within" } else { "beyond" };
+            let _ = writeln!(s, "  CPU ratio {ratio:.2} ({verdict} the 2x target)");
+        }
+        let _ = writeln!(
+            s,
+            "  {:.2} M rays per CPU second (primary + shadow)",
+            self.rays_per_second() / 1e6
+        );
+        let _ = writeln!(
+            s,
+            "  per primary ray: {:.1} cells, {:.1} chambers crossed (max {} cells); {:.0} % hit",
+            self.mean(self.walks.cells),
+            self.mean(self.walks.chambers),
+            self.walks.max_cells,
+            100.0 * self.walks.hits as f64 / self.walks.rays.max(1) as f64
+        );
+        for (n, d, rays) in &self.drift {
+            let _ = writeln!(
+                s,
+                "  drift after {n:5} reflections: {d:.1e} (max over the {rays} of {DRIFT_RAYS} rays still walking)"
+            );
+        }
+        s
+    }
+}
+
+fn run(resolution: u32, threads: Option<usize>) -> Result<Report, String> {
+    let source = scene_source(resolution);
+    let compiled = hscene_lang::compile(&source);
+    let scene = compiled.scene.ok_or_else(|| {
+        format!(
+            "the bench scene does not compile: {:?}",
+            compiled.diagnostics
+        )
+    })?;
+    let probe = Probe::new(&scene, GRID)?;
+    let honeycomb = honeycomb_in(&scene, &probe).ok_or("the scene's object is not a honeycomb")?;
+    let walks = walks(&honeycomb, &probe);
+
+    let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
+    let path = dir.path().join("honeycomb.hsc");
+    std::fs::write(&path, &source).map_err(|e| e.to_string())?;
+    let bin = hscene_binary().ok_or("no hscene binary next to the bench")?;
+    let mut cmd = Command::new(bin);
+    cmd.arg("render")
+        .arg(&path)
+        .arg("-o")
+        .arg(dir.path().join("honeycomb.png"));
+    if let Some(t) = threads {
+        cmd.args(["--threads", &t.to_string()]);
+    }
+    let hscene = common::measure(&mut cmd, &dir.path().join("hscene.log"))?;
+    let povray = if povray_installed() {
+        Some(common::povray(
+            &pov_source(&sixteen_spheres(), resolution),
+            resolution,
+            threads,
+        )?)
+    } else {
+        None
+    };
+    Ok(Report {
+        resolution,
+        hscene,
+        povray,
+        walks,
+        drift: drift(),
+    })
+}
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let json = args.iter().any(|a| a == "--json");
+    let resolution: u32 = common::arg_value(&args, "--resolution")
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(1000);
+    let threads: Option<usize> = common::arg_value(&args, "--threads").and_then(|s| s.parse().ok());
+    match run(resolution, threads) {
+        Ok(report) if json => {
+            println!("{}", report.json(threads));
+            ExitCode::SUCCESS
+        }
+        Ok(report) => {
+            print!("{}", report.table());
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("honeycomb bench: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}

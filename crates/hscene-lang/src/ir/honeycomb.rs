@@ -1,0 +1,67 @@
+//! A regular honeycomb as a scene object: the surface hgeom walks
+//! ([`RegularHoneycomb`], which holds its symbol, style and placement) and
+//! the materials of its parts.
+//!
+//! One object, several materials: the honeycomb's hits say what they met in
+//! [`hgeom::Hit::part`] (an edge, a face or a vertex, and the class of the
+//! cell it belongs to), and [`PartMaterials::material`] turns that into a
+//! material. The renderer asks only that method, so it names no kind of
+//! shape.
+
+use hgeom::{HoneycombPart, RegularHoneycomb, decode_honeycomb_part};
+
+use super::MaterialId;
+
+/// A regular honeycomb of hyperbolic space (`Honeycomb {p,q,r}, #M;`).
+#[derive(Clone, Debug)]
+pub struct Honeycomb {
+    /// The walking surface, placed.
+    pub surface: RegularHoneycomb,
+    /// The materials of its parts.
+    pub materials: PartMaterials,
+}
+
+/// Two honeycombs are equal when they have the same symbol, style,
+/// placement and materials: the walk's tables follow from these.
+impl PartialEq for Honeycomb {
+    fn eq(&self, other: &Honeycomb) -> bool {
+        self.surface.symbol() == other.surface.symbol()
+            && self.surface.style() == other.surface.style()
+            && self.surface.placement() == other.surface.placement()
+            && self.materials == other.materials
+    }
+}
+
+/// Which material each part of a honeycomb is drawn in, given the object's
+/// own material `#M` (the edges and vertices).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PartMaterials {
+    /// `faces = #F`: every face in `#F`.
+    pub faces: Option<MaterialId>,
+    /// `colors = (#A, #B, ...)`: cell class `k` is drawn in
+    /// `palette[k % len]` — its faces, or, when `faces = #F` is given too,
+    /// its edges and vertices. Empty without `colors`.
+    pub palette: Vec<MaterialId>,
+}
+
+impl PartMaterials {
+    /// The index (into the scene's materials) of the material of the part
+    /// a hit met (`hit.part`), for an object whose own material has index
+    /// `own`.
+    pub fn material(&self, part: u32, own: usize) -> usize {
+        let (kind, class) = decode_honeycomb_part(part);
+        let coloured = match self.palette.len() {
+            0 => None,
+            // A u32 class always fits in usize on the targets we build for.
+            n => self.palette.get(class as usize % n).map(|m| m.index()),
+        };
+        let faces = self.faces.map(MaterialId::index);
+        match kind {
+            HoneycombPart::Face => faces.or(coloured).unwrap_or(own),
+            HoneycombPart::Edge | HoneycombPart::Vertex => match faces {
+                Some(_) => coloured.unwrap_or(own),
+                None => own,
+            },
+        }
+    }
+}

@@ -1,0 +1,174 @@
+//! `Honeycomb {p,q,r}, #M [, edges = w] [, faces = #F] [, vertices = r]
+//! [, depth = N] [, colors = (#A, ...)] [, at = %P];`: the Schläfli symbol
+//! checked (which geometry a symbol that is not one of the 15 belongs to),
+//! the style and the materials of the parts, and hgeom's walking surface.
+
+use hgeom::{GeomError, HoneycombStyle, RegularHoneycomb, Schlafli};
+
+use super::options::{HoneycombOptions, ObjectOptions};
+use crate::diagnostic::{Code, Diagnostic, Span};
+use crate::ir::{Honeycomb, PartMaterials, Shape};
+use crate::lower::Lowerer;
+use crate::syntax::Value;
+
+/// The edges' radius when none of `edges`, `wireframe`, `faces`,
+/// `vertices` and `colors` is given: thin enough that the far cells stay
+/// apart in the picture, thick enough to see from inside the base cell.
+pub(super) const DEFAULT_EDGE_RADIUS: f64 = 0.02;
+
+/// The largest entry of a symbol worth checking: hgeom classifies any
+/// `{p,q,r}`, and past this every symbol is hyperideal anyway.
+const MAX_ENTRY: u64 = 1_000_000;
+
+/// The 15 symbols, for the help of a refused one.
+const THE_FIFTEEN: &str = "the 15 regular honeycombs of hyperbolic space are {4,3,5}, {5,3,4}, {5,3,5}, {3,5,3} (compact) and {6,3,3}, {3,3,6}, {4,3,6}, {6,3,4}, {5,3,6}, {6,3,5}, {6,3,6}, {3,6,3}, {4,4,3}, {3,4,4}, {4,4,4} (paracompact)";
+
+impl Lowerer<'_> {
+    /// A Schläfli symbol of one of the 15 hyperbolic regular honeycombs;
+    /// any other is an error on its span saying which geometry it is.
+    pub(super) fn schlafli(&mut self, value: &Value, usage: &str) -> Option<Schlafli> {
+        let Value::Symbol { entries, span } = value else {
+            self.report(
+                Diagnostic::new(
+                    Code::WrongType,
+                    value.span(),
+                    format!(
+                        "expected a Schläfli symbol like `{{4,3,5}}`, found {}",
+                        value.describe()
+                    ),
+                )
+                .with_help(usage.to_string()),
+            );
+            return None;
+        };
+        let [p, q, r] = entries.as_slice() else {
+            let what = match entries.len() {
+                2 => "a regular polyhedron or a regular tiling of a plane",
+                _ => "a regular polytope or honeycomb of another dimension",
+            };
+            self.report(
+                Diagnostic::new(
+                    Code::NotHyperbolic,
+                    *span,
+                    format!(
+                        "a symbol of {} entries describes {what}, not a honeycomb of 3-space",
+                        entries.len()
+                    ),
+                )
+                .with_label("three entries {p,q,r} expected")
+                .with_help(THE_FIFTEEN),
+            );
+            return None;
+        };
+        let mut whole = [0u32; 3];
+        for (slot, entry) in whole.iter_mut().zip([p, q, r]) {
+            let x = self.number(entry)?;
+            // At most MAX_ENTRY, so it fits in u32.
+            *slot = self.integer_value(
+                x,
+                0,
+                MAX_ENTRY,
+                entry.span(),
+                "an entry of a Schläfli symbol",
+            )? as u32;
+        }
+        match Schlafli::new(whole[0], whole[1], whole[2]) {
+            Ok(s) => Some(s),
+            Err(e) => {
+                self.report(
+                    Diagnostic::new(Code::NotHyperbolic, *span, e.to_string())
+                        .with_label("not a honeycomb of hyperbolic space")
+                        .with_help(THE_FIFTEEN),
+                );
+                None
+            }
+        }
+    }
+
+    /// The honeycomb's shape: its style from the options (edges of radius
+    /// [`DEFAULT_EDGE_RADIUS`] when nothing is asked for), the materials of
+    /// its parts, and hgeom's walk. `at` stays in `opts` for the placement.
+    pub(super) fn honeycomb(
+        &mut self,
+        symbol: Schlafli,
+        opts: &mut ObjectOptions,
+        statement: Span,
+    ) -> Option<Vec<Shape>> {
+        let HoneycombOptions {
+            edges,
+            faces,
+            vertices,
+            depth,
+            colors,
+        } = opts.take_honeycomb();
+        if let Some((d, span)) = depth.filter(|(d, _)| *d > 0 && symbol.has_ideal_cells()) {
+            self.report(
+                Diagnostic::new(
+                    Code::InvalidValue,
+                    span,
+                    format!(
+                        "the cells of {symbol} are inscribed in horospheres, each with infinitely many faces and neighbours, so `depth = {d}` would draw infinitely many cells"
+                    ),
+                )
+                .with_help("use `depth = 0` (the base cell alone) or no `depth` (the whole honeycomb, walked)"),
+            );
+            return None;
+        }
+        let palette = colors.unwrap_or_default();
+        let nothing_asked =
+            edges.is_none() && faces.is_none() && vertices.is_none() && palette.is_empty();
+        if let Some((_, span)) = vertices.filter(|_| symbol.has_ideal_vertices()) {
+            self.report(
+                Diagnostic::new(
+                    Code::IneffectiveOption,
+                    span,
+                    format!(
+                        "every vertex of {symbol} is ideal (on the absolute), so `vertices` draws nothing"
+                    ),
+                )
+                .with_help("its edges run out to the absolute; remove `vertices`, or draw the edges with `edges = w`"),
+            );
+        }
+        let style = HoneycombStyle {
+            edges: if nothing_asked {
+                Some(DEFAULT_EDGE_RADIUS)
+            } else {
+                edges.map(|(w, _)| w)
+            },
+            faces: faces.is_some() || !palette.is_empty(),
+            vertices: vertices.map(|(r, _)| r),
+            depth: depth.map(|(d, _)| d),
+            // At most MAX_CELL_COLORS, so it fits.
+            cell_classes: palette.len().max(1) as u32,
+        };
+        match RegularHoneycomb::new(symbol, style) {
+            Ok(surface) => Some(vec![Shape::Honeycomb(Box::new(Honeycomb {
+                surface,
+                materials: PartMaterials { faces, palette },
+            }))]),
+            Err(e) => {
+                let span = match &e {
+                    GeomError::TooManyCells { .. } => depth.map(|(_, s)| s),
+                    _ => edges.or(vertices).map(|(_, s)| s),
+                };
+                let span = span.unwrap_or(statement);
+                let d = match e {
+                    GeomError::TooManyCells { limit } => Diagnostic::new(
+                        Code::InvalidValue,
+                        span,
+                        format!("{symbol} at this depth has more than {limit} cells"),
+                    )
+                    .with_help("use a smaller depth, or none: without `depth` the whole honeycomb is drawn by walking, at no cost per cell"),
+                    other => Diagnostic::new(
+                        Code::ImpossibleFigure,
+                        span,
+                        format!("cannot build {symbol}: {other}"),
+                    )
+                    .with_help("edges and vertices must be thinner than the cells (see docs/honeycombs.md)"),
+                };
+                self.report(d);
+                None
+            }
+        }
+    }
+}

@@ -1,0 +1,204 @@
+//! The `Honeycomb {p,q,r}` object: every one of the 15 symbols lowers to
+//! one walking object, its options become the style and the materials of
+//! its parts, `at` moves its base cell, and the symbols of other geometries
+//! are refused on the symbol (their messages are in the golden snapshots
+//! `tests/broken/9x-honeycomb-*.hsc`).
+
+use hgeom::Schlafli;
+use hgeom::glam::DVec3;
+use hscene_lang::ir::{Honeycomb, MaterialId, Scene, Shape};
+use hscene_lang::{Severity, compile};
+
+const MATERIALS: &str = "BRDFs { edge: diffuse = (1, 1, 1); glass: diffuse = (0.2, 0.4, 0.9), trans = 0.6; \
+                         a: diffuse = (1, 0, 0); b: diffuse = (0, 1, 0); }\n";
+
+#[track_caller]
+fn scene(objects: &str) -> Scene {
+    let src = format!("{MATERIALS}Objects {{ {objects} }}");
+    let c = compile(&src);
+    assert!(!c.has_errors(), "errors for {src}: {:#?}", c.diagnostics);
+    c.scene.expect("no errors, so a scene")
+}
+
+#[track_caller]
+fn only_honeycomb(s: &Scene) -> &Honeycomb {
+    assert_eq!(s.objects.len(), 1, "one object, however many cells");
+    match &s.objects[0].shape {
+        Shape::Honeycomb(h) => h,
+        other => panic!("expected a honeycomb, got a {}", other.kind_name()),
+    }
+}
+
+fn material(s: &Scene, name: &str) -> MaterialId {
+    let index = ["edge", "glass", "a", "b"]
+        .iter()
+        .position(|n| *n == name)
+        .expect("a material of MATERIALS");
+    MaterialId::of(&s.materials, index).expect("declared")
+}
+
+#[test]
+fn every_hyperbolic_symbol_is_one_object_with_edges_by_default() {
+    for (p, q, r) in Schlafli::ALL {
+        let s = scene(&format!("Honeycomb {{{p},{q},{r}}}, #edge;"));
+        let h = only_honeycomb(&s);
+        let symbol = h.surface.symbol();
+        assert_eq!((symbol.p(), symbol.q(), symbol.r()), (p, q, r));
+        assert_eq!(h.surface.style().edges, Some(0.02), "{{{p},{q},{r}}}");
+        assert!(
+            !h.surface.style().faces
+                && h.surface.style().vertices.is_none()
+                && h.surface.style().depth.is_none()
+        );
+        assert_eq!(h.surface.style().cell_classes, 1);
+        assert_eq!(s.objects[0].shape.primitive_count(), 1);
+        assert_eq!(s.objects[0].shape.kind_name(), "honeycomb");
+        assert_eq!(s.objects[0].material, material(&s, "edge"));
+        // The base point is the origin until `at` moves it.
+        let c = h.surface.base_cell_center().coords();
+        assert!(c.length() < 1e-15, "{c:?}");
+    }
+}
+
+#[test]
+fn options_become_the_style_and_the_materials_of_the_parts() {
+    let s = scene(
+        "Honeycomb {5,3,4}, #edge, edges = 0.03, faces = #glass, vertices = 0.05, depth = 2;",
+    );
+    let h = only_honeycomb(&s);
+    assert_eq!(h.surface.style().edges, Some(0.03));
+    assert!(h.surface.style().faces);
+    assert_eq!(h.surface.style().vertices, Some(0.05));
+    assert_eq!(h.surface.style().depth, Some(2));
+    assert_eq!(h.materials.faces, Some(material(&s, "glass")));
+    assert!(h.materials.palette.is_empty());
+
+    // `wireframe` is `edges`; faces alone draw no edges.
+    let s = scene("Honeycomb {4,3,5}, #edge, wireframe = 0.01;");
+    assert_eq!(only_honeycomb(&s).surface.style().edges, Some(0.01));
+    let s = scene("Honeycomb {4,3,5}, #edge, faces = #glass;");
+    let h = only_honeycomb(&s);
+    assert_eq!(h.surface.style().edges, None);
+    assert!(h.surface.style().faces);
+
+    // `colors` draws the faces in the palette, one class per colour.
+    let s = scene("Honeycomb {3,5,3}, #edge, colors = (#a, #b, #glass);");
+    let h = only_honeycomb(&s);
+    assert!(h.surface.style().faces);
+    assert_eq!(h.surface.style().edges, None);
+    assert_eq!(h.surface.style().cell_classes, 3);
+    assert_eq!(
+        h.materials.palette,
+        [material(&s, "a"), material(&s, "b"), material(&s, "glass")]
+    );
+}
+
+#[test]
+fn at_moves_the_base_cell_by_the_translation_from_the_origin() {
+    let s = scene("Honeycomb {4,3,5}, #edge, at = (0.1, -0.2, 0.3);");
+    let c = only_honeycomb(&s).surface.base_cell_center().coords();
+    assert!((c - DVec3::new(0.1, -0.2, 0.3)).length() < 1e-14, "{c:?}");
+}
+
+#[test]
+fn named_honeycombs_move_with_their_transformations() {
+    let src = format!(
+        "{MATERIALS}Points {{ o = (0, 0, 0); x = (0.2, 0, 0); }}\n\
+         Objects {{ cells: Honeycomb {{5,3,5}}, #edge; }}\n\
+         Transformations {{ l: hline (%o, %x); @cells->Translate(%l); }}"
+    );
+    let c = compile(&src);
+    assert!(!c.has_errors(), "{:#?}", c.diagnostics);
+    let s = c.scene.expect("no errors");
+    let centre = only_honeycomb(&s).surface.base_cell_center().coords();
+    assert!(
+        (centre - DVec3::new(0.2, 0.0, 0.0)).length() < 1e-14,
+        "{centre:?}"
+    );
+}
+
+#[test]
+fn symbols_of_other_geometries_are_errors_on_the_symbol() {
+    for (symbol, word) in [
+        ("{4,3,4}", "Euclidean"),
+        ("{3,3,5}", "spherical"),
+        ("{5,3,3}", "spherical"),
+        ("{7,3,3}", "hyperideal"),
+        ("{3,3,7}", "hyperideal"),
+        ("{2,3,5}", "degenerate"),
+        ("{4,3,5,3}", "entries"),
+    ] {
+        let src = format!("{MATERIALS}Objects {{ Honeycomb {symbol}, #edge; }}");
+        let c = compile(&src);
+        let errors: Vec<_> = c.diagnostics.iter().filter(|d| d.is_error()).collect();
+        assert_eq!(errors.len(), 1, "{symbol}: {errors:#?}");
+        let d = errors[0];
+        assert_eq!(d.code.as_str(), "HSC0313", "{symbol}");
+        assert_eq!(d.severity, Severity::Error);
+        assert_eq!(&src[d.span.start..d.span.end], symbol);
+        assert!(d.message.contains(word), "{symbol}: {}", d.message);
+    }
+}
+
+#[test]
+fn the_keyword_and_its_options_are_in_the_vocabulary() {
+    let words = hscene_lang::vocabulary::object_keywords();
+    assert!(words.contains(&"Honeycomb"));
+    let options = hscene_lang::vocabulary::object_options();
+    for o in ["faces", "vertices", "depth", "colors"] {
+        assert!(options.contains(&o), "{o}");
+    }
+}
+
+#[test]
+fn the_formatter_keeps_the_symbol_as_mathematicians_write_it() {
+    let src = "Objects{Honeycomb { 6 ,3, 3 },#1,depth=1;}";
+    let out = hscene_lang::format(src).expect("no syntax errors");
+    assert_eq!(out, "Objects {\n    Honeycomb {6,3,3}, #1, depth = 1;\n}\n");
+}
+
+/// Every hit says what it met; faces take `faces = #F` or the palette by
+/// class, edges and vertices `#M` or, with `faces` too, the palette.
+#[test]
+fn each_part_is_drawn_in_its_material() {
+    use hgeom::{HoneycombPart, Ray, decode_honeycomb_part};
+    let directions = (0..3000).map(|i| {
+        let a = f64::from(i) * 0.618_033_988_749_895 * std::f64::consts::TAU;
+        let z = 1.0 - 2.0 * (f64::from(i) + 0.5) / 3000.0;
+        let r = (1.0 - z * z).sqrt();
+        DVec3::new(r * a.cos(), r * a.sin(), z)
+    });
+    let directions: Vec<DVec3> = directions.collect();
+    let cases = [
+        "Honeycomb {5,3,4}, #edge, edges = 0.05, vertices = 0.15, colors = (#a, #b);",
+        "Honeycomb {5,3,4}, #edge, edges = 0.05, vertices = 0.15, faces = #glass, colors = (#a, #b);",
+        "Honeycomb {5,3,4}, #edge, edges = 0.05, vertices = 0.15, faces = #glass;",
+    ];
+    for (case, objects) in cases.iter().enumerate() {
+        let s = scene(objects);
+        let h = only_honeycomb(&s);
+        let own = s.objects[0].material.index();
+        let [edge, glass, a, b] = ["edge", "glass", "a", "b"].map(|n| material(&s, n).index());
+        let mut seen = [false; 3];
+        for dir in &directions {
+            let ray = Ray::from_origin_unchecked(*dir);
+            let Some(hit) = h.surface.intersect(&ray, 0.0, f64::INFINITY) else {
+                continue;
+            };
+            let (kind, class) = decode_honeycomb_part(hit.part);
+            let coloured = if class % 2 == 0 { a } else { b };
+            let got = h.materials.material(hit.part, own);
+            let want = match (case, kind) {
+                (0, HoneycombPart::Face) => coloured,
+                (0, _) => edge,
+                (1, HoneycombPart::Face) => glass,
+                (1, _) => coloured,
+                (_, HoneycombPart::Face) => glass,
+                (_, _) => edge,
+            };
+            assert_eq!(got, want, "case {case}: {kind:?} of class {class}");
+            seen[kind as usize] = true;
+        }
+        assert!(seen.iter().all(|s| *s), "case {case}: parts met {seen:?}");
+    }
+}
