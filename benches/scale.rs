@@ -8,10 +8,11 @@
 //! cargo bench --bench scale -- --resolution 200  # quicker, smaller
 //! cargo bench --bench scale -- --threads 1       # both renderers on one thread
 //! cargo bench --bench scale -- --tessellation 2,6 --json
+//! cargo bench --bench scale -- --n 1000 --mesh 20480,1310720   # triangle meshes
 //! cargo bench --bench scale -- --n 1000 --write-scenes /tmp/s  # keep the scenes and twins
 //! ```
 //!
-//! Each scene (`spheres-N`, `rods-N`, `tessellation-D`; 2 point lights,
+//! Each scene (`spheres-N`, `rods-N`, `tessellation-D`, `mesh-N`; 2 point lights,
 //! recursion depth 1, net 0, the eye at the origin looking along +z with a
 //! 60 degree field of view) is written to a temporary directory and rendered
 //! by `hscene render` as a child process, whose CPU time (user + system)
@@ -21,6 +22,15 @@
 //! two directories above this bench's executable (`target/release/deps/..`).
 //! POV-Ray (`povray` on the PATH; its columns stay empty without it)
 //! renders the twin the same way.
+//!
+//! `mesh-N` is one `Mesh` of N triangles (N = 20 * 4^k, default 20,480 and
+//! 1,310,720): a geodesic icosphere subdivided k times, written as a binary
+//! PLY file next to the scene, laid out with size 1.5 and moved in front of
+//! the eye; its row also gives the peak memory per triangle (`B/tri`). Its
+//! POV-Ray twin is a `mesh2` with each vertex at its Klein coordinates: seen
+//! from the ball's centre a Poincaré point and its Klein image lie on one
+//! ray, and the flat triangle through the Klein images of an h-triangle's
+//! vertices is the h-triangle in the Klein model, so the silhouettes agree.
 //!
 //! The error columns come from the same scene compiled in-process: on a
 //! 32x32 grid of primary rays, the max and median hyperbolic distance
@@ -35,6 +45,7 @@ use std::process::{Command, ExitCode};
 
 use hgeom::glam::DVec3;
 use hgeom::{HSphere, Ray, Rod, Vertex};
+use hscene_lang::Options;
 use hscene_lang::ir::{Scene, Shape};
 use hscene_test_support::SplitMix64;
 
@@ -57,12 +68,23 @@ const NEAR: f64 = 0.5;
 const FAR: f64 = 4.0;
 /// Rod radius of the tessellation's edges.
 const EDGE_RADIUS: f64 = 0.015;
+/// The mesh file of a `mesh-N` case, next to its scene.
+const MESH_FILE: &str = "icosphere.ply";
+/// The hyperbolic radius of the mesh (its `size`).
+const MESH_SIZE: f64 = 1.5;
+/// Where the mesh's centre is moved (`at`), in ball coordinates:
+/// `tanh(2.32 / 2)`, 2.32 from the eye, where a ball of radius 1.5 subtends
+/// a half-angle of 25 degrees (`sinh 1.5 / sinh 2.32`), within the 30 of
+/// the picture.
+const MESH_AT: f64 = 0.821;
 
 #[derive(Clone, Copy)]
 enum Case {
     Spheres(usize),
     Rods(usize),
     Tessellation(u32),
+    /// An icosphere of this many triangles (`20 * 4^k`).
+    Mesh(usize),
 }
 
 impl Case {
@@ -71,6 +93,7 @@ impl Case {
             Case::Spheres(n) => format!("spheres-{n}"),
             Case::Rods(n) => format!("rods-{n}"),
             Case::Tessellation(d) => format!("tessellation-{d}"),
+            Case::Mesh(n) => format!("mesh-{n}"),
         }
     }
 }
@@ -171,6 +194,13 @@ fn scene_source(case: Case, resolution: u32) -> String {
                 "  Tessellation435 {depth}, #1, wireframe = {EDGE_RADIUS};"
             );
         }
+        Case::Mesh(_) => {
+            materials.push_str(&material(&mut rng));
+            let _ = writeln!(
+                objects,
+                "  Mesh \"{MESH_FILE}\", {MESH_SIZE}, #1, at = (0, 0, {MESH_AT});"
+            );
+        }
     }
     materials.push_str("}\n");
     objects.push_str("}\n");
@@ -179,10 +209,107 @@ fn scene_source(case: Case, resolution: u32) -> String {
     s
 }
 
+/// The number of subdivisions `k` of an icosphere of `n = 20 * 4^k`
+/// triangles (at most 9: the PLY file must stay under the loader's 64 MiB).
+fn subdivisions(n: usize) -> Result<u32, String> {
+    (0..=9)
+        .find(|&k| 20 << (2 * k) == n)
+        .ok_or(format!("--mesh: {n} is not 20 * 4^k triangles (20480, 81920, 327680, 1310720, ...)"))
+}
+
+/// The geodesic icosphere subdivided `k` times: unit vertices and
+/// triangles wound counter-clockwise seen from outside.
+fn icosphere(k: u32) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+    let g = 0.5 * (1.0 + 5f64.sqrt());
+    let mut verts: Vec<DVec3> = [
+        (-1.0, g, 0.0),
+        (1.0, g, 0.0),
+        (-1.0, -g, 0.0),
+        (1.0, -g, 0.0),
+        (0.0, -1.0, g),
+        (0.0, 1.0, g),
+        (0.0, -1.0, -g),
+        (0.0, 1.0, -g),
+        (g, 0.0, -1.0),
+        (g, 0.0, 1.0),
+        (-g, 0.0, -1.0),
+        (-g, 0.0, 1.0),
+    ]
+    .iter()
+    .map(|&(x, y, z)| DVec3::new(x, y, z).normalize())
+    .collect();
+    let mut faces: Vec<[u32; 3]> = vec![
+        [0, 11, 5],
+        [0, 5, 1],
+        [0, 1, 7],
+        [0, 7, 10],
+        [0, 10, 11],
+        [1, 5, 9],
+        [5, 11, 4],
+        [11, 10, 2],
+        [10, 7, 6],
+        [7, 1, 8],
+        [3, 9, 4],
+        [3, 4, 2],
+        [3, 2, 6],
+        [3, 6, 8],
+        [3, 8, 9],
+        [4, 9, 5],
+        [2, 4, 11],
+        [6, 2, 10],
+        [8, 6, 7],
+        [9, 8, 1],
+    ];
+    for _ in 0..k {
+        let mut middle = std::collections::HashMap::with_capacity(faces.len() * 3 / 2);
+        let mut next = Vec::with_capacity(4 * faces.len());
+        for [a, b, c] in faces {
+            let mut mid = |u: u32, w: u32| {
+                *middle.entry((u.min(w), u.max(w))).or_insert_with(|| {
+                    verts.push((verts[u as usize] + verts[w as usize]).normalize());
+                    verts.len() as u32 - 1
+                })
+            };
+            let (ab, bc, ca) = (mid(a, b), mid(b, c), mid(c, a));
+            next.extend([[a, ab, ca], [ab, b, bc], [ca, bc, c], [ab, bc, ca]]);
+        }
+        faces = next;
+    }
+    (verts, faces)
+}
+
+/// A binary little-endian PLY file of a mesh (`float` coordinates, `int`
+/// indices, as scanned meshes usually come).
+fn ply_bytes(verts: &[DVec3], faces: &[[u32; 3]]) -> Vec<u8> {
+    let header = format!(
+        "ply\nformat binary_little_endian 1.0\ncomment geodesic icosphere (benches/scale.rs)\n\
+         element vertex {}\nproperty float x\nproperty float y\nproperty float z\n\
+         element face {}\nproperty list uchar int vertex_indices\nend_header\n",
+        verts.len(),
+        faces.len()
+    );
+    let mut out = Vec::with_capacity(header.len() + 12 * verts.len() + 13 * faces.len());
+    out.extend_from_slice(header.as_bytes());
+    for p in verts {
+        for c in [p.x, p.y, p.z] {
+            out.extend_from_slice(&(c as f32).to_le_bytes());
+        }
+    }
+    for f in faces {
+        out.push(3);
+        for &i in f {
+            out.extend_from_slice(&i.to_le_bytes());
+        }
+    }
+    out
+}
+
 /// The Euclidean twin for POV-Ray: the same camera, lights and colours;
 /// each h-sphere as the Euclidean sphere it is in the ball (the same
 /// silhouette), each rod as the Euclidean spheres of its caps joined by a
-/// cone (the tube's silhouette approximately). Returns the source and the
+/// cone (the tube's silhouette approximately), each mesh as a `mesh2` with
+/// its vertices at their Klein coordinates (the same silhouette from the
+/// eye at the centre, see the module docs). Returns the source and the
 /// number of objects it leaves out (rods with ideal ends, other shapes).
 fn pov_source(scene: &Scene) -> (String, usize) {
     let mut s = String::from("#version 3.7;\n");
@@ -242,6 +369,10 @@ fn pov_source(scene: &Scene) -> (String, usize) {
             }
             Shape::Rod(r) => rod(&mut s, r, tex),
             Shape::Wireframe(rods) => rods.iter().all(|r| rod(&mut s, r, tex)),
+            Shape::Mesh(m) => {
+                pov_mesh(&mut s, m, tex);
+                true
+            }
             _ => false,
         };
         if !drawn {
@@ -249,6 +380,24 @@ fn pov_source(scene: &Scene) -> (String, usize) {
         }
     }
     (s, left_out)
+}
+
+/// A mesh as a POV-Ray `mesh2` with its world vertices at their Klein
+/// coordinates (`f32` precision, ample for the picture).
+fn pov_mesh(s: &mut String, m: &hgeom::TriangleMesh, tex: usize) {
+    let vertices = m.vertices();
+    let _ = writeln!(s, "mesh2 {{ vertex_vectors {{ {}", vertices.len());
+    for p in vertices.iter() {
+        let h = p.to_hyperboloid();
+        let k = (h.truncate() / h.w).as_vec3();
+        let _ = writeln!(s, ",<{},{},{}>", k.x, k.y, k.z);
+    }
+    let triangles = m.triangles();
+    let _ = writeln!(s, "}} face_indices {{ {}", triangles.len());
+    for [a, b, c] in triangles.iter() {
+        let _ = writeln!(s, ",<{a},{b},{c}>");
+    }
+    let _ = writeln!(s, "}} texture {{ T{tex} }} }}");
 }
 
 /// Rays of the probe whose nearest hit through the renderer's hierarchy
@@ -297,12 +446,23 @@ struct Row {
     name: String,
     objects: usize,
     primitives: usize,
+    /// The triangles of a mesh case, for its bytes per triangle.
+    mesh_triangles: Option<usize>,
     hscene: Measured,
     povray: Option<Measured>,
     pov_left_out: usize,
     mrays_per_s: f64,
     errors: common::HitErrors,
     misses: usize,
+}
+
+impl Row {
+    /// The peak resident memory of the hscene process per mesh triangle,
+    /// all of it counted (`peak MiB * 2^20 / N`).
+    fn bytes_per_triangle(&self) -> Option<f64> {
+        self.mesh_triangles
+            .map(|n| self.hscene.peak_mib * f64::from(1u32 << 20) / n as f64)
+    }
 }
 
 fn print_header(resolution: u32, threads: Option<usize>) {
@@ -314,7 +474,7 @@ fn print_header(resolution: u32, threads: Option<usize>) {
         threads.unwrap_or(all)
     );
     println!(
-        "{:<17} {:>6} {:>6} {:>8} {:>8} {:>8} {:>8} {:>6} {:>6} {:>7} {:>7} {:>7} {:>8} {:>8} {:>5} {:>6}",
+        "{:<17} {:>6} {:>7} {:>8} {:>8} {:>8} {:>8} {:>6} {:>6} {:>7} {:>7} {:>7} {:>6} {:>8} {:>8} {:>5} {:>6}",
         "scene",
         "objs",
         "prims",
@@ -327,6 +487,7 @@ fn print_header(resolution: u32, threads: Option<usize>) {
         "Mray/s",
         "hs MiB",
         "pov MiB",
+        "B/tri",
         "err max",
         "err med",
         "hits",
@@ -346,7 +507,7 @@ fn print_row(r: &Row) {
             .map_or("-".to_string(), |m| format!("{:.2}", f(&r.hscene) / f(m)))
     };
     println!(
-        "{:<17} {:>6} {:>6} {:>8.3} {:>8.3} {:>8} {:>8} {:>6} {:>6} {:>7.2} {:>7.1} {:>7} {:>8.1e} {:>8.1e} {:>5} {:>6}",
+        "{:<17} {:>6} {:>7} {:>8.3} {:>8.3} {:>8} {:>8} {:>6} {:>6} {:>7.2} {:>7.1} {:>7} {:>6} {:>8.1e} {:>8.1e} {:>5} {:>6}",
         r.name,
         r.objects,
         r.primitives,
@@ -359,6 +520,8 @@ fn print_row(r: &Row) {
         r.mrays_per_s,
         r.hscene.peak_mib,
         pov(|m| m.peak_mib, 1),
+        r.bytes_per_triangle()
+            .map_or("-".to_string(), |b| format!("{b:.0}")),
         r.errors.max,
         r.errors.median,
         r.errors.sampled,
@@ -382,6 +545,8 @@ fn json_row(r: &Row, resolution: u32, threads: Option<usize>) -> String {
         "povray_cpu_s": pov(|m| m.cpu_s),
         "povray_wall_s": pov(|m| m.wall_s),
         "povray_peak_mib": pov(|m| m.peak_mib),
+        "mesh_triangles": r.mesh_triangles,
+        "hscene_peak_bytes_per_triangle": r.bytes_per_triangle(),
         "povray_objects_left_out": r.povray.as_ref().map(|_| r.pov_left_out),
         "cpu_ratio": ratio(|m| m.cpu_s),
         "wall_ratio": ratio(|m| m.wall_s),
@@ -426,7 +591,21 @@ fn run_case(
     keep: Option<&Path>,
 ) -> Result<Row, String> {
     let source = scene_source(case, resolution);
-    let compiled = hscene_lang::compile(&source);
+    let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
+    if let Case::Mesh(n) = case {
+        let (verts, faces) = icosphere(subdivisions(n)?);
+        let ply = ply_bytes(&verts, &faces);
+        std::fs::write(dir.path().join(MESH_FILE), &ply).map_err(|e| e.to_string())?;
+        if let Some(keep) = keep {
+            std::fs::write(keep.join(MESH_FILE), &ply)
+                .map_err(|e| format!("--write-scenes: {e}"))?;
+        }
+    }
+    let options = Options {
+        base_dir: Some(dir.path().to_path_buf()),
+        ..Options::default()
+    };
+    let compiled = hscene_lang::compile_with(&source, &options);
     let Some(scene) = compiled.scene else {
         let messages: Vec<String> = compiled
             .diagnostics
@@ -435,7 +614,6 @@ fn run_case(
             .collect();
         return Err(format!("does not compile: {}", messages.join("; ")));
     };
-    let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
     let scene_file = dir.path().join(format!("{}.hsc", case.name()));
     std::fs::write(&scene_file, &source).map_err(|e| e.to_string())?;
     if let Some(keep) = keep {
@@ -473,6 +651,7 @@ fn run_case(
         .iter()
         .map(|o| match &o.shape {
             Shape::Wireframe(rods) => rods.len(),
+            Shape::Mesh(m) => m.triangle_count(),
             _ => 1,
         })
         .sum();
@@ -480,6 +659,7 @@ fn run_case(
         name: case.name(),
         objects: scene.objects.len(),
         primitives,
+        mesh_triangles: matches!(case, Case::Mesh(_)).then_some(primitives),
         hscene: measured,
         povray,
         pov_left_out,
@@ -511,9 +691,13 @@ fn main() -> ExitCode {
         };
         let counts: Vec<usize> = list(&args, "--n", &[1000, 5000, 20000])?;
         let depths: Vec<u32> = list(&args, "--tessellation", &[2, 6])?;
-        Ok((resolution, threads, counts, depths))
+        let meshes: Vec<usize> = list(&args, "--mesh", &[20480, 1_310_720])?;
+        for &n in &meshes {
+            subdivisions(n)?;
+        }
+        Ok((resolution, threads, counts, depths, meshes))
     })();
-    let (resolution, threads, counts, depths) = match parsed {
+    let (resolution, threads, counts, depths, meshes) = match parsed {
         Ok(p) => p,
         Err(e) => {
             eprintln!("{e}");
@@ -535,6 +719,7 @@ fn main() -> ExitCode {
         cases.push(Case::Rods(n));
     }
     cases.extend(depths.iter().map(|&d| Case::Tessellation(d)));
+    cases.extend(meshes.iter().map(|&n| Case::Mesh(n)));
     if !json {
         print_header(resolution, threads);
     }
