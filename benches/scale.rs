@@ -69,7 +69,9 @@ const FAR: f64 = 4.0;
 /// Rod radius of the tessellation's edges.
 const EDGE_RADIUS: f64 = 0.015;
 /// The mesh file of a `mesh-N` case, next to its scene.
-const MESH_FILE: &str = "icosphere.ply";
+fn mesh_file(n: usize) -> String {
+    format!("icosphere-{n}.ply")
+}
 /// The hyperbolic radius of the mesh (its `size`).
 const MESH_SIZE: f64 = 1.5;
 /// Where the mesh's centre is moved (`at`), in ball coordinates:
@@ -194,11 +196,12 @@ fn scene_source(case: Case, resolution: u32) -> String {
                 "  Tessellation435 {depth}, #1, wireframe = {EDGE_RADIUS};"
             );
         }
-        Case::Mesh(_) => {
+        Case::Mesh(n) => {
             materials.push_str(&material(&mut rng));
             let _ = writeln!(
                 objects,
-                "  Mesh \"{MESH_FILE}\", {MESH_SIZE}, #1, at = (0, 0, {MESH_AT});"
+                "  Mesh \"{}\", {MESH_SIZE}, #1, at = (0, 0, {MESH_AT});",
+                mesh_file(n)
             );
         }
     }
@@ -595,9 +598,9 @@ fn run_case(
     if let Case::Mesh(n) = case {
         let (verts, faces) = icosphere(subdivisions(n)?);
         let ply = ply_bytes(&verts, &faces);
-        std::fs::write(dir.path().join(MESH_FILE), &ply).map_err(|e| e.to_string())?;
+        std::fs::write(dir.path().join(mesh_file(n)), &ply).map_err(|e| e.to_string())?;
         if let Some(keep) = keep {
-            std::fs::write(keep.join(MESH_FILE), &ply)
+            std::fs::write(keep.join(mesh_file(n)), &ply)
                 .map_err(|e| format!("--write-scenes: {e}"))?;
         }
     }
