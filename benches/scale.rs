@@ -215,9 +215,9 @@ fn scene_source(case: Case, resolution: u32) -> String {
 /// The number of subdivisions `k` of an icosphere of `n = 20 * 4^k`
 /// triangles (at most 9: the PLY file must stay under the loader's 64 MiB).
 fn subdivisions(n: usize) -> Result<u32, String> {
-    (0..=9)
-        .find(|&k| 20 << (2 * k) == n)
-        .ok_or(format!("--mesh: {n} is not 20 * 4^k triangles (20480, 81920, 327680, 1310720, ...)"))
+    (0..=9).find(|&k| 20 << (2 * k) == n).ok_or(format!(
+        "--mesh: {n} is not 20 * 4^k triangles (20480, 81920, 327680, 1310720, ...)"
+    ))
 }
 
 /// The geodesic icosphere subdivided `k` times: unit vertices and

@@ -269,9 +269,7 @@ impl Builder<'_> {
         }
         // Binned SAH along the widest axis of the centres.
         let scale = BINS as f64 / extent[axis];
-        let bin = |i: u32| {
-            (((self.centre(i)[axis] - clo[axis]) * scale) as usize).min(BINS - 1)
-        };
+        let bin = |i: u32| (((self.centre(i)[axis] - clo[axis]) * scale) as usize).min(BINS - 1);
         let mut counts = [0usize; BINS];
         let mut bounds = [(DVec3::INFINITY, DVec3::NEG_INFINITY); BINS];
         for &i in items.iter() {
