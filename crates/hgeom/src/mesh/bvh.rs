@@ -11,6 +11,10 @@ use crate::ray::Ray;
 const BINS: usize = 16;
 /// The SAH may keep up to this many triangles in a leaf.
 const MAX_LEAF: usize = 8;
+/// Sets of up to this many triangles are always leaves: splitting them
+/// saves little work per ray (a triangle's exact test costs about two box
+/// tests) and would add a node (32 bytes) for every two triangles or so.
+const MIN_LEAF: usize = 4;
 /// Below this depth splits are chosen by the SAH; deeper, by the median
 /// (which halves the count, so the depth stays bounded however the SAH
 /// splits went: 2^30 triangles need 30 more levels at most).
@@ -242,7 +246,7 @@ impl Builder<'_> {
     /// Where to split `items` (after reordering them), or `None` for a leaf.
     fn split(&self, items: &mut [u32], depth: usize, area: f64) -> Option<usize> {
         let n = items.len();
-        if n <= 2 {
+        if n <= MIN_LEAF {
             return None;
         }
         let (mut clo, mut chi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
