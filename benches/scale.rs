@@ -8,10 +8,11 @@
 //! cargo bench --bench scale -- --resolution 200  # quicker, smaller
 //! cargo bench --bench scale -- --threads 1       # both renderers on one thread
 //! cargo bench --bench scale -- --tessellation 2,6 --json
+//! cargo bench --bench scale -- --n 1000 --mesh 20480,1310720   # triangle meshes
 //! cargo bench --bench scale -- --n 1000 --write-scenes /tmp/s  # keep the scenes and twins
 //! ```
 //!
-//! Each scene (`spheres-N`, `rods-N`, `tessellation-D`; 2 point lights,
+//! Each scene (`spheres-N`, `rods-N`, `tessellation-D`, `mesh-N`; 2 point lights,
 //! recursion depth 1, net 0, the eye at the origin looking along +z with a
 //! 60 degree field of view) is written to a temporary directory and rendered
 //! by `hscene render` as a child process, whose CPU time (user + system)
@@ -21,6 +22,15 @@
 //! two directories above this bench's executable (`target/release/deps/..`).
 //! POV-Ray (`povray` on the PATH; its columns stay empty without it)
 //! renders the twin the same way.
+//!
+//! `mesh-N` is one `Mesh` of N triangles (N = 20 * 4^k, default 20,480 and
+//! 1,310,720): a geodesic icosphere subdivided k times, written as a binary
+//! PLY file next to the scene, laid out with size 1.5 and moved in front of
+//! the eye; its row also gives the peak memory per triangle (`B/tri`). Its
+//! POV-Ray twin is a `mesh2` with each vertex at its Klein coordinates: seen
+//! from the ball's centre a Poincaré point and its Klein image lie on one
+//! ray, and the flat triangle through the Klein images of an h-triangle's
+//! vertices is the h-triangle in the Klein model, so the silhouettes agree.
 //!
 //! The error columns come from the same scene compiled in-process: on a
 //! 32x32 grid of primary rays, the max and median hyperbolic distance
@@ -35,11 +45,14 @@ use std::process::{Command, ExitCode};
 
 use hgeom::glam::DVec3;
 use hgeom::{HSphere, Ray, Rod, Vertex};
+use hscene_lang::Options;
 use hscene_lang::ir::{Scene, Shape};
 use hscene_test_support::SplitMix64;
 
 mod common;
+mod mesh_case;
 use common::{Measured, Probe, hscene_binary, povray_installed, v};
+use mesh_case::{icosphere, ply_bytes, pov_mesh, subdivisions};
 
 /// Horizontal (and, the image being square, vertical) field of view.
 const FOV_DEGREES: f64 = 60.0;
@@ -57,12 +70,25 @@ const NEAR: f64 = 0.5;
 const FAR: f64 = 4.0;
 /// Rod radius of the tessellation's edges.
 const EDGE_RADIUS: f64 = 0.015;
+/// The mesh file of a `mesh-N` case, next to its scene.
+fn mesh_file(n: usize) -> String {
+    format!("icosphere-{n}.ply")
+}
+/// The hyperbolic radius of the mesh (its `size`).
+const MESH_SIZE: f64 = 1.5;
+/// Where the mesh's centre is moved (`at`), in ball coordinates:
+/// `tanh(2.32 / 2)`, 2.32 from the eye, where a ball of radius 1.5 subtends
+/// a half-angle of 25 degrees (`sinh 1.5 / sinh 2.32`), within the 30 of
+/// the picture.
+const MESH_AT: f64 = 0.821;
 
 #[derive(Clone, Copy)]
 enum Case {
     Spheres(usize),
     Rods(usize),
     Tessellation(u32),
+    /// An icosphere of this many triangles (`20 * 4^k`).
+    Mesh(usize),
 }
 
 impl Case {
@@ -71,6 +97,7 @@ impl Case {
             Case::Spheres(n) => format!("spheres-{n}"),
             Case::Rods(n) => format!("rods-{n}"),
             Case::Tessellation(d) => format!("tessellation-{d}"),
+            Case::Mesh(n) => format!("mesh-{n}"),
         }
     }
 }
@@ -171,6 +198,14 @@ fn scene_source(case: Case, resolution: u32) -> String {
                 "  Tessellation435 {depth}, #1, wireframe = {EDGE_RADIUS};"
             );
         }
+        Case::Mesh(n) => {
+            materials.push_str(&material(&mut rng));
+            let _ = writeln!(
+                objects,
+                "  Mesh \"{}\", {MESH_SIZE}, #1, at = (0, 0, {MESH_AT});",
+                mesh_file(n)
+            );
+        }
     }
     materials.push_str("}\n");
     objects.push_str("}\n");
@@ -182,7 +217,9 @@ fn scene_source(case: Case, resolution: u32) -> String {
 /// The Euclidean twin for POV-Ray: the same camera, lights and colours;
 /// each h-sphere as the Euclidean sphere it is in the ball (the same
 /// silhouette), each rod as the Euclidean spheres of its caps joined by a
-/// cone (the tube's silhouette approximately). Returns the source and the
+/// cone (the tube's silhouette approximately), each mesh as a `mesh2` with
+/// its vertices at their Klein coordinates (the same silhouette from the
+/// eye at the centre, see the module docs). Returns the source and the
 /// number of objects it leaves out (rods with ideal ends, other shapes).
 fn pov_source(scene: &Scene) -> (String, usize) {
     let mut s = String::from("#version 3.7;\n");
@@ -242,6 +279,10 @@ fn pov_source(scene: &Scene) -> (String, usize) {
             }
             Shape::Rod(r) => rod(&mut s, r, tex),
             Shape::Wireframe(rods) => rods.iter().all(|r| rod(&mut s, r, tex)),
+            Shape::Mesh(m) => {
+                pov_mesh(&mut s, m, tex);
+                true
+            }
             _ => false,
         };
         if !drawn {
@@ -283,12 +324,23 @@ struct Row {
     name: String,
     objects: usize,
     primitives: usize,
+    /// The triangles of a mesh case, for its bytes per triangle.
+    mesh_triangles: Option<usize>,
     hscene: Measured,
     povray: Option<Measured>,
     pov_left_out: usize,
     mrays_per_s: f64,
     errors: common::HitErrors,
     misses: usize,
+}
+
+impl Row {
+    /// The peak resident memory of the hscene process per mesh triangle,
+    /// all of it counted (`peak MiB * 2^20 / N`).
+    fn bytes_per_triangle(&self) -> Option<f64> {
+        self.mesh_triangles
+            .map(|n| self.hscene.peak_mib * f64::from(1u32 << 20) / n as f64)
+    }
 }
 
 fn print_header(resolution: u32, threads: Option<usize>) {
@@ -300,7 +352,7 @@ fn print_header(resolution: u32, threads: Option<usize>) {
         threads.unwrap_or(all)
     );
     println!(
-        "{:<17} {:>6} {:>6} {:>8} {:>8} {:>8} {:>8} {:>6} {:>6} {:>7} {:>7} {:>7} {:>8} {:>8} {:>5} {:>6}",
+        "{:<17} {:>6} {:>7} {:>8} {:>8} {:>8} {:>8} {:>6} {:>6} {:>7} {:>7} {:>7} {:>6} {:>8} {:>8} {:>5} {:>6}",
         "scene",
         "objs",
         "prims",
@@ -313,6 +365,7 @@ fn print_header(resolution: u32, threads: Option<usize>) {
         "Mray/s",
         "hs MiB",
         "pov MiB",
+        "B/tri",
         "err max",
         "err med",
         "hits",
@@ -332,7 +385,7 @@ fn print_row(r: &Row) {
             .map_or("-".to_string(), |m| format!("{:.2}", f(&r.hscene) / f(m)))
     };
     println!(
-        "{:<17} {:>6} {:>6} {:>8.3} {:>8.3} {:>8} {:>8} {:>6} {:>6} {:>7.2} {:>7.1} {:>7} {:>8.1e} {:>8.1e} {:>5} {:>6}",
+        "{:<17} {:>6} {:>7} {:>8.3} {:>8.3} {:>8} {:>8} {:>6} {:>6} {:>7.2} {:>7.1} {:>7} {:>6} {:>8.1e} {:>8.1e} {:>5} {:>6}",
         r.name,
         r.objects,
         r.primitives,
@@ -345,6 +398,8 @@ fn print_row(r: &Row) {
         r.mrays_per_s,
         r.hscene.peak_mib,
         pov(|m| m.peak_mib, 1),
+        r.bytes_per_triangle()
+            .map_or("-".to_string(), |b| format!("{b:.0}")),
         r.errors.max,
         r.errors.median,
         r.errors.sampled,
@@ -368,6 +423,8 @@ fn json_row(r: &Row, resolution: u32, threads: Option<usize>) -> String {
         "povray_cpu_s": pov(|m| m.cpu_s),
         "povray_wall_s": pov(|m| m.wall_s),
         "povray_peak_mib": pov(|m| m.peak_mib),
+        "mesh_triangles": r.mesh_triangles,
+        "hscene_peak_bytes_per_triangle": r.bytes_per_triangle(),
         "povray_objects_left_out": r.povray.as_ref().map(|_| r.pov_left_out),
         "cpu_ratio": ratio(|m| m.cpu_s),
         "wall_ratio": ratio(|m| m.wall_s),
@@ -412,7 +469,21 @@ fn run_case(
     keep: Option<&Path>,
 ) -> Result<Row, String> {
     let source = scene_source(case, resolution);
-    let compiled = hscene_lang::compile(&source);
+    let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
+    if let Case::Mesh(n) = case {
+        let (verts, faces) = icosphere(subdivisions(n)?);
+        let ply = ply_bytes(&verts, &faces);
+        std::fs::write(dir.path().join(mesh_file(n)), &ply).map_err(|e| e.to_string())?;
+        if let Some(keep) = keep {
+            std::fs::write(keep.join(mesh_file(n)), &ply)
+                .map_err(|e| format!("--write-scenes: {e}"))?;
+        }
+    }
+    let options = Options {
+        base_dir: Some(dir.path().to_path_buf()),
+        ..Options::default()
+    };
+    let compiled = hscene_lang::compile_with(&source, &options);
     let Some(scene) = compiled.scene else {
         let messages: Vec<String> = compiled
             .diagnostics
@@ -421,7 +492,6 @@ fn run_case(
             .collect();
         return Err(format!("does not compile: {}", messages.join("; ")));
     };
-    let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
     let scene_file = dir.path().join(format!("{}.hsc", case.name()));
     std::fs::write(&scene_file, &source).map_err(|e| e.to_string())?;
     if let Some(keep) = keep {
@@ -459,6 +529,7 @@ fn run_case(
         .iter()
         .map(|o| match &o.shape {
             Shape::Wireframe(rods) => rods.len(),
+            Shape::Mesh(m) => m.triangle_count(),
             _ => 1,
         })
         .sum();
@@ -466,6 +537,7 @@ fn run_case(
         name: case.name(),
         objects: scene.objects.len(),
         primitives,
+        mesh_triangles: matches!(case, Case::Mesh(_)).then_some(primitives),
         hscene: measured,
         povray,
         pov_left_out,
@@ -497,9 +569,13 @@ fn main() -> ExitCode {
         };
         let counts: Vec<usize> = list(&args, "--n", &[1000, 5000, 20000])?;
         let depths: Vec<u32> = list(&args, "--tessellation", &[2, 6])?;
-        Ok((resolution, threads, counts, depths))
+        let meshes: Vec<usize> = list(&args, "--mesh", &[20480, 1_310_720])?;
+        for &n in &meshes {
+            subdivisions(n)?;
+        }
+        Ok((resolution, threads, counts, depths, meshes))
     })();
-    let (resolution, threads, counts, depths) = match parsed {
+    let (resolution, threads, counts, depths, meshes) = match parsed {
         Ok(p) => p,
         Err(e) => {
             eprintln!("{e}");
@@ -521,6 +597,7 @@ fn main() -> ExitCode {
         cases.push(Case::Rods(n));
     }
     cases.extend(depths.iter().map(|&d| Case::Tessellation(d)));
+    cases.extend(meshes.iter().map(|&n| Case::Mesh(n)));
     if !json {
         print_header(resolution, threads);
     }

@@ -31,7 +31,7 @@
 //! sign. They are evaluated with an exact sign (an error-free product
 //! fallback), each vertex projected once per ray, so a ray through a shared
 //! edge or vertex of a closed mesh cannot slip between its triangles. The
-//! crossing itself is [`HPlane::crossing`] of the triangle's world plane.
+//! crossing itself is [`HPlane::crossing`](crate::HPlane::crossing) of the triangle's world plane.
 //!
 //! ```
 //! use glam::DVec3;
@@ -67,7 +67,6 @@ use std::sync::Arc;
 use glam::{DMat4, DVec4};
 
 use crate::isometry::Isometry;
-use crate::plane::HPlane;
 use crate::point::Point;
 use bvh::Node;
 
@@ -87,14 +86,14 @@ pub use normals::GivenNormals;
 /// Invariants: at least one triangle; every vertex an interior h-point
 /// ([`Point::is_representable`]), also in the local frame; every kept
 /// triangle refers to three distinct vertices that span an h-plane (to a
-/// relative 1e-14, the criterion of [`HPlane::through`]); the local data
+/// relative 1e-14, the criterion of [`HPlane::through`](crate::HPlane::through)); the local data
 /// (vertices, triangle planes, BVH) is shared between the meshes that
 /// [`TriangleMesh::transformed`] makes from one another.
 ///
 /// Orientation: a triangle's normal side is the side from which its
 /// vertices, in the order of [`TriangleMesh::triangles`], run
 /// counter-clockwise (the right-hand rule, as in OBJ and PLY files and
-/// [`HPlane::through`]). For a closed, consistently wound mesh that is the
+/// [`HPlane::through`](crate::HPlane::through)). For a closed, consistently wound mesh that is the
 /// outside. After an orientation-reversing move the normals are the images
 /// of the old normals (outside stays outside) and `triangles` reports each
 /// winding reversed, so the rule keeps holding.
@@ -118,21 +117,32 @@ pub struct TriangleMesh {
 }
 
 /// What every moved copy of a mesh shares.
+///
+/// Memory: per vertex 64 bytes (`input`, `local`), per kept triangle 16
+/// (`tris`, `order`) and about 20 of BVH nodes. Nothing per triangle is
+/// copied from its vertices: the exact test reads the shared local
+/// vertices through the indices, and a triangle's plane is recomputed from
+/// them, bit for bit as the build computed it, only for the few triangles
+/// the geodesic meets. The local vertices as points (for
+/// [`TriangleMesh::vertices`] after a move) and the kept triangles in the
+/// given order are likewise recomputed when asked for, not stored.
 struct Shared {
     /// The vertices as given.
     input: Vec<Point>,
-    /// The vertices in the local frame (what the intersection uses).
-    local: Vec<Point>,
-    /// The kept triangles, in the order given.
-    triangles: Vec<[u32; 3]>,
+    /// The vertices in the local frame, on the hyperboloid (what the
+    /// intersection uses; every triangle reads a shared vertex from here,
+    /// so it projects identically for all of them).
+    local: Vec<DVec4>,
+    /// The kept triangles (indices into `input` and `local`, wound as
+    /// given), in BVH leaf order.
+    tris: Vec<[u32; 3]>,
+    /// For each entry of `tris`, its index among the kept triangles in the
+    /// order given.
+    order: Vec<u32>,
     /// How many triangles were dropped as degenerate.
     dropped: usize,
     /// From the local frame to the frame of `input`.
     base: Isometry,
-    /// The kept triangles in the local frame, in BVH leaf order.
-    tris: Vec<Tri>,
-    /// For each entry of `tris`, its index in `triangles`.
-    order: Vec<u32>,
     /// The flattened BVH; `nodes[0]` is the root.
     nodes: Vec<Node>,
     /// The largest distance of a kept triangle's vertex from the local origin.
@@ -142,14 +152,28 @@ struct Shared {
     scale: f64,
 }
 
-/// One triangle in the local frame.
-#[derive(Clone, Copy)]
-struct Tri {
-    /// The hyperboloid vertices (copies of the shared local vertices, bit for
-    /// bit, so every triangle projects a shared vertex identically).
-    v: [DVec4; 3],
-    /// The oriented plane (right-hand rule with `v`).
-    plane: HPlane,
+impl Shared {
+    /// The local hyperboloid vertices of the triangle at leaf position `pos`.
+    #[inline]
+    fn corners(&self, pos: usize) -> [DVec4; 3] {
+        self.tris[pos].map(|k| self.local[k as usize])
+    }
+
+    /// The vertex `k` as a point of the local frame: the given point moved
+    /// by the inverse of `base`, computed as the build computed it (so its
+    /// hyperboloid image is `local[k]` bit for bit).
+    fn local_point(&self, back: &Isometry, k: usize) -> Point {
+        placement::settled(back.apply(&self.input[k]))
+    }
+
+    /// The kept triangles in the order given.
+    fn given_order(&self) -> Vec<[u32; 3]> {
+        let mut triangles = vec![[0u32; 3]; self.tris.len()];
+        for (t, &k) in self.tris.iter().zip(&self.order) {
+            triangles[k as usize] = *t;
+        }
+        triangles
+    }
 }
 
 impl TriangleMesh {
@@ -159,7 +183,7 @@ impl TriangleMesh {
     ///
     /// Exact.
     pub fn triangle_count(&self) -> usize {
-        self.shared.triangles.len()
+        self.shared.tris.len()
     }
 
     /// The number of vertices (as given, used or not).
@@ -177,7 +201,7 @@ impl TriangleMesh {
     /// # Accuracy
     ///
     /// Exact: counted by [`TriangleMesh::new`] with the relative 1e-14
-    /// criterion of [`HPlane::through`].
+    /// criterion of [`HPlane::through`](crate::HPlane::through).
     pub fn dropped_triangles(&self) -> usize {
         self.shared.dropped
     }
@@ -200,6 +224,9 @@ impl PartialEq for TriangleMesh {
         self.moved == other.moved
             && self.smooth == other.smooth
             && (Arc::ptr_eq(&self.shared, &other.shared)
-                || (a.input == b.input && a.triangles == b.triangles && a.dropped == b.dropped))
+                || (a.input == b.input
+                    && a.tris == b.tris
+                    && a.order == b.order
+                    && a.dropped == b.dropped))
     }
 }

@@ -184,9 +184,7 @@ impl PreparedScene {
                     )));
                 }
                 let parts = o.shape.part_materials().cloned();
-                let part_ids = parts
-                    .iter()
-                    .flat_map(|p| p.faces.iter().chain(&p.palette));
+                let part_ids = parts.iter().flat_map(|p| p.faces.iter().chain(&p.palette));
                 if let Some(bad) = part_ids
                     .map(|m| m.index())
                     .find(|&m| m >= scene.materials.len())

@@ -14,7 +14,7 @@ mod shape;
 
 pub use animation::{Animation, FrameError, Motion, Track, TrackBase, compose, frame_time};
 pub use honeycomb::{Honeycomb, PartMaterials};
-pub use shape::{BoxedSurface, Shape, Surfaces};
+pub use shape::{BoxedSurface, MESH_TRIANGLES_PER_PRIMITIVE, Shape, Surfaces, mesh_budget_cost};
 
 /// A linear RGB triple.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]

@@ -15,13 +15,11 @@
 
 use std::path::Path;
 
-use hgeom::glam::DVec3;
-
 mod data;
 mod normals;
 mod obj;
+mod ply;
 
-use data::fan;
 pub use data::{MAX_MESH_FILE_BYTES, MeshData, MeshFileError};
 
 /// The formats a mesh is read from.
@@ -58,23 +56,39 @@ impl MeshFormat {
 /// and texture coordinates are ignored. A PLY file needs a `vertex` element
 /// with `x`, `y`, `z` and a `face` element with a `vertex_indices` (or
 /// `vertex_index`) list.
+///
+/// A PLY file is read as a stream (never held whole, see `mesh_file/ply.rs`),
+/// through a reader that stops at the limit: a file that grows past it
+/// while being read ends early for the parser. An OBJ file is read whole.
 pub fn load(path: &Path) -> Result<MeshData, MeshFileError> {
+    use std::io::Read;
     let format = MeshFormat::from_path(path).ok_or(MeshFileError::UnknownFormat)?;
-    parse(format, &read_bounded(path)?)
+    let file = open_bounded(path)?;
+    let data = match format {
+        MeshFormat::Obj => obj::parse(&read_bounded(file)?)?,
+        MeshFormat::Ply => {
+            let len = file.metadata().map_err(MeshFileError::Io)?.len();
+            let source = std::io::BufReader::new(file.take(MAX_MESH_FILE_BYTES));
+            ply::parse(source, len)?
+        }
+    };
+    data.check()?;
+    Ok(data)
 }
 
 /// Parses the bytes of a mesh file and checks the [`MeshData`] invariants.
 pub fn parse(format: MeshFormat, bytes: &[u8]) -> Result<MeshData, MeshFileError> {
     let data = match format {
         MeshFormat::Obj => obj::parse(bytes)?,
-        MeshFormat::Ply => parse_ply(bytes)?,
+        MeshFormat::Ply => ply::parse(bytes, bytes.len() as u64)?,
     };
     data.check()?;
     Ok(data)
 }
 
-fn read_bounded(path: &Path) -> Result<Vec<u8>, MeshFileError> {
-    use std::io::Read;
+/// The regular file at `path`, if it is one of at most
+/// [`MAX_MESH_FILE_BYTES`].
+fn open_bounded(path: &Path) -> Result<std::fs::File, MeshFileError> {
     // Opening a FIFO for reading blocks until a writer comes; look first.
     let meta = std::fs::metadata(path).map_err(MeshFileError::Io)?;
     if !meta.is_file() {
@@ -89,6 +103,12 @@ fn read_bounded(path: &Path) -> Result<Vec<u8>, MeshFileError> {
     if !meta.is_file() {
         return Err(MeshFileError::NotAFile);
     }
+    Ok(file)
+}
+
+/// The whole of an opened file, stopping past the limit.
+fn read_bounded(file: std::fs::File) -> Result<Vec<u8>, MeshFileError> {
+    use std::io::Read;
     let mut bytes = Vec::new();
     file.take(MAX_MESH_FILE_BYTES + 1)
         .read_to_end(&mut bytes)
@@ -101,122 +121,10 @@ fn read_bounded(path: &Path) -> Result<Vec<u8>, MeshFileError> {
     Ok(bytes)
 }
 
-fn parse_ply(bytes: &[u8]) -> Result<MeshData, MeshFileError> {
-    use ply_rs_bw::parser::Parser;
-    use ply_rs_bw::ply::{DefaultElement, Property};
-
-    // The parser's messages quote the offending line; only its position
-    // and the kind of problem are passed on.
-    let ply = Parser::<DefaultElement>::new()
-        .read_ply(&mut std::io::Cursor::new(bytes))
-        .map_err(|e| {
-            let problem = match e.kind() {
-                std::io::ErrorKind::UnexpectedEof => "not a valid PLY file: it ends early",
-                _ => "not a valid PLY file: malformed header or data",
-            };
-            match e.line() {
-                Some(line) => MeshFileError::invalid_at(line, problem),
-                None => MeshFileError::Invalid(problem.to_string()),
-            }
-        })?;
-    let scalar = |p: &Property| -> Option<f64> {
-        Some(match *p {
-            Property::Char(x) => f64::from(x),
-            Property::UChar(x) => f64::from(x),
-            Property::Short(x) => f64::from(x),
-            Property::UShort(x) => f64::from(x),
-            Property::Int(x) => f64::from(x),
-            Property::UInt(x) => f64::from(x),
-            Property::Float(x) => f64::from(x),
-            Property::Double(x) => x,
-            _ => return None,
-        })
-    };
-    let list = |p: &Property| -> Option<Vec<u32>> {
-        let ints: Vec<i64> = match p {
-            Property::ListChar(v) => v.iter().map(|&x| i64::from(x)).collect(),
-            Property::ListUChar(v) => v.iter().map(|&x| i64::from(x)).collect(),
-            Property::ListShort(v) => v.iter().map(|&x| i64::from(x)).collect(),
-            Property::ListUShort(v) => v.iter().map(|&x| i64::from(x)).collect(),
-            Property::ListInt(v) => v.iter().map(|&x| i64::from(x)).collect(),
-            Property::ListUInt(v) => v.iter().map(|&x| i64::from(x)).collect(),
-            _ => return None,
-        };
-        // A negative index becomes u32::MAX, which the range check rejects.
-        Some(
-            ints.into_iter()
-                .map(|i| u32::try_from(i).unwrap_or(u32::MAX))
-                .collect(),
-        )
-    };
-    let vertices = ply
-        .payload
-        .get("vertex")
-        .ok_or_else(|| MeshFileError::Invalid("the PLY file has no `vertex` element".into()))?;
-    let mut positions = Vec::with_capacity(vertices.len());
-    let mut normals = Vec::new();
-    for (i, v) in vertices.iter().enumerate() {
-        let coord = |name: &str| v.get(name).and_then(scalar);
-        match (coord("x"), coord("y"), coord("z")) {
-            (Some(x), Some(y), Some(z)) => positions.push(DVec3::new(x, y, z)),
-            _ => {
-                return Err(MeshFileError::Invalid(format!(
-                    "PLY vertex {} lacks a numeric x, y or z",
-                    i + 1
-                )));
-            }
-        }
-        if let (Some(x), Some(y), Some(z)) = (coord("nx"), coord("ny"), coord("nz")) {
-            let n = DVec3::new(x, y, z);
-            if !n.is_finite() {
-                return Err(MeshFileError::Invalid(format!(
-                    "PLY vertex {} has a normal that is not a finite number",
-                    i + 1
-                )));
-            }
-            normals.push(n);
-        }
-    }
-    // A PLY element's properties are the same for every vertex: either all
-    // have a normal or none has.
-    let has_normals = !positions.is_empty() && normals.len() == positions.len();
-    if !has_normals {
-        normals.clear();
-    }
-    let faces = ply
-        .payload
-        .get("face")
-        .ok_or_else(|| MeshFileError::Invalid("the PLY file has no `face` element".into()))?;
-    let mut triangles = Vec::with_capacity(faces.len());
-    for (i, f) in faces.iter().enumerate() {
-        let face = f
-            .get("vertex_indices")
-            .or_else(|| f.get("vertex_index"))
-            .and_then(list)
-            .ok_or_else(|| {
-                MeshFileError::Invalid(format!(
-                    "PLY face {} has no `vertex_indices` list of integers",
-                    i + 1
-                ))
-            })?;
-        fan(&face, &mut triangles);
-    }
-    let corner_normals = if has_normals {
-        triangles.clone()
-    } else {
-        Vec::new()
-    };
-    Ok(MeshData {
-        positions,
-        triangles,
-        normals,
-        corner_normals,
-    })
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use hgeom::glam::DVec3;
 
     fn write(dir: &Path, name: &str, text: &str) -> std::path::PathBuf {
         let path = dir.join(name);

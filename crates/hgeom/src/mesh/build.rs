@@ -8,7 +8,7 @@ use glam::DVec4;
 
 use super::bvh::build_bvh;
 use super::placement::settled;
-use super::{Shared, Tri, TriangleMesh};
+use super::{Shared, TriangleMesh};
 use crate::error::GeomError;
 use crate::isometry::Isometry;
 use crate::lorentz;
@@ -45,7 +45,10 @@ impl TriangleMesh {
     /// to meshes up to 5 away (`mesh_hits_agree_with_convex_polygons` in
     /// `tests/mesh.rs`). Building is O(n log n) in the triangle count
     /// (0.45 ms for 2016 triangles, `benches/kernels.rs`).
-    pub fn new(vertices: Vec<Point>, triangles: Vec<[u32; 3]>) -> Result<TriangleMesh, GeomError> {
+    pub fn new(
+        vertices: Vec<Point>,
+        mut triangles: Vec<[u32; 3]>,
+    ) -> Result<TriangleMesh, GeomError> {
         if vertices.is_empty() || triangles.is_empty() {
             return Err(GeomError::EmptyMesh { dropped: 0 });
         }
@@ -71,7 +74,6 @@ impl TriangleMesh {
         }
         let base = local_frame(&vertices);
         let back = base.inverse();
-        let mut points = Vec::with_capacity(n);
         let mut local = Vec::with_capacity(n);
         let mut distance = Vec::with_capacity(n);
         for p in &vertices {
@@ -81,43 +83,34 @@ impl TriangleMesh {
                     norm: p.coords().length(),
                 });
             }
-            points.push(q);
             local.push(q.to_hyperboloid());
             distance.push(q.distance_from_origin());
         }
-        let mut kept = Vec::with_capacity(triangles.len());
-        let mut tris = Vec::with_capacity(triangles.len());
-        let mut dropped = 0;
-        for t in triangles {
-            let v = t.map(|k| local[k as usize]);
-            match local_plane(t, v) {
-                Some(plane) => {
-                    kept.push(t);
-                    tris.push(Tri { v, plane });
-                }
-                None => dropped += 1,
-            }
-        }
-        if kept.is_empty() {
+        // The kept triangles stay in the given list, compacted in place.
+        let given = triangles.len();
+        triangles.retain(|&t| local_plane(t, t.map(|k| local[k as usize])).is_some());
+        let dropped = given - triangles.len();
+        if triangles.is_empty() {
             return Err(GeomError::EmptyMesh { dropped });
         }
         let (mut radius, mut scale) = (0.0f64, 0.0f64);
-        for t in &kept {
+        for t in &triangles {
             for &k in t {
                 radius = radius.max(distance[k as usize]);
                 scale = scale.max(local[k as usize].abs().element_sum());
             }
         }
-        let (nodes, order) = build_bvh(&tris);
-        let tris = order.iter().map(|&i| tris[i as usize]).collect();
+        drop(distance);
+        let (nodes, order) = build_bvh(&local, &triangles);
+        let tris = order.iter().map(|&i| triangles[i as usize]).collect();
+        drop(triangles);
         let shared = Shared {
             input: vertices,
-            local: points,
-            triangles: kept,
-            dropped,
-            base,
+            local,
             tris,
             order,
+            dropped,
+            base,
             nodes,
             radius,
             scale,
@@ -157,14 +150,30 @@ fn local_plane(t: [u32; 3], [a, b, c]: [DVec4; 3]) -> Option<HPlane> {
     if t[0] == t[1] || t[1] == t[2] || t[2] == t[0] {
         return None;
     }
-    // As `HPlane::through`: differences are better conditioned than the raw
-    // vectors, and the right-hand rule orients the normal.
-    let n = lorentz::orthogonal_complement(a, b - a, c - a);
+    let n = plane_vector(a, b, c);
     let scale = (b - a).length() * (c - a).length() * a.length();
     if !(lorentz::norm(n) > DEGENERATE_TOLERANCE * scale) {
         return None;
     }
     HPlane::from_normal(n).ok()
+}
+
+/// The plane of a kept triangle, from its local vertices: the very
+/// computation [`local_plane`] made when the triangle was kept, so the same
+/// plane bit for bit (a deterministic function of the same floats), which
+/// no triangle needs to store. `None` cannot happen for a kept triangle (its
+/// normal was finite and nonzero then, and is the same now).
+#[inline]
+pub(super) fn kept_plane([a, b, c]: [DVec4; 3]) -> Option<HPlane> {
+    HPlane::from_normal(plane_vector(a, b, c)).ok()
+}
+
+/// The unnormalised Lorentz normal of the triangle `abc` (right-hand rule).
+#[inline]
+fn plane_vector(a: DVec4, b: DVec4, c: DVec4) -> DVec4 {
+    // As `HPlane::through`: differences are better conditioned than the raw
+    // vectors, and the right-hand rule orients the normal.
+    lorentz::orthogonal_complement(a, b - a, c - a)
 }
 
 #[cfg(test)]

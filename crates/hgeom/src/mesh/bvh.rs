@@ -3,15 +3,18 @@
 //! Klein segment, padded so that no box test culls a triangle the exact
 //! test would accept.
 
-use glam::DVec3;
+use glam::{DVec3, DVec4};
 
-use super::Tri;
 use crate::ray::Ray;
 
 /// Bins of the SAH split search.
 const BINS: usize = 16;
 /// The SAH may keep up to this many triangles in a leaf.
 const MAX_LEAF: usize = 8;
+/// Sets of up to this many triangles are always leaves: splitting them
+/// saves little work per ray (a triangle's exact test costs about two box
+/// tests) and would add a node (32 bytes) for every two triangles or so.
+const MIN_LEAF: usize = 4;
 /// Below this depth splits are chosen by the SAH; deeper, by the median
 /// (which halves the count, so the depth stays bounded however the SAH
 /// splits went: 2^30 triangles need 30 more levels at most).
@@ -19,15 +22,37 @@ const SAH_DEPTH: usize = 32;
 /// No node is deeper than this (a leaf is forced there).
 pub(super) const MAX_DEPTH: usize = 62;
 
-/// A BVH node: a Klein box, and either a leaf's triangle range
-/// (`count > 0`, `tris[first .. first + count]`) or, for an interior node
-/// (`count == 0`), the index of its second child (the first is next).
+/// A BVH node (32 bytes): a Klein box, its corners rounded outwards to
+/// `f32` (so it contains the `f64` box, and the padded tests stay
+/// conservative), and either a leaf's triangle range (`count > 0`,
+/// `tris[first .. first + count]`) or, for an interior node (`count == 0`),
+/// the index of its second child (the first is next).
 #[derive(Clone, Copy)]
 pub(super) struct Node {
-    lo: DVec3,
-    hi: DVec3,
+    lo: [f32; 3],
+    hi: [f32; 3],
     pub(super) first: u32,
     pub(super) count: u32,
+}
+
+/// A box rounded outwards to `f32`: every `f32` is exactly an `f64`, so the
+/// stored box contains the given one.
+fn outward(lo: DVec3, hi: DVec3) -> ([f32; 3], [f32; 3]) {
+    let down = |x: f64| {
+        let f = x as f32;
+        if f64::from(f) > x { f.next_down() } else { f }
+    };
+    let up = |x: f64| {
+        let f = x as f32;
+        if f64::from(f) < x { f.next_up() } else { f }
+    };
+    (lo.to_array().map(down), hi.to_array().map(up))
+}
+
+/// An `f32` corner back in `f64` (exactly).
+#[inline]
+fn wide(c: [f32; 3]) -> DVec3 {
+    DVec3::new(f64::from(c[0]), f64::from(c[1]), f64::from(c[2]))
 }
 
 /// A ray's straight segment through the Klein model of the local frame,
@@ -123,8 +148,8 @@ impl KleinSegment {
         if self.all {
             return Some(s_lo);
         }
-        let lo = (node.lo - self.pad - self.p1) * self.inv;
-        let hi = (node.hi + self.pad - self.p1) * self.inv;
+        let lo = (wide(node.lo) - self.pad - self.p1) * self.inv;
+        let hi = (wide(node.hi) + self.pad - self.p1) * self.inv;
         let mut near = s_lo;
         let mut far = s_hi;
         for (a, b) in [(lo.x, hi.x), (lo.y, hi.y), (lo.z, hi.z)] {
@@ -141,46 +166,65 @@ fn half_area(lo: DVec3, hi: DVec3) -> f64 {
     e.x * e.y + e.y * e.z + e.z * e.x
 }
 
-/// The Klein boxes and their centres, and the BVH over them: the nodes and
-/// the leaf order of the triangles.
-pub(super) fn build_bvh(tris: &[Tri]) -> (Vec<Node>, Vec<u32>) {
-    let boxes: Vec<(DVec3, DVec3)> = tris
+/// The BVH over `triangles` (indices into the local hyperboloid vertices
+/// `local`): the nodes and the leaf order of the triangles.
+///
+/// Each triangle's Klein box is kept in `f32` rounded outwards (24 bytes a
+/// triangle while building); its centre is taken from that box. Both only
+/// steer the build: any box that contains the triangle gives the same hits.
+pub(super) fn build_bvh(local: &[DVec4], triangles: &[[u32; 3]]) -> (Vec<Node>, Vec<u32>) {
+    let boxes: Vec<([f32; 3], [f32; 3])> = triangles
         .iter()
         .map(|t| {
-            let k = t.v.map(|v| v.truncate() / v.w);
-            (k[0].min(k[1]).min(k[2]), k[0].max(k[1]).max(k[2]))
+            let k = t.map(|i| {
+                let v = local[i as usize];
+                v.truncate() / v.w
+            });
+            outward(k[0].min(k[1]).min(k[2]), k[0].max(k[1]).max(k[2]))
         })
         .collect();
-    let centres: Vec<DVec3> = boxes.iter().map(|(lo, hi)| 0.5 * (*lo + *hi)).collect();
-    let mut order: Vec<u32> = (0..tris.len() as u32).collect();
-    let mut nodes = Vec::with_capacity(2 * tris.len());
-    let builder = Builder {
-        boxes: &boxes,
-        centres: &centres,
-    };
+    let mut order: Vec<u32> = (0..triangles.len() as u32).collect();
+    let mut nodes = Vec::new();
+    let builder = Builder { boxes: &boxes };
     builder.node(&mut nodes, &mut order, 0, 0);
+    nodes.shrink_to_fit();
     (nodes, order)
 }
 
 struct Builder<'a> {
-    boxes: &'a [(DVec3, DVec3)],
-    centres: &'a [DVec3],
+    boxes: &'a [([f32; 3], [f32; 3])],
 }
 
 impl Builder<'_> {
+    /// The box of item `i`, in `f64`.
+    #[inline]
+    fn bounds(&self, i: u32) -> (DVec3, DVec3) {
+        let (lo, hi) = self.boxes[i as usize];
+        (wide(lo), wide(hi))
+    }
+
+    /// The centre of item `i`'s box.
+    #[inline]
+    fn centre(&self, i: u32) -> DVec3 {
+        let (lo, hi) = self.bounds(i);
+        0.5 * (lo + hi)
+    }
+
     /// Build the subtree over `items` (which start at leaf position
     /// `first`), reordering them; returns its root's index.
     fn node(&self, nodes: &mut Vec<Node>, items: &mut [u32], first: usize, depth: usize) -> u32 {
         let (mut lo, mut hi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
         for &i in items.iter() {
-            let (l, h) = self.boxes[i as usize];
+            let (l, h) = self.bounds(i);
             lo = lo.min(l);
             hi = hi.max(h);
         }
         let me = nodes.len();
+        // The union of `f32` boxes is exactly representable.
+        let (flo, fhi) = outward(lo, hi);
         nodes.push(Node {
-            lo,
-            hi,
+            lo: flo,
+            hi: fhi,
             first: first as u32,
             count: items.len() as u32,
         });
@@ -202,12 +246,12 @@ impl Builder<'_> {
     /// Where to split `items` (after reordering them), or `None` for a leaf.
     fn split(&self, items: &mut [u32], depth: usize, area: f64) -> Option<usize> {
         let n = items.len();
-        if n <= 2 {
+        if n <= MIN_LEAF {
             return None;
         }
         let (mut clo, mut chi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
         for &i in items.iter() {
-            let c = self.centres[i as usize];
+            let c = self.centre(i);
             clo = clo.min(c);
             chi = chi.max(c);
         }
@@ -229,14 +273,12 @@ impl Builder<'_> {
         }
         // Binned SAH along the widest axis of the centres.
         let scale = BINS as f64 / extent[axis];
-        let bin = |i: u32| {
-            (((self.centres[i as usize][axis] - clo[axis]) * scale) as usize).min(BINS - 1)
-        };
+        let bin = |i: u32| (((self.centre(i)[axis] - clo[axis]) * scale) as usize).min(BINS - 1);
         let mut counts = [0usize; BINS];
         let mut bounds = [(DVec3::INFINITY, DVec3::NEG_INFINITY); BINS];
         for &i in items.iter() {
             let b = bin(i);
-            let (l, h) = self.boxes[i as usize];
+            let (l, h) = self.bounds(i);
             counts[b] += 1;
             bounds[b] = (bounds[b].0.min(l), bounds[b].1.max(h));
         }
@@ -289,7 +331,7 @@ impl Builder<'_> {
     fn median(&self, items: &mut [u32], axis: usize) -> usize {
         let mid = items.len() / 2;
         items.select_nth_unstable_by(mid, |a, b| {
-            self.centres[*a as usize][axis].total_cmp(&self.centres[*b as usize][axis])
+            self.centre(*a)[axis].total_cmp(&self.centre(*b)[axis])
         });
         mid
     }

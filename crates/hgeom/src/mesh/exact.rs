@@ -5,7 +5,6 @@
 
 use glam::DVec4;
 
-use super::Tri;
 use crate::accurate::two_prod;
 use crate::lorentz;
 use crate::ray::Ray;
@@ -62,8 +61,8 @@ impl Projection {
     /// plane lies in the projected triangle (closed), i.e. the three cross
     /// products agree in sign (zeros agree with both).
     #[inline]
-    pub(super) fn crosses(&self, tri: &Tri) -> bool {
-        let [a, b, c] = tri.v.map(|p| self.project(p));
+    pub(super) fn crosses(&self, corners: [DVec4; 3]) -> bool {
+        let [a, b, c] = corners.map(|p| self.project(p));
         let u = cross(a, b);
         let v = cross(b, c);
         let w = cross(c, a);

@@ -5,6 +5,7 @@
 use glam::DVec4;
 
 use super::TriangleMesh;
+use super::build::kept_plane;
 use super::bvh::{KleinSegment, MAX_DEPTH};
 use super::exact::Projection;
 use crate::plane::HPlane;
@@ -93,6 +94,7 @@ impl TriangleMesh {
                             t,
                             normal,
                             triangle,
+                            pos,
                         });
                         best_t = t;
                         s_hi = s_hi.min(segment.prune(t));
@@ -192,6 +194,7 @@ impl TriangleMesh {
                     t,
                     normal,
                     triangle,
+                    pos,
                 });
             }
         }
@@ -218,18 +221,22 @@ impl TriangleMesh {
         ray: &Ray,
         local: &Ray,
     ) -> Option<(f64, DVec4)> {
-        let tri = &self.shared.tris[pos];
-        if !exact.crosses(tri) {
+        let corners = self.shared.corners(pos);
+        if !exact.crosses(corners) {
             return None;
         }
+        // The plane the build computed for this triangle, recomputed from
+        // the same vertices (see `kept_plane`): only for the few triangles
+        // the geodesic meets, so no triangle stores one.
+        let plane = kept_plane(corners)?;
         // The world plane: its normal carried out by the Lorentz matrix and
         // renormalised, as `ConvexPolygon` does. Far out (beyond ~18) the
         // renormalisation cancels; the crossing is then solved in the local
         // frame, where it is as good as the local ray.
-        let normal = self.to_world * tri.plane.normal();
+        let normal = self.to_world * plane.normal();
         match HPlane::from_normal(normal) {
-            Ok(plane) => plane.crossing(ray).map(|t| (t, plane.normal())),
-            Err(_) => tri.plane.crossing(local).map(|t| (t, normal)),
+            Ok(world) => world.crossing(ray).map(|t| (t, world.normal())),
+            Err(_) => plane.crossing(local).map(|t| (t, normal)),
         }
     }
 
@@ -237,7 +244,7 @@ impl TriangleMesh {
     fn hit(&self, ray: &Ray, c: Candidate) -> Hit {
         let point = ray.at(c.t);
         let shading = match &self.smooth {
-            Some(smooth) => self.shading_normal(smooth, c.triangle, point, c.normal),
+            Some(smooth) => self.shading_normal(smooth, (c.triangle, c.pos), point, c.normal),
             None => c.normal,
         };
         Hit {
@@ -256,6 +263,8 @@ struct Candidate {
     t: f64,
     normal: DVec4,
     triangle: usize,
+    /// Its leaf position.
+    pos: usize,
 }
 
 #[cfg(test)]

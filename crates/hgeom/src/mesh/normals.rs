@@ -26,6 +26,7 @@ use std::collections::HashMap;
 use glam::{DVec3, DVec4};
 
 use super::TriangleMesh;
+use super::build::kept_plane;
 use crate::error::GeomError;
 use crate::lorentz;
 
@@ -123,23 +124,23 @@ impl TriangleMesh {
             return Err(GeomError::BadCreaseAngle(crease_degrees));
         }
         let sh = &*self.shared;
-        let kept = sh.triangles.len();
-        // Plane normals and vertices per kept triangle (the BVH keeps them
-        // in leaf order).
+        let triangles = sh.given_order();
+        let kept = triangles.len();
+        // Plane normals per kept triangle, as the intersection computes them.
         let mut planes = vec![DVec4::ZERO; kept];
-        let mut verts = vec![[DVec4::ZERO; 3]; kept];
-        for (pos, tri) in sh.tris.iter().enumerate() {
-            let k = sh.order[pos] as usize;
-            planes[k] = tri.plane.normal();
-            verts[k] = tri.v;
+        for (pos, &k) in sh.order.iter().enumerate() {
+            if let Some(plane) = kept_plane(sh.corners(pos)) {
+                planes[k as usize] = plane.normal();
+            }
         }
+        let verts = |k: usize| triangles[k].map(|i| sh.local[i as usize]);
         let given_local = match given {
-            Some(g) => Some(self.kept_given(g)?),
+            Some(g) => Some(self.kept_given(g, &triangles)?),
             None => None,
         };
         // The corners at each vertex.
         let mut at_vertex: HashMap<u32, Vec<(usize, usize)>> = HashMap::new();
-        for (k, t) in sh.triangles.iter().enumerate() {
+        for (k, t) in triangles.iter().enumerate() {
             for (c, &v) in t.iter().enumerate() {
                 at_vertex.entry(v).or_default().push((k, c));
             }
@@ -148,9 +149,9 @@ impl TriangleMesh {
         let mut normals: Vec<[f32; 3]> = Vec::new();
         let mut index: HashMap<(u32, [u32; 3]), u32> = HashMap::new();
         let mut corners = vec![[FLAT; 3]; kept];
-        for (k, t) in sh.triangles.iter().enumerate() {
+        for (k, t) in triangles.iter().enumerate() {
             for c in 0..3 {
-                let a = verts[k][c];
+                let a = verts(k)[c];
                 let tangent = match given_local.as_ref().and_then(|g| g[k][c]) {
                     Some(n) => Some(n),
                     None => computed(&at_vertex[&t[c]], &planes, &verts, k, cos_crease),
@@ -184,7 +185,11 @@ impl TriangleMesh {
 
     /// The given normals of the kept triangles, carried into the local frame
     /// and made unit tangents at their vertices (`None`: compute).
-    fn kept_given(&self, g: &GivenNormals) -> Result<Vec<[Option<DVec4>; 3]>, GeomError> {
+    fn kept_given(
+        &self,
+        g: &GivenNormals,
+        triangles: &[[u32; 3]],
+    ) -> Result<Vec<[Option<DVec4>; 3]>, GeomError> {
         let sh = &*self.shared;
         let to_local = sh.base.inverse().to_lorentz();
         if g.corners.len() != g.triangles.len() {
@@ -196,13 +201,13 @@ impl TriangleMesh {
         }
         // The kept triangles are the given ones in order, less the dropped
         // (degenerate) ones; a dropped triangle never equals a kept one.
-        let mut aligned = Vec::with_capacity(sh.triangles.len());
+        let mut aligned = Vec::with_capacity(triangles.len());
         for (t, c) in g.triangles.iter().zip(&g.corners) {
-            if sh.triangles.get(aligned.len()) == Some(t) {
+            if triangles.get(aligned.len()) == Some(t) {
                 aligned.push(*c);
             }
         }
-        if aligned.len() != sh.triangles.len() {
+        if aligned.len() != triangles.len() {
             return Err(GeomError::MeshIndexOutOfRange {
                 triangle: g.triangles.len(),
                 index: 0,
@@ -223,7 +228,7 @@ impl TriangleMesh {
                         vertices: g.normals.len(),
                     });
                 };
-                let a = sh.local[sh.triangles[k][j] as usize].to_hyperboloid();
+                let a = sh.local[triangles[k][j] as usize];
                 row[j] = unit_tangent(a, to_local * *n);
             }
             result.push(row);
@@ -231,12 +236,13 @@ impl TriangleMesh {
         Ok(result)
     }
 
-    /// The shading normal at world hit `point` on kept triangle `k`, whose
-    /// world plane normal is `normal` (see the module docs).
+    /// The shading normal at world hit `point` on kept triangle `k` (at
+    /// leaf position `pos`), whose world plane normal is `normal` (see the
+    /// module docs).
     pub(super) fn shading_normal(
         &self,
         smooth: &Smooth,
-        k: usize,
+        (k, pos): (usize, usize),
         point: DVec4,
         normal: DVec4,
     ) -> DVec4 {
@@ -244,9 +250,7 @@ impl TriangleMesh {
         if corners == [FLAT; 3] {
             return normal;
         }
-        let sh = &*self.shared;
-        let t = sh.triangles[k];
-        let v = t.map(|i| sh.local[i as usize].to_hyperboloid());
+        let v = self.shared.corners(pos);
         let x = self.to_local * point;
         let klein = |p: DVec4| p.truncate() / p.w;
         let (k0, k1, k2, kx) = (klein(v[0]), klein(v[1]), klein(v[2]), klein(x));
@@ -290,7 +294,7 @@ impl TriangleMesh {
 fn computed(
     around: &[(usize, usize)],
     planes: &[DVec4],
-    verts: &[[DVec4; 3]],
+    verts: &dyn Fn(usize) -> [DVec4; 3],
     k: usize,
     cos_crease: f64,
 ) -> Option<DVec4> {
@@ -303,7 +307,7 @@ fn computed(
             continue;
         }
         flat &= cos >= 1.0 - SAME_PLANE;
-        sum += planes[j] * corner_angle(verts[j], c);
+        sum += planes[j] * corner_angle(verts(j), c);
     }
     if flat { None } else { Some(sum) }
 }

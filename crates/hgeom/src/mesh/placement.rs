@@ -55,11 +55,11 @@ impl TriangleMesh {
         if self.moved == Isometry::IDENTITY {
             Cow::Borrowed(&self.shared.input)
         } else {
+            let sh = &*self.shared;
+            let back = sh.base.inverse();
             Cow::Owned(
-                self.shared
-                    .local
-                    .iter()
-                    .map(|p| self.placement.apply(p))
+                (0..sh.input.len())
+                    .map(|k| self.placement.apply(&sh.local_point(&back, k)))
                     .collect(),
             )
         }
@@ -68,23 +68,19 @@ impl TriangleMesh {
     /// The kept triangles as index triples into [`TriangleMesh::vertices`],
     /// in the order given, wound so that the normal side follows the
     /// right-hand rule (reversed, `[a, c, b]`, after an orientation-reversing
-    /// move; borrowed otherwise).
+    /// move). Computed (O(n)): the mesh keeps them in its BVH's order only.
     ///
     /// # Accuracy
     ///
     /// Exact.
     pub fn triangles(&self) -> Cow<'_, [[u32; 3]]> {
-        if self.moved.preserves_orientation() {
-            Cow::Borrowed(&self.shared.triangles)
-        } else {
-            Cow::Owned(
-                self.shared
-                    .triangles
-                    .iter()
-                    .map(|&[a, b, c]| [a, c, b])
-                    .collect(),
-            )
+        let mut triangles = self.shared.given_order();
+        if !self.moved.preserves_orientation() {
+            for t in &mut triangles {
+                t.swap(1, 2);
+            }
         }
+        Cow::Owned(triangles)
     }
 
     /// The isometry from the mesh's local frame (where it is centred on the

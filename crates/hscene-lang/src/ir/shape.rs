@@ -29,6 +29,15 @@ pub enum Surfaces {
     Parts(Vec<BoxedSurface>),
 }
 
+/// Mesh triangles per primitive of the scene-wide budget: a mesh of up to
+/// 2,000,000 triangles fits in it.
+pub const MESH_TRIANGLES_PER_PRIMITIVE: u64 = 4;
+
+/// What `triangles` mesh triangles cost of the budget.
+pub fn mesh_budget_cost(triangles: u64) -> u64 {
+    triangles.div_ceil(MESH_TRIANGLES_PER_PRIMITIVE)
+}
+
 /// The geometry of a scene object.
 // Rods carry their tube's Lorentz frame and two caps; boxing them would
 // save memory only in scenes of a few objects, and the IR is built once.
@@ -164,13 +173,23 @@ impl Shape {
     }
 
     /// The number of primitives the renderer traces for it: faces, rods or
-    /// triangles of a composite, 1 otherwise (the scene-wide budget counts
-    /// these).
+    /// triangles of a composite, 1 otherwise.
     pub fn primitive_count(&self) -> u64 {
+        match self {
+            Shape::Mesh(m) => m.triangle_count() as u64,
+            other => other.budget_cost(),
+        }
+    }
+
+    /// What it costs of the scene-wide primitive budget: its primitives,
+    /// except that [`MESH_TRIANGLES_PER_PRIMITIVE`] mesh triangles make one
+    /// (a mesh triangle takes about 100 bytes at the peak, a figure's rod
+    /// or face several hundred).
+    pub fn budget_cost(&self) -> u64 {
         let n = match self {
             Shape::Polyhedron(p) => p.faces().len(),
             Shape::Wireframe(rods) => rods.len(),
-            Shape::Mesh(m) => m.triangle_count(),
+            Shape::Mesh(m) => mesh_budget_cost(m.triangle_count() as u64) as usize,
             Shape::Sphere(_)
             | Shape::Polygon(_)
             | Shape::Plane(_)

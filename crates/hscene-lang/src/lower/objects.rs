@@ -139,7 +139,7 @@ impl Lowerer<'_> {
         let placed = self.place(built, material, opts, st);
         let cost = placed
             .iter()
-            .map(|&i| self.objects[i].0.shape.primitive_count())
+            .map(|&i| self.objects[i].0.shape.budget_cost())
             .sum();
         if !self.charge(cost, st.span) {
             return Vec::new();

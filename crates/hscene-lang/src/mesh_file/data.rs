@@ -126,17 +126,19 @@ impl MeshData {
     /// `None` if the mesh has no extent.
     pub fn layout(&self, size: f64) -> Option<Vec<Point>> {
         let (centre, radius) = self.bounding_ball()?;
-        self.positions
-            .iter()
-            .map(|p| {
-                let u = (*p - centre) / radius;
-                let len = u.length();
-                if len == 0.0 {
-                    return Some(Point::ORIGIN);
-                }
-                Point::at_distance_from_origin(u, size * len).ok()
-            })
-            .collect()
+        // Sized up front: collecting `Option`s would grow the vector by
+        // doubling, up to twice the memory of the points.
+        let mut points = Vec::with_capacity(self.positions.len());
+        for p in &self.positions {
+            let u = (*p - centre) / radius;
+            let len = u.length();
+            points.push(if len == 0.0 {
+                Point::ORIGIN
+            } else {
+                Point::at_distance_from_origin(u, size * len).ok()?
+            });
+        }
+        Some(points)
     }
 }
 

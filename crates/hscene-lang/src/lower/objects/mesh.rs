@@ -92,12 +92,16 @@ impl Lowerer<'_> {
             return None;
         };
         let total = data.triangles.len();
-        if !self.fits(total as u64, file_span) {
+        if !self.fits(crate::ir::mesh_budget_cost(total as u64), file_span) {
             return None;
         }
-        // The file's normals are laid out only when smoothing asks for them.
+        // The file's normals are laid out only when smoothing asks for them;
+        // then the file's data goes before the mesh is built, so the two
+        // are not held at once (the triangles move into the mesh).
         let given = smooth.and_then(|_| data.layout_normals(size));
-        let built = TriangleMesh::new(vertices, data.triangles).and_then(|mesh| match smooth {
+        let triangles = data.triangles;
+        drop((data.positions, data.normals, data.corner_normals));
+        let built = TriangleMesh::new(vertices, triangles).and_then(|mesh| match smooth {
             Some(angle) => mesh.smoothed(angle, given.as_ref()),
             None => Ok(mesh),
         });
