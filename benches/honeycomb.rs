@@ -337,7 +337,7 @@ fn run(resolution: u32, threads: Option<usize>) -> Result<Report, String> {
     if let Some(t) = threads {
         cmd.args(["--threads", &t.to_string()]);
     }
-    let hscene = common::measure(&mut cmd, &dir.path().join("hscene.log"))?;
+    let hscene = common::measure(&cmd, &dir.path().join("hscene.log"))?;
     let povray = if povray_installed() {
         Some(common::povray(
             &pov_source(&sixteen_spheres(), resolution),
@@ -357,6 +357,7 @@ fn run(resolution: u32, threads: Option<usize>) -> Result<Report, String> {
 }
 
 fn main() -> ExitCode {
+    common::measure_child_if_asked();
     let args: Vec<String> = std::env::args().skip(1).collect();
     let json = args.iter().any(|a| a == "--json");
     let resolution: u32 = common::arg_value(&args, "--resolution")
