@@ -359,6 +359,31 @@ fn view_window(
     })
 }
 
+/// The smallest angle at the eye between the primary rays of two
+/// neighbouring pixels, over the middle and the corners of the picture
+/// (nets other than 0 spread their pixels unevenly); `None` if no two
+/// neighbours both see the scene.
+fn pixel_angle(net: &PixelNet, width: u32, height: u32) -> Option<f64> {
+    let (dx, dy) = (1.0 / f64::from(width), 1.0 / f64::from(height));
+    let spots = [
+        (0.0, 0.0),
+        (-0.5 + dx, -0.5 + dy),
+        (0.5 - 2.0 * dx, 0.5 - 2.0 * dy),
+    ];
+    spots
+        .iter()
+        .flat_map(|&(x, y)| {
+            let here = net.sample(x, y);
+            [(x + dx, y), (x, y + dy)].map(move |(u, v)| match (here, net.sample(u, v)) {
+                (Sample::Ray(a), Sample::Ray(b)) => Some(a.angle_between(b)),
+                _ => None,
+            })
+        })
+        .flatten()
+        .filter(|a| *a > 0.0 && a.is_finite())
+        .min_by(f64::total_cmp)
+}
+
 /// Net-3 nodes already traced for the current row, by lattice index.
 #[derive(Default)]
 struct NodeCache(HashMap<(i64, i64), (Color, bool)>);
@@ -370,10 +395,15 @@ fn render_in_pool(
     progress: &(dyn Fn(u32) + Sync),
 ) -> Result<Rendered, RenderError> {
     let camera = CanonicalCamera::new(&scene.camera)?;
-    let prepared = PreparedScene::for_camera(scene, &camera)?;
     let net = options.net.unwrap_or(scene.settings.net);
     let resolution = options.resolution.unwrap_or(scene.settings.resolution);
     let (width, height) = (resolution.width(), resolution.height());
+    let window = view_window(scene, net, resolution, camera.view_distance)?;
+    let pixel_net = PixelNet::new(net, window, camera.view_distance);
+    let prepared = match pixel_angle(&pixel_net, width, height) {
+        Some(angle) => PreparedScene::for_picture(scene, &camera, angle)?,
+        None => PreparedScene::for_camera(scene, &camera)?,
+    };
     let region = region.unwrap_or(Region {
         x: 0,
         y: 0,
@@ -389,10 +419,9 @@ fn render_in_pool(
             region.width, region.height, region.x, region.y
         )));
     }
-    let window = view_window(scene, net, resolution, camera.view_distance)?;
     let job = RenderJob {
         net,
-        pixel_net: PixelNet::new(net, window, camera.view_distance),
+        pixel_net,
         window,
         width,
         height,

@@ -61,11 +61,19 @@ impl PreparedObject {
         }
     }
 
-    /// The shape moved by each of `stages` in turn, as surfaces.
-    fn surfaces_of(shape: &ir::Shape, stages: &[Isometry]) -> Vec<BoxedSurface> {
+    /// The shape moved by each of `stages` in turn, as surfaces; drawn for
+    /// pixels of `pixel_angle` radians if given.
+    fn surfaces_of(
+        shape: &ir::Shape,
+        stages: &[Isometry],
+        pixel_angle: Option<f64>,
+    ) -> Vec<BoxedSurface> {
         let mut moved = shape.transformed(&stages[0]);
         for iso in &stages[1..] {
             moved = moved.transformed(iso);
+        }
+        if let Some(angle) = pixel_angle {
+            moved = moved.for_pixel_angle(angle);
         }
         match moved.into_surfaces() {
             Surfaces::Single(s) => vec![s],
@@ -153,7 +161,7 @@ impl PreparedScene {
     /// that f64 cannot represent it in the canonical frame: that is reported,
     /// not silently dropped.
     pub fn new(scene: &Scene, to_canonical: &Isometry) -> Result<PreparedScene, RenderError> {
-        PreparedScene::staged(scene, std::slice::from_ref(to_canonical))
+        PreparedScene::staged(scene, std::slice::from_ref(to_canonical), None)
     }
 
     /// [`PreparedScene::new`] for a camera: everything is moved by the
@@ -163,11 +171,26 @@ impl PreparedScene {
         scene: &Scene,
         camera: &CanonicalCamera,
     ) -> Result<PreparedScene, RenderError> {
-        PreparedScene::staged(scene, &camera.stages)
+        PreparedScene::staged(scene, &camera.stages, None)
+    }
+
+    /// [`PreparedScene::for_camera`] for a picture whose pixels subtend
+    /// `pixel_angle` radians at the eye: detail that no pixel can resolve
+    /// is not traced ([`ir::Shape::for_pixel_angle`]).
+    pub fn for_picture(
+        scene: &Scene,
+        camera: &CanonicalCamera,
+        pixel_angle: f64,
+    ) -> Result<PreparedScene, RenderError> {
+        PreparedScene::staged(scene, &camera.stages, Some(pixel_angle))
     }
 
     /// Move everything by each of `stages` in turn (at least one).
-    fn staged(scene: &Scene, stages: &[Isometry]) -> Result<PreparedScene, RenderError> {
+    fn staged(
+        scene: &Scene,
+        stages: &[Isometry],
+        pixel_angle: Option<f64>,
+    ) -> Result<PreparedScene, RenderError> {
         // Objects are moved on every thread; the first failing one, in
         // scene order, is the one reported.
         let prepared: Vec<Result<PreparedObject, RenderError>> = scene
@@ -196,7 +219,7 @@ impl PreparedScene {
                         scene.materials.len()
                     )));
                 }
-                let surfaces = PreparedObject::surfaces_of(&o.shape, stages);
+                let surfaces = PreparedObject::surfaces_of(&o.shape, stages, pixel_angle);
                 if !surfaces.iter().all(|s| s.is_traceable()) {
                     return Err(RenderError::OutOfRange {
                         what: format!("object {}", index + 1),
@@ -432,7 +455,7 @@ mod tests {
         let bare = HPlane::from_normal(placed.normal()).unwrap();
         let back = far.inverse();
         let traceable = |plane: &HPlane| {
-            PreparedObject::surfaces_of(&ir::Shape::Plane(*plane), &[back])
+            PreparedObject::surfaces_of(&ir::Shape::Plane(*plane), &[back], None)
                 .iter()
                 .all(|s| s.is_traceable())
         };
@@ -472,7 +495,7 @@ mod tests {
             ir::Shape::Sphere(hgeom::HSphere::new(p(0.1, 0.0, 0.6), 0.3).unwrap()),
         ];
         for shape in &shapes {
-            let surfaces = PreparedObject::surfaces_of(shape, &[Isometry::IDENTITY]);
+            let surfaces = PreparedObject::surfaces_of(shape, &[Isometry::IDENTITY], None);
             let mut hits = 0;
             for i in 0..2000 {
                 let a = f64::from(i) * 0.618_033_988_749_895;

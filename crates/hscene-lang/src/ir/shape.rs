@@ -181,6 +181,26 @@ impl Shape {
         }
     }
 
+    /// The shape as drawn in a picture whose pixels subtend `pixel_angle`
+    /// radians at the eye, the origin of the frame it is in: a honeycomb is
+    /// walked no farther than where its cells shrink below a pixel
+    /// (`RegularHoneycomb::horizon_for_pixel`; beyond, the background
+    /// shows, docs/honeycombs.md); every other shape is unchanged.
+    pub fn for_pixel_angle(self, pixel_angle: f64) -> Shape {
+        match self {
+            Shape::Honeycomb(mut h) => {
+                let horizon = h.surface.horizon_for_pixel(pixel_angle);
+                if horizon < h.surface.horizon()
+                    && let Ok(nearer) = h.surface.clone().with_horizon(horizon)
+                {
+                    h.surface = nearer;
+                }
+                Shape::Honeycomb(h)
+            }
+            other => other,
+        }
+    }
+
     /// What it costs of the scene-wide primitive budget: its primitives,
     /// except that [`MESH_TRIANGLES_PER_PRIMITIVE`] mesh triangles make one
     /// (a mesh triangle takes about 100 bytes at the peak, a figure's rod
