@@ -173,6 +173,21 @@ impl KleinBox {
     }
 }
 
+/// The box from `lo` to `hi` rounded outwards to `f32`, for compact
+/// hierarchy nodes: every `f32` is exactly an `f64`, so the stored box
+/// contains the given one.
+pub fn round_outward_f32(lo: DVec3, hi: DVec3) -> ([f32; 3], [f32; 3]) {
+    let down = |x: f64| {
+        let f = x as f32;
+        if f64::from(f) > x { f.next_down() } else { f }
+    };
+    let up = |x: f64| {
+        let f = x as f32;
+        if f64::from(f) < x { f.next_up() } else { f }
+    };
+    (lo.to_array().map(down), hi.to_array().map(up))
+}
+
 /// A ray as a straight segment in the Klein model (module docs).
 #[derive(Clone, Copy, Debug)]
 pub struct KleinRay {

@@ -88,7 +88,7 @@ pub use honeycomb::{
 };
 pub use horosphere::Horosphere;
 pub use isometry::Isometry;
-pub use klein_box::{KleinBox, KleinRay};
+pub use klein_box::{KleinBox, KleinRay, round_outward_f32};
 pub use line::HLine;
 pub use mesh::{GivenNormals, TriangleMesh};
 pub use plane::{BallShape, HPlane};

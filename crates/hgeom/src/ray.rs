@@ -51,6 +51,19 @@ pub struct Hit {
 }
 
 impl Hit {
+    /// The hit of a surface with one normal (its shading normal too) and no
+    /// parts.
+    #[inline]
+    pub(crate) fn on_surface(t: f64, point: DVec4, normal: DVec4) -> Hit {
+        Hit {
+            t,
+            point,
+            normal,
+            shading: normal,
+            part: 0,
+        }
+    }
+
     /// The hit point in the ball.
     ///
     /// # Accuracy

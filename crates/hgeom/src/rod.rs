@@ -269,13 +269,7 @@ impl Rod {
             Piece::StartCap => self.start_cap.as_ref()?.sphere.normal_at(point),
             Piece::EndCap => self.end_cap.as_ref()?.sphere.normal_at(point),
         };
-        Some(Hit {
-            t,
-            point,
-            normal,
-            shading: normal,
-            part: 0,
-        })
+        Some(Hit::on_surface(t, point, normal))
     }
 
     /// True if the ray meets the rod in `(t_min, t_max)`: exactly

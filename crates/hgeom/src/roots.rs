@@ -75,18 +75,19 @@ pub(crate) fn exp_roots_lazy(alpha: f64, k: f64, beta: f64) -> Option<ExpRoots> 
     Some(ExpRoots { alpha, beta, big })
 }
 
+impl ExpRoots {
+    /// The roots themselves, `(u_near, u_far)`, without logarithms.
+    #[inline]
+    pub(crate) fn exp(&self) -> (f64, f64) {
+        (self.beta / self.big, self.big / self.alpha)
+    }
+}
+
 /// The hit at arc length `t`, with the surface's normal there.
 #[inline]
 pub(crate) fn hit_at(ray: &Ray, t: f64, normal_at: impl Fn(DVec4) -> DVec4) -> Hit {
     let point = ray.at(t);
-    let normal = normal_at(point);
-    Hit {
-        t,
-        point,
-        normal,
-        shading: normal,
-        part: 0,
-    }
+    Hit::on_surface(t, point, normal_at(point))
 }
 
 /// The hit at the first of the two roots inside `(t_min, t_max)`, with the
@@ -100,15 +101,7 @@ pub(crate) fn hit_at_first_root(
     normal_at: impl Fn(DVec4) -> DVec4,
 ) -> Option<Hit> {
     let t = first_in_range(roots.0, roots.1, t_min, t_max)?;
-    let point = ray.at(t);
-    let normal = normal_at(point);
-    Some(Hit {
-        t,
-        point,
-        normal,
-        shading: normal,
-        part: 0,
-    })
+    Some(hit_at(ray, t, normal_at))
 }
 
 /// The first of the two roots strictly inside `(t_min, t_max)`.

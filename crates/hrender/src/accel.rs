@@ -15,6 +15,7 @@
 
 mod build;
 
+use hgeom::glam::DVec3;
 use hgeom::{Hit, KleinRay, Ray};
 
 pub use build::Leaf;
@@ -45,30 +46,25 @@ struct PairNode {
 const ABSENT: u32 = u32::MAX;
 
 impl PairNode {
-    /// Where the chord enters each child's box within `[lo, hi]`, or NaN
-    /// where it misses. The boxes in `f64` are exact (every `f32` is an
-    /// `f64`); the slab test is [`KleinRay::slab_entry`]'s, per lane.
+    /// Where the chord enters each child's box within `[lo, hi]`, if it
+    /// does. The boxes in `f64` are exact (every `f32` is an `f64`).
     #[inline(always)]
-    fn entries(&self, origin: [f64; 3], inv: [f64; 3], lo: f64, hi: f64) -> [Option<f64>; 2] {
-        #[inline(always)]
-        fn min(a: f64, b: f64) -> f64 {
-            if a < b { a } else { b }
-        }
-        #[inline(always)]
-        fn max(a: f64, b: f64) -> f64 {
-            if a > b { a } else { b }
-        }
-        let mut enter = [lo; 2];
-        let mut leave = [hi; 2];
-        for axis in 0..3 {
-            for k in 0..2 {
-                let a = (f64::from(self.lo[axis][k]) - origin[axis]) * inv[axis];
-                let z = (f64::from(self.hi[axis][k]) - origin[axis]) * inv[axis];
-                enter[k] = max(enter[k], min(a, z));
-                leave[k] = min(leave[k], max(a, z));
+    fn entries(&self, chord: &KleinRay, lo: f64, hi: f64) -> [Option<f64>; 2] {
+        [0, 1].map(|k| {
+            let corner =
+                |c: &[[f32; 2]; 3]| DVec3::new(c[0][k].into(), c[1][k].into(), c[2][k].into());
+            if self.child[k] == ABSENT {
+                return None;
             }
-        }
-        [0, 1].map(|k| (enter[k] <= leave[k] && self.child[k] != ABSENT).then_some(enter[k]))
+            chord.slab_entry(corner(&self.lo), corner(&self.hi), lo, hi)
+        })
+    }
+
+    /// The items of child `k`, if it is a leaf.
+    #[inline(always)]
+    fn leaf<'a>(&self, k: usize, items: &'a [u32]) -> Option<&'a [u32]> {
+        let first = self.child[k] as usize;
+        (self.count[k] > 0).then(|| &items[first..first + self.count[k] as usize])
     }
 }
 
@@ -150,7 +146,6 @@ impl Accel {
             }
             return best;
         }
-        let (origin, inv) = (chord.origin().to_array(), chord.inv_dir().to_array());
         let (lo, mut hi) = chord.arc(t_min, limit);
         let mut stack = [(0u32, 0f64); MAX_DEPTH + 1];
         stack[0] = (0, lo);
@@ -163,7 +158,7 @@ impl Accel {
                 continue;
             }
             let node = &self.nodes[n as usize];
-            let [e0, e1] = node.entries(origin, inv, lo, hi);
+            let [e0, e1] = node.entries(&chord, lo, hi);
             // Children in the order the chord enters them.
             let order = match (e0, e1) {
                 (Some(a), Some(b)) if b < a => [(1, b), (0, a)],
@@ -180,13 +175,12 @@ impl Accel {
                 if k == 2 || e > hi {
                     continue;
                 }
-                if node.count[k] == 0 {
+                let Some(leaf) = node.leaf(k, &self.items) else {
                     push[pushed] = (node.child[k], e);
                     pushed += 1;
                     continue;
-                }
-                let first = node.child[k] as usize;
-                for &i in &self.items[first..first + node.count[k] as usize] {
+                };
+                for &i in leaf {
                     // Consecutive boxes of one item (a rod's pieces) need
                     // one exact test.
                     if i == last {
@@ -229,7 +223,6 @@ impl Accel {
             }
             return;
         }
-        let (origin, inv) = (chord.origin().to_array(), chord.inv_dir().to_array());
         let (lo, hi) = chord.arc(t_min, t_max);
         let mut stack = [0u32; MAX_DEPTH + 1];
         let mut top = 1usize;
@@ -237,18 +230,17 @@ impl Accel {
         while top > 0 {
             top -= 1;
             let node = &self.nodes[stack[top] as usize];
-            let entries = node.entries(origin, inv, lo, hi);
+            let entries = node.entries(&chord, lo, hi);
             for (k, entry) in entries.iter().enumerate() {
                 if entry.is_none() {
                     continue;
                 }
-                if node.count[k] == 0 {
+                let Some(leaf) = node.leaf(k, &self.items) else {
                     stack[top] = node.child[k];
                     top += 1;
                     continue;
-                }
-                let first = node.child[k] as usize;
-                for &i in &self.items[first..first + node.count[k] as usize] {
+                };
+                for &i in leaf {
                     if i == last {
                         continue;
                     }
@@ -316,7 +308,6 @@ fn pair_up(binary: &[build::Node]) -> Vec<PairNode> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use hgeom::glam::DVec3;
     use hgeom::{HSphere, Point, Shape};
 
     /// Random small spheres: the hierarchy's nearest hit equals the

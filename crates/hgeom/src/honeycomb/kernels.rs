@@ -13,6 +13,7 @@
 use glam::{DMat4, DVec4};
 
 use crate::lorentz;
+use crate::roots::exp_roots_lazy;
 
 /// The inverse of a Lorentz matrix: `J Lᵀ J`.
 pub(super) fn lorentz_inverse(l: DMat4) -> DMat4 {
@@ -68,13 +69,5 @@ pub(super) fn tube_roots(o: [f64; 2], v: [f64; 2], sinh2: f64) -> Option<(f64, f
 /// `alpha, beta >= 0`, `k > 0`: [`exp_roots`] without the logarithms.
 #[inline]
 pub(super) fn exp_roots_plain(alpha: f64, k: f64, beta: f64) -> Option<(f64, f64)> {
-    let disc = k * k - alpha * beta;
-    if !(disc >= 0.0) {
-        return None;
-    }
-    let big = k + disc.sqrt();
-    if !(big > 0.0) {
-        return None;
-    }
-    Some((beta / big, big / alpha))
+    exp_roots_lazy(alpha, k, beta).map(|r| r.exp())
 }

@@ -5,6 +5,7 @@
 
 use glam::{DVec3, DVec4};
 
+use crate::klein_box::round_outward_f32;
 use crate::ray::Ray;
 
 /// Bins of the SAH split search.
@@ -33,20 +34,6 @@ pub(super) struct Node {
     hi: [f32; 3],
     pub(super) first: u32,
     pub(super) count: u32,
-}
-
-/// A box rounded outwards to `f32`: every `f32` is exactly an `f64`, so the
-/// stored box contains the given one.
-fn outward(lo: DVec3, hi: DVec3) -> ([f32; 3], [f32; 3]) {
-    let down = |x: f64| {
-        let f = x as f32;
-        if f64::from(f) > x { f.next_down() } else { f }
-    };
-    let up = |x: f64| {
-        let f = x as f32;
-        if f64::from(f) < x { f.next_up() } else { f }
-    };
-    (lo.to_array().map(down), hi.to_array().map(up))
 }
 
 /// An `f32` corner back in `f64` (exactly).
@@ -180,7 +167,7 @@ pub(super) fn build_bvh(local: &[DVec4], triangles: &[[u32; 3]]) -> (Vec<Node>, 
                 let v = local[i as usize];
                 v.truncate() / v.w
             });
-            outward(k[0].min(k[1]).min(k[2]), k[0].max(k[1]).max(k[2]))
+            round_outward_f32(k[0].min(k[1]).min(k[2]), k[0].max(k[1]).max(k[2]))
         })
         .collect();
     let mut order: Vec<u32> = (0..triangles.len() as u32).collect();
@@ -221,7 +208,7 @@ impl Builder<'_> {
         }
         let me = nodes.len();
         // The union of `f32` boxes is exactly representable.
-        let (flo, fhi) = outward(lo, hi);
+        let (flo, fhi) = round_outward_f32(lo, hi);
         nodes.push(Node {
             lo: flo,
             hi: fhi,

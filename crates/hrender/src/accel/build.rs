@@ -2,8 +2,8 @@
 //! (Wald 2007) over the leaves' box centres, with the boxes themselves
 //! rounded outwards to `f32` for storage.
 
-use hgeom::KleinBox;
 use hgeom::glam::DVec3;
+use hgeom::{KleinBox, round_outward_f32};
 
 use super::MAX_DEPTH;
 
@@ -98,7 +98,7 @@ fn build_parallel(leaves: &mut [Leaf], depth: usize) -> (Vec<Node>, Vec<u32>) {
         || build_parallel(left, depth + 1),
         || build_parallel(right, depth + 1),
     );
-    let (lo, hi) = outward(bounds);
+    let (lo, hi) = round_outward_f32(bounds.0, bounds.1);
     let node_offset = 1 + nodes.len() as u32;
     let item_offset = items.len() as u32;
     // The root goes first; every index below it moves by one.
@@ -138,22 +138,6 @@ fn bounds_of(leaves: &[Leaf]) -> ((DVec3, DVec3), (DVec3, DVec3)) {
     ((lo, hi), (clo, chi))
 }
 
-/// Round outwards to `f32`.
-fn outward((lo, hi): (DVec3, DVec3)) -> ([f32; 3], [f32; 3]) {
-    let down = |x: f64| {
-        let f = x as f32;
-        if f64::from(f) > x { f.next_down() } else { f }
-    };
-    let up = |x: f64| {
-        let f = x as f32;
-        if f64::from(f) < x { f.next_up() } else { f }
-    };
-    (
-        [down(lo.x), down(lo.y), down(lo.z)],
-        [up(hi.x), up(hi.y), up(hi.z)],
-    )
-}
-
 /// The leaves' box, and where to split them (after reordering), or `None`
 /// for a leaf.
 fn choose(leaves: &mut [Leaf], depth: usize) -> ((DVec3, DVec3), Option<usize>) {
@@ -168,7 +152,7 @@ fn choose(leaves: &mut [Leaf], depth: usize) -> ((DVec3, DVec3), Option<usize>) 
 
 fn split(nodes: &mut Vec<Node>, items: &mut Vec<u32>, leaves: &mut [Leaf], depth: usize) {
     let (bounds, cut) = choose(leaves, depth);
-    let (lo, hi) = outward(bounds);
+    let (lo, hi) = round_outward_f32(bounds.0, bounds.1);
     let index = nodes.len();
     nodes.push(Node {
         lo,
@@ -278,7 +262,7 @@ mod tests {
             DVec3::new(0.2, 0.123456789012345, 0.9999999999),
         )
         .unwrap();
-        let (lo, hi) = outward((b.lo(), b.hi()));
+        let (lo, hi) = round_outward_f32(b.lo(), b.hi());
         for k in 0..3 {
             assert!(f64::from(lo[k]) <= b.lo()[k]);
             assert!(f64::from(hi[k]) >= b.hi()[k]);
