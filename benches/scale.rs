@@ -429,8 +429,10 @@ fn json_row(r: &Row, resolution: u32, threads: Option<usize>) -> String {
         "cpu_ratio": ratio(|m| m.cpu_s),
         "wall_ratio": ratio(|m| m.wall_s),
         "mrays_per_s": r.mrays_per_s,
-        "hit_error_max": r.errors.max,
-        "hit_error_median": r.errors.median,
+        // No sampled hits (a mesh: the reference has no triangles) is no
+        // error figure, not an error of 0.
+        "hit_error_max": (r.errors.sampled > 0).then_some(r.errors.max),
+        "hit_error_median": (r.errors.sampled > 0).then_some(r.errors.median),
         "hit_error_unit": "hyperbolic distance",
         "hit_error_reference": "320-bit",
         "hits_sampled": r.errors.sampled,
