@@ -351,6 +351,15 @@ fn print_header(resolution: u32, threads: Option<usize>) {
          misses: rays whose hierarchy hit differs from an exhaustive f64 search",
         threads.unwrap_or(all)
     );
+    // No sampled hits (a mesh: the reference has no triangles) is no
+    // error figure, not an error of 0.
+    let error = |e: f64| {
+        if r.errors.sampled > 0 {
+            format!("{e:.1e}")
+        } else {
+            "-".to_string()
+        }
+    };
     println!(
         "{:<17} {:>6} {:>7} {:>8} {:>8} {:>8} {:>8} {:>6} {:>6} {:>7} {:>7} {:>7} {:>6} {:>8} {:>8} {:>5} {:>6}",
         "scene",
@@ -385,7 +394,7 @@ fn print_row(r: &Row) {
             .map_or("-".to_string(), |m| format!("{:.2}", f(&r.hscene) / f(m)))
     };
     println!(
-        "{:<17} {:>6} {:>7} {:>8.3} {:>8.3} {:>8} {:>8} {:>6} {:>6} {:>7.2} {:>7.1} {:>7} {:>6} {:>8.1e} {:>8.1e} {:>5} {:>6}",
+        "{:<17} {:>6} {:>7} {:>8.3} {:>8.3} {:>8} {:>8} {:>6} {:>6} {:>7.2} {:>7.1} {:>7} {:>6} {:>8} {:>8} {:>5} {:>6}",
         r.name,
         r.objects,
         r.primitives,
@@ -400,8 +409,8 @@ fn print_row(r: &Row) {
         pov(|m| m.peak_mib, 1),
         r.bytes_per_triangle()
             .map_or("-".to_string(), |b| format!("{b:.0}")),
-        r.errors.max,
-        r.errors.median,
+        error(r.errors.max),
+        error(r.errors.median),
         r.errors.sampled,
         r.misses
     );
