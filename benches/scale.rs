@@ -351,15 +351,6 @@ fn print_header(resolution: u32, threads: Option<usize>) {
          misses: rays whose hierarchy hit differs from an exhaustive f64 search",
         threads.unwrap_or(all)
     );
-    // No sampled hits (a mesh: the reference has no triangles) is no
-    // error figure, not an error of 0.
-    let error = |e: f64| {
-        if r.errors.sampled > 0 {
-            format!("{e:.1e}")
-        } else {
-            "-".to_string()
-        }
-    };
     println!(
         "{:<17} {:>6} {:>7} {:>8} {:>8} {:>8} {:>8} {:>6} {:>6} {:>7} {:>7} {:>7} {:>6} {:>8} {:>8} {:>5} {:>6}",
         "scene",
@@ -392,6 +383,15 @@ fn print_row(r: &Row) {
         r.povray
             .as_ref()
             .map_or("-".to_string(), |m| format!("{:.2}", f(&r.hscene) / f(m)))
+    };
+    // No sampled hits (a mesh: the reference has no triangles) is no
+    // error figure, not an error of 0.
+    let error = |e: f64| {
+        if r.errors.sampled > 0 {
+            format!("{e:.1e}")
+        } else {
+            "-".to_string()
+        }
     };
     println!(
         "{:<17} {:>6} {:>7} {:>8.3} {:>8.3} {:>8} {:>8} {:>6} {:>6} {:>7.2} {:>7.1} {:>7} {:>6} {:>8} {:>8} {:>5} {:>6}",
