@@ -38,36 +38,45 @@ fn bench_kernel(c: &mut Criterion, name: &str, rs: &[Ray], hit: impl Fn(&Ray) ->
 
 fn kernels(c: &mut Criterion) {
     let rs = rays(1024);
+    // Cannot fail: literal points inside the ball.
     let p = |x: f64, y: f64, z: f64| Point::from_coords(DVec3::new(x, y, z)).unwrap();
+    // Cannot fail: a literal centre and a positive radius.
     let sphere = HSphere::new(p(0.02, -0.01, 0.2), 0.1).unwrap();
     bench_kernel(c, "sphere_intersect_x1024", &rs, |r| {
         sphere.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
+    // Cannot fail: a Platonic solid of a positive literal circumradius.
     let dodeca = Polyhedron::platonic(Platonic::Dodecahedron, 0.5).unwrap();
     bench_kernel(c, "dodecahedron_intersect_x1024", &rs, |r| {
         dodeca.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
     let (a, b, q) = (p(-0.2, 0.05, 0.3), p(0.2, -0.05, 0.3), p(0.0, 0.2, 0.3));
+    // Cannot fail: three distinct, non-collinear literal points.
     let plane = HPlane::through(&a.into(), &b.into(), &q.into()).unwrap();
     bench_kernel(c, "plane_intersect_x1024", &rs, |r| {
         plane.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
+    // Cannot fail: three distinct, non-collinear literal points.
     let polygon = ConvexPolygon::new(vec![a.into(), b.into(), q.into()]).unwrap();
     bench_kernel(c, "triangle_intersect_x1024", &rs, |r| {
         polygon.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
+    // Cannot fail: two distinct literal points and a positive radius.
     let cylinder = HCylinder::new(HLine::through(&a.into(), &b.into()).unwrap(), 0.05).unwrap();
     bench_kernel(c, "cylinder_intersect_x1024", &rs, |r| {
         cylinder.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
+    // Cannot fail: two distinct literal points and a positive radius.
     let rod = Rod::new(a.into(), b.into(), 0.05).unwrap();
     bench_kernel(c, "rod_intersect_x1024", &rs, |r| {
         rod.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
     let horosphere = Horosphere::new(
+        // Cannot fail: a literal non-zero direction.
         IdealPoint::from_direction(DVec3::Z).unwrap(),
         &p(0.0, 0.0, 0.3),
     )
+    // Cannot fail: a literal ideal point and a literal point inside the ball.
     .unwrap();
     bench_kernel(c, "horosphere_intersect_x1024", &rs, |r| {
         horosphere.intersect(r, 1e-9, f64::INFINITY).is_some()
@@ -78,6 +87,7 @@ fn kernels(c: &mut Criterion) {
 /// origin: `rings` circles of `segments` vertices between the poles,
 /// `2 segments rings` triangles, wound outward.
 fn sphere_mesh(rings: u32, segments: u32, radius: f64) -> TriangleMesh {
+    // Cannot fail: a moderate literal radius and the unit directions of a sphere grid.
     let at = |d: DVec3| Point::at_distance_from_origin(d, radius).unwrap();
     let mut vertices = vec![at(DVec3::Z), at(-DVec3::Z)];
     for i in 1..=rings {
@@ -104,6 +114,7 @@ fn sphere_mesh(rings: u32, segments: u32, radius: f64) -> TriangleMesh {
             triangles.push([a, d, b]);
         }
     }
+    // Cannot fail: the grid's triangles are non-degenerate and index its vertices.
     TriangleMesh::new(vertices, triangles).expect("a valid sphere mesh")
 }
 
@@ -115,6 +126,7 @@ fn mesh(c: &mut Criterion) {
     let sphere = sphere_mesh(24, 42, 1.0);
     assert_eq!(sphere.triangle_count(), 2016);
     let away =
+        // Cannot fail: distance 2 along +z is a ball point.
         Isometry::transvection_from_origin(Point::at_distance_from_origin(DVec3::Z, 2.0).unwrap());
     let far = sphere.transformed(&away);
     let mut group = c.benchmark_group("mesh");
@@ -156,6 +168,7 @@ fn appendix_render(c: &mut Criterion) {
     let source = include_str!("../scenes/thesis-appendix-a.hsc");
     let scene = hscene_lang::compile(source)
         .scene
+        // Cannot fail: the appendix scene is part of the repository and compiles (tested).
         .expect("appendix compiles");
     let options = hrender::RenderOptions {
         resolution: hscene_lang::ir::Resolution::new(64, 64),

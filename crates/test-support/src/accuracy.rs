@@ -33,6 +33,7 @@ fn cube_direction(rng: &mut SplitMix64) -> DVec3 {
 /// in a random direction.
 fn point_in(rng: &mut SplitMix64, lo: f64, hi: f64) -> Point {
     let d = rng.range(lo, hi);
+    // Cannot fail: the cases draw distances of at most ~20, well inside f64's range for a ball point.
     Point::at_distance_from_origin(cube_direction(rng), d).expect("finite distance")
 }
 
@@ -229,6 +230,7 @@ pub fn walk_step(rng: &mut SplitMix64, current: &Point, cap: f64) -> Isometry {
     if current.distance_from_origin() > cap {
         let home = -current.coords().normalize();
         let len = rng.range(1.0, 2.0);
+        // Cannot fail: a step of 1 to 2 from the origin is a ball point.
         let p = Point::at_distance_from_origin(home, len).expect("short step");
         Isometry::transvection_from_origin(p)
     } else {
@@ -375,6 +377,7 @@ pub fn polygon_hits(rng: &mut SplitMix64, n: usize) -> Family {
             let verts: Vec<Vertex> = [(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)]
                 .iter()
                 .map(|&(x, y)| {
+                    // Cannot fail: corners of the unit square times 0.3 lie inside the ball.
                     let corner = Point::from_coords(DVec3::new(x, y, 0.0) * 0.3).expect("inside");
                     off.apply(&corner).into()
                 })

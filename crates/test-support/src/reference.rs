@@ -14,6 +14,7 @@ const P: usize = 320;
 const RM: RoundingMode = RoundingMode::ToEven;
 
 thread_local! {
+    // Cannot fail: astro-float builds its constants cache from fixed data; it fails only on allocation failure.
     static CC: RefCell<Consts> = RefCell::new(Consts::new().expect("astro-float constants"));
 }
 
@@ -30,6 +31,7 @@ impl R {
     /// conversion); panics if the value does not format.
     pub fn to_f64(&self) -> f64 {
         let s = CC.with(|cc| self.0.format(Radix::Dec, RM, &mut cc.borrow_mut()));
+        // Cannot fail: formatting a finite 320-bit number in decimal cannot fail; every reference value is finite.
         let s = s.expect("format");
         s.parse::<f64>().unwrap_or_else(|_| panic!("parse {s}"))
     }

@@ -18,6 +18,7 @@ use crate::SplitMix64;
 
 /// Renders with `options`, checking that no pixel failed or is non-finite.
 pub fn draw_with(scene: &Scene, options: &hrender::RenderOptions) -> hrender::Image {
+    // Panics on purpose: these are test fixtures, and a fixture that does not render must stop the test with the renderer's error.
     let out = hrender::render(scene, options, &|_| {}).expect("render");
     assert_eq!(out.stats.numeric_failures, 0);
     assert!(out.image.pixels().iter().flatten().all(|c| c.is_finite()));
@@ -42,16 +43,19 @@ pub fn agreement(a: &hrender::Image, b: &hrender::Image, tol: f32) -> f64 {
 
 /// An h-point from ball coordinates.
 pub fn p(x: f64, y: f64, z: f64) -> Point {
+    // Cannot fail: callers pass literal coordinates inside the ball; a wrong literal is a bug in the test.
     Point::from_coords(DVec3::new(x, y, z)).expect("test point inside the ball")
 }
 
 /// An h-point at hyperbolic distance `d` from the origin in direction `dir`.
 pub fn at(dir: DVec3, d: f64) -> Point {
+    // Cannot fail: callers pass literal, moderate distances and non-zero directions.
     Point::at_distance_from_origin(dir, d).expect("test point")
 }
 
 /// An ideal point in direction `dir`.
 pub fn ideal(dir: DVec3) -> IdealPoint {
+    // Cannot fail: callers pass literal non-zero directions.
     IdealPoint::from_direction(dir).expect("test ideal point")
 }
 
@@ -82,6 +86,7 @@ pub fn flat(r: f64, g: f64, b: f64) -> Material {
 pub fn settings(net: Net, size: u32, window: f64) -> Settings {
     Settings {
         recursion_depth: 1,
+        // Cannot fail: test images are at least 1x1.
         resolution: Resolution::new(size, size).expect("test resolution"),
         window: Window {
             width: window,
@@ -179,6 +184,7 @@ pub fn scene(
         .into_iter()
         .map(|o| Object {
             shape: o.shape,
+            // Cannot fail: the fixture lists index their own material list.
             material: MaterialId::of(&materials, o.material).expect("test material index"),
             name: None,
             placement: o.placement,
@@ -198,23 +204,28 @@ pub fn scene(
 
 /// An h-sphere of centre `c` and hyperbolic radius `r`.
 pub fn sphere(c: Point, r: f64) -> Shape {
+    // Cannot fail: callers pass positive literal radii.
     Shape::Sphere(HSphere::new(c, r).expect("test sphere"))
 }
 
 /// A rod of hyperbolic radius `r` from `a` to `b`.
 pub fn rod(a: Point, b: Point, r: f64) -> Shape {
+    // Cannot fail: callers pass distinct literal end points and a positive radius.
     Shape::Rod(Rod::new(a.into(), b.into(), r).expect("test rod"))
 }
 
 /// The h-cylinder of hyperbolic radius `r` about the h-line through `a` and
 /// `b`.
 pub fn cylinder(a: Point, b: Point, r: f64) -> Shape {
+    // Cannot fail: callers pass two distinct literal points.
     let line = HLine::through(&a.into(), &b.into()).expect("test line");
+    // Cannot fail: callers pass a positive literal radius.
     Shape::Cylinder(HCylinder::new(line, r).expect("test cylinder"))
 }
 
 /// The convex polygon with vertices `vs`, in order.
 pub fn polygon(vs: Vec<Vertex>) -> Shape {
+    // Cannot fail: callers pass literal convex polygons.
     Shape::Polygon(ConvexPolygon::new(vs).expect("test polygon"))
 }
 
@@ -260,6 +271,7 @@ pub fn mixed_scene(net: Net, size: u32, window: f64) -> Scene {
 /// and every light.
 pub fn moved(scene: &Scene, iso: &Isometry) -> Scene {
     let mut s = scene.clone();
+    // Cannot fail: every fixture scene sets an explicit up point.
     let up = s.camera.up.expect("tests use an explicit up point");
     s.camera.eye = iso.apply(&s.camera.eye);
     s.camera.target = iso.apply(&s.camera.target);
@@ -307,6 +319,7 @@ pub fn many_rods_scene(n: usize, size: u32) -> Scene {
         let to_origin = Isometry::transvection_from_origin(centre);
         let a = to_origin.apply(&at(rng.direction(), rng.range(0.05, 0.25)));
         let b = to_origin.apply(&at(rng.direction(), rng.range(0.05, 0.25)));
+        // Cannot fail: the two ends are drawn 0.05 to 0.25 from a point, in random directions: distinct to rounding far above f64's.
         let r = Rod::new(a.into(), b.into(), 0.008).expect("random rod");
         if i < n {
             objects.push(obj(Shape::Rod(r), 0));
@@ -317,6 +330,7 @@ pub fn many_rods_scene(n: usize, size: u32) -> Scene {
     objects.push(obj(Shape::Wireframe(wire), 1));
     // A wall behind everything, to catch the shadows: the h-plane
     // orthogonal to the z axis at distance 2.3.
+    // Cannot fail: two distinct points on the z axis.
     let wall = HPlane::orthogonal_at(&at(DVec3::Z, 2.3), &at(DVec3::Z, 2.4)).expect("wall");
     objects.push(obj(Shape::Plane(wall), 2));
     let lights = vec![
@@ -336,19 +350,23 @@ pub fn many_rods_scene(n: usize, size: u32) -> Scene {
 /// builders do not cover.
 pub fn solids_scene(net: Net, size: u32, window: f64) -> Scene {
     let dodeca = Polyhedron::platonic(Platonic::Dodecahedron, 0.3)
+        // Cannot fail: a Platonic solid of a positive literal circumradius.
         .expect("dodecahedron")
         .transformed(&Isometry::transvection_from_origin(p(-0.15, 0.0, 0.3)));
     let cube = Polyhedron::platonic(Platonic::Cube, 0.25)
+        // Cannot fail: a Platonic solid of a positive literal circumradius.
         .expect("cube")
         .transformed(&Isometry::transvection_from_origin(p(0.15, 0.05, 0.3)));
     let mut edges = Vec::new();
     for f in cube.faces() {
         let vs = f.vertices();
         for i in 0..vs.len() {
+            // Cannot fail: consecutive vertices of a valid face are distinct.
             edges.push(Rod::new(vs[i], vs[(i + 1) % vs.len()], 0.01).expect("edge"));
         }
     }
     let horo = Horosphere::new(ideal(DVec3::new(0.0, -1.0, 0.3)), &p(0.0, -0.25, 0.35))
+        // Cannot fail: a literal ideal point and a literal point inside the ball.
         .expect("horosphere");
     let objects = vec![
         obj(Shape::Polyhedron(dodeca), 0),
@@ -372,6 +390,7 @@ pub fn solids_scene(net: Net, size: u32, window: f64) -> Scene {
 /// `n x n x n` block of small cubes, each its own object, in front of the eye.
 pub fn many_cells_scene(n: usize, size: u32) -> Scene {
     let mut objects = Vec::new();
+    // Cannot fail: a Platonic solid of a positive literal circumradius.
     let cube = Polyhedron::platonic(Platonic::Cube, 0.08).expect("cube");
     let step = 0.16;
     for i in 0..n {
@@ -423,6 +442,7 @@ trait ThenSign {
 impl ThenSign for Point {
     fn then_sign(self, s: f64) -> Point {
         if s < 0.0 {
+            // Cannot fail: the mirror image of a ball point is a ball point.
             Point::from_coords(-self.coords()).expect("mirror image")
         } else {
             self
