@@ -5,14 +5,13 @@
 //! case count of the properties, and `--nocapture` prints the measured
 //! errors.
 
-use std::collections::HashMap;
 use std::f64::consts::{PI, TAU};
 
 use glam::{DVec3, DVec4};
 use hgeom::{
     ConvexPolygon, HPlane, Hit, Isometry, Point, Ray, Segment, TriangleMesh, Vertex, lorentz,
 };
-use hscene_test_support::SplitMix64;
+use hscene_test_support::{SplitMix64, icosphere};
 use proptest::prelude::*;
 
 // ---------------------------------------------------------------------------
@@ -147,67 +146,13 @@ fn soup(rng: &mut SplitMix64, count: usize, reach: f64, size: f64) -> TriangleMe
 /// A closed, outward-wound icosphere about the origin: the icosahedron
 /// subdivided `levels` times, each vertex at distance `radius * (1 + bump)`
 /// with `bump` uniform in `[-bumps, bumps]` (star-shaped about the origin).
-fn icosphere(
+fn bumpy_icosphere(
     rng: &mut SplitMix64,
     levels: usize,
     radius: f64,
     bumps: f64,
 ) -> (Vec<Point>, Vec<[u32; 3]>) {
-    let g = (1.0 + 5f64.sqrt()) / 2.0;
-    let mut dirs: Vec<DVec3> = [
-        (-1.0, g, 0.0),
-        (1.0, g, 0.0),
-        (-1.0, -g, 0.0),
-        (1.0, -g, 0.0),
-        (0.0, -1.0, g),
-        (0.0, 1.0, g),
-        (0.0, -1.0, -g),
-        (0.0, 1.0, -g),
-        (g, 0.0, -1.0),
-        (g, 0.0, 1.0),
-        (-g, 0.0, -1.0),
-        (-g, 0.0, 1.0),
-    ]
-    .iter()
-    .map(|&(x, y, z)| DVec3::new(x, y, z).normalize())
-    .collect();
-    let mut faces: Vec<[u32; 3]> = vec![
-        [0, 11, 5],
-        [0, 5, 1],
-        [0, 1, 7],
-        [0, 7, 10],
-        [0, 10, 11],
-        [1, 5, 9],
-        [5, 11, 4],
-        [11, 10, 2],
-        [10, 7, 6],
-        [7, 1, 8],
-        [3, 9, 4],
-        [3, 4, 2],
-        [3, 2, 6],
-        [3, 6, 8],
-        [3, 8, 9],
-        [4, 9, 5],
-        [2, 4, 11],
-        [6, 2, 10],
-        [8, 6, 7],
-        [9, 8, 1],
-    ];
-    for _ in 0..levels {
-        let mut mid: HashMap<(u32, u32), u32> = HashMap::new();
-        let mut next = Vec::with_capacity(4 * faces.len());
-        for [a, b, c] in faces {
-            let mut m = |u: u32, v: u32| {
-                *mid.entry((u.min(v), u.max(v))).or_insert_with(|| {
-                    dirs.push((dirs[u as usize] + dirs[v as usize]).normalize());
-                    dirs.len() as u32 - 1
-                })
-            };
-            let (ab, bc, ca) = (m(a, b), m(b, c), m(c, a));
-            next.extend([[a, ab, ca], [ab, b, bc], [ca, bc, c], [ab, bc, ca]]);
-        }
-        faces = next;
-    }
+    let (dirs, faces) = icosphere(levels as u32);
     for f in &faces {
         let [a, b, c] = f.map(|k| dirs[k as usize]);
         assert!((b - a).cross(c - a).dot(a + b + c) > 0.0, "inward face");
@@ -456,7 +401,7 @@ fn rays_from_inside_a_closed_mesh_always_hit() {
     let mut rays = 0;
     for case in 0..12 {
         let radius = [0.3, 1.0, 2.5][case % 3];
-        let (points, faces) = icosphere(&mut rng, 3, radius, 0.05);
+        let (points, faces) = bumpy_icosphere(&mut rng, 3, radius, 0.05);
         let f = rng.placement([0.0, 2.0, 4.0][case % 3]);
         let mesh = TriangleMesh::new(points, faces).unwrap().transformed(&f);
         assert_eq!(mesh.triangle_count(), 1280);
@@ -492,7 +437,7 @@ fn rays_from_inside_a_closed_mesh_always_hit() {
 #[test]
 fn rays_through_edges_and_vertices_never_miss() {
     let mut rng = SplitMix64::new(5);
-    let (points, faces) = icosphere(&mut rng, 2, 1.0, 0.1);
+    let (points, faces) = bumpy_icosphere(&mut rng, 2, 1.0, 0.1);
     let mesh = TriangleMesh::new(points.clone(), faces.clone()).unwrap();
     let mut targets: Vec<DVec4> = points.iter().map(Point::to_hyperboloid).collect();
     for [a, b, c] in &faces {
@@ -545,7 +490,7 @@ fn rays_through_edges_and_vertices_never_miss() {
 #[test]
 fn long_chains_of_moves_stay_accurate() {
     let mut rng = SplitMix64::new(99);
-    let (points, faces) = icosphere(&mut rng, 2, 0.8, 0.1);
+    let (points, faces) = bumpy_icosphere(&mut rng, 2, 0.8, 0.1);
     let mesh = TriangleMesh::new(points, faces).unwrap();
     // 1000 random moves (rotations, reflections, translations up to 0.5;
     // a mesh that wandered more than 2 away is brought back 0.3 towards
@@ -617,7 +562,7 @@ fn long_chains_of_moves_stay_accurate() {
 #[test]
 fn mesh_next_to_the_absolute() {
     let mut rng = SplitMix64::new(12);
-    let (points, faces) = icosphere(&mut rng, 2, 0.5, 0.1);
+    let (points, faces) = bumpy_icosphere(&mut rng, 2, 0.5, 0.1);
     let d = 28.3;
     let centre = Point::at_distance_from_origin(DVec3::new(0.3, -0.5, 0.8), d).unwrap();
     let there = Isometry::transvection_from_origin(centre);
@@ -809,7 +754,7 @@ fn rays_through_a_vertex() {
 #[test]
 fn transformed_shares_a_large_mesh() {
     let mut rng = SplitMix64::new(31);
-    let (points, faces) = icosphere(&mut rng, 4, 1.0, 0.02);
+    let (points, faces) = bumpy_icosphere(&mut rng, 4, 1.0, 0.02);
     let mesh = TriangleMesh::new(points, faces).unwrap();
     assert_eq!(mesh.triangle_count(), 5120);
     let f = rng.placement(2.0);

@@ -16,9 +16,11 @@
 pub mod accuracy;
 #[cfg(feature = "render")]
 pub mod far;
+mod icosphere;
 pub mod reference;
 mod rng;
 #[cfg(feature = "render")]
 pub mod scenes;
 
+pub use icosphere::icosphere;
 pub use rng::SplitMix64;
