@@ -31,9 +31,10 @@
 use std::fmt::Write as _;
 use std::process::{Command, ExitCode};
 
-use hgeom::glam::{DVec3, DVec4};
-use hgeom::{CoxeterSimplex, HoneycombStyle, Ray, RegularHoneycomb};
-use hscene_lang::ir::{Scene, Shape};
+use hgeom::glam::DVec3;
+use hgeom::{HoneycombStyle, Ray, RegularHoneycomb};
+use hrender::PixelNet;
+use hscene_lang::ir::{Net, Resolution, Scene, Shape};
 use hscene_test_support::reference::{R, V4, distance_h, ldot};
 
 #[allow(dead_code)]
@@ -46,7 +47,7 @@ const GRID: u32 = 64;
 /// The edges' radius: the language's default.
 const EDGE_RADIUS: f64 = 0.02;
 /// Reflections after which the drift is measured, and the rays measured.
-const DRIFT_STEPS: [u32; 4] = [10, 20, 40, 60];
+const DRIFT_STEPS: [u32; 4] = [3, 5, 10, 15];
 const DRIFT_RAYS: u32 = 64;
 
 /// The honeycomb scene: the eye at the centre of the base cube, looking at
@@ -90,12 +91,33 @@ fn honeycomb_in(scene: &Scene, probe: &Probe) -> Option<RegularHoneycomb> {
     }
 }
 
+/// The horizon the renderer walks the honeycomb to at `resolution`: where
+/// its cells shrink below the angle between neighbouring pixels.
+fn render_horizon(
+    h: &RegularHoneycomb,
+    scene: &Scene,
+    probe: &Probe,
+    resolution: u32,
+) -> Result<f64, String> {
+    let res = Resolution::new(resolution, resolution).ok_or("an empty picture")?;
+    let window = match scene.settings.fov {
+        None => scene.settings.window,
+        Some(fov) => {
+            hscene_lang::view::fov_window(fov, Net::Euclidean, res, probe.camera.view_distance)
+                .map_err(|e| format!("fov {fov}: {e:?}"))?
+        }
+    };
+    let net = PixelNet::new(Net::Euclidean, window, probe.camera.view_distance);
+    let angle =
+        hrender::pixel_angle(&net, resolution, resolution).ok_or("no pixel sees the scene")?;
+    Ok(h.horizon_for_pixel(angle))
+}
+
 /// Walk counts over the probe's primary rays.
 struct Walks {
     rays: u64,
     hits: u64,
     cells: u64,
-    chambers: u64,
     max_cells: u32,
 }
 
@@ -104,7 +126,6 @@ fn walks(h: &RegularHoneycomb, probe: &Probe) -> Walks {
         rays: 0,
         hits: 0,
         cells: 0,
-        chambers: 0,
         max_cells: 0,
     };
     for dir in &probe.dirs {
@@ -113,44 +134,23 @@ fn walks(h: &RegularHoneycomb, probe: &Probe) -> Walks {
         w.rays += 1;
         w.hits += u64::from(hit.is_some());
         w.cells += u64::from(stats.cells);
-        w.chambers += u64::from(stats.chambers);
         w.max_cells = w.max_cells.max(stats.cells);
     }
     w
 }
 
-/// A direction from the base cell's centre folded into the base simplex:
-/// reflected in the simplex's walls through the centre (`m0`, `m1`, `m2`,
-/// whose normals have no time part there) until it points into it, so
-/// that the f64 walk starts without folding and both walks start alike.
-fn folded(normals: &[DVec4; 4], dir: DVec3) -> DVec3 {
-    let mut d = dir.normalize();
-    // The cell's own group is finite: a direction is folded in at most a
-    // few dozen reflections; the cap only guards the loop.
-    for _ in 0..1000 {
-        let Some(n) = normals[..3]
-            .iter()
-            .map(|n| n.truncate())
-            .find(|n| d.dot(*n) < -1e-15)
-        else {
-            break;
-        };
-        d -= 2.0 * d.dot(n) * n;
-    }
-    d.normalize()
-}
-
 /// The hyperbolic distance between the f64 walk's local ray origin and a
 /// 320-bit walk's after each of `steps` (1-based) reflections, for the ray
 /// from the base cell's centre along `dir`. The 320-bit walk crosses the
-/// same walls (the f64 walk's choices) of the same f64 simplex, so the
-/// difference is the walk's own rounding: the exit point (`tanh τ =
-/// -<O,n>/<D,n>`), the re-basing and the reflection, step after step.
-fn drift_of(h: &RegularHoneycomb, normals: &[DVec4; 4], dir: DVec3, steps: &[u32]) -> Vec<f64> {
+/// same walls (the f64 walk's choices: here the faces of the base cube,
+/// one cell per step) with the same f64 normals, so the difference is the
+/// walk's own rounding: the exit point (`tanh τ = -<O,n>/<D,n>`), the
+/// re-basing and the reflection, step after step.
+fn drift_of(h: &RegularHoneycomb, dir: DVec3, steps: &[u32]) -> Vec<f64> {
     let last = steps.iter().copied().max().unwrap_or(0) as usize;
-    let ray = Ray::from_origin_unchecked(folded(normals, dir));
+    let ray = Ray::from_origin_unchecked(dir.normalize());
     let walk = h.walk_steps(&ray, last);
-    let n: Vec<V4> = normals.iter().map(|n| V4::from_f64(*n)).collect();
+    let n: Vec<V4> = h.walls().iter().map(|n| V4::from_f64(*n)).collect();
     let one = R::f(1.0);
     let two = R::f(2.0);
     let mut o = V4::from_f64(ray.origin);
@@ -194,7 +194,6 @@ fn drift() -> Vec<(u32, f64, usize)> {
     let Ok(h) = RegularHoneycomb::new(symbol, style) else {
         return Vec::new();
     };
-    let normals = CoxeterSimplex::new(symbol).normals();
     let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
     let mut worst = vec![(0.0f64, 0usize); DRIFT_STEPS.len()];
     for i in 0..DRIFT_RAYS {
@@ -202,10 +201,7 @@ fn drift() -> Vec<(u32, f64, usize)> {
         let rho = (1.0 - z * z).sqrt();
         let a = golden * f64::from(i);
         let dir = DVec3::new(rho * a.cos(), rho * a.sin(), z);
-        for (k, d) in drift_of(&h, &normals, dir, &DRIFT_STEPS)
-            .into_iter()
-            .enumerate()
-        {
+        for (k, d) in drift_of(&h, dir, &DRIFT_STEPS).into_iter().enumerate() {
             worst[k].0 = worst[k].0.max(d);
             worst[k].1 += 1;
         }
@@ -255,7 +251,6 @@ impl Report {
             "cpu_ratio": self.ratio(),
             "rays_per_cpu_s": self.rays_per_second(),
             "mean_cells_per_ray": self.mean(self.walks.cells),
-            "mean_chambers_per_ray": self.mean(self.walks.chambers),
             "max_cells_per_ray": self.walks.max_cells,
             "hit_share": self.walks.hits as f64 / self.walks.rays.max(1) as f64,
             "drift": self.drift.iter().map(|(n, d, rays)| serde_json::json!({"steps": n, "max": d, "rays": rays})).collect::<Vec<_>>(),
@@ -296,16 +291,15 @@ impl Report {
         );
         let _ = writeln!(
             s,
-            "  per primary ray: {:.1} cells, {:.1} chambers crossed (max {} cells); {:.0} % hit",
+            "  per primary ray: {:.1} cells crossed (max {}); {:.0} % hit",
             self.mean(self.walks.cells),
-            self.mean(self.walks.chambers),
             self.walks.max_cells,
             100.0 * self.walks.hits as f64 / self.walks.rays.max(1) as f64
         );
         for (n, d, rays) in &self.drift {
             let _ = writeln!(
                 s,
-                "  drift after {n:5} reflections: {d:.1e} (max over the {rays} of {DRIFT_RAYS} rays still walking)"
+                "  drift after {n:3} cells (face reflections): {d:.1e} (max over the {rays} of {DRIFT_RAYS} rays still walking)"
             );
         }
         s
@@ -323,6 +317,8 @@ fn run(resolution: u32, threads: Option<usize>) -> Result<Report, String> {
     })?;
     let probe = Probe::new(&scene, GRID)?;
     let honeycomb = honeycomb_in(&scene, &probe).ok_or("the scene's object is not a honeycomb")?;
+    let horizon = render_horizon(&honeycomb, &scene, &probe, resolution)?;
+    let honeycomb = honeycomb.with_horizon(horizon).map_err(|e| e.to_string())?;
     let walks = walks(&honeycomb, &probe);
 
     let dir = tempfile::tempdir().map_err(|e| e.to_string())?;

@@ -362,8 +362,9 @@ fn view_window(
 /// The smallest angle at the eye between the primary rays of two
 /// neighbouring pixels, over the middle and the corners of the picture
 /// (nets other than 0 spread their pixels unevenly); `None` if no two
-/// neighbours both see the scene.
-fn pixel_angle(net: &PixelNet, width: u32, height: u32) -> Option<f64> {
+/// neighbours both see the scene. Honeycombs are walked to where their
+/// cells shrink below this angle (`ir::Shape::for_pixel_angle`).
+pub fn pixel_angle(net: &PixelNet, width: u32, height: u32) -> Option<f64> {
     let (dx, dy) = (1.0 / f64::from(width), 1.0 / f64::from(height));
     let spots = [
         (0.0, 0.0),

@@ -10,11 +10,13 @@
 //!   colouring rule.
 //! - `style`: what is drawn; the parts a hit reports.
 //! - `walk`: [`RegularHoneycomb`], the honeycomb as one surface traced by
-//!   walking each ray through the simplex; `kernels`: the arithmetic of one
-//!   step.
+//!   walking each ray from cell to cell (or through the simplex);
+//!   `domain`: the cell or simplex it walks and the parts inside it;
+//!   `kernels`: the arithmetic of one step.
 
 mod cells;
 mod cube435;
+mod domain;
 mod kernels;
 mod schlafli;
 mod simplex;

@@ -92,20 +92,20 @@ use crate::point::Point;
 use crate::ray::{Hit, Ray};
 use crate::roots::exp_roots;
 
-use super::cells::{CellSet, Shells, orbit};
-use super::kernels::{
-    exp_roots_plain, lorentz_inverse, reflect, renormalise, times_reflection, tube_roots,
-};
+use super::cells::{CellSet, Shells};
+use super::domain::{DomainPart, DomainRay, MAX_WALLS, WalkDomain};
+use super::kernels::{lorentz_inverse, reflect, renormalise, times_reflection};
 use super::schlafli::Schlafli;
 use super::simplex::CoxeterSimplex;
-use super::style::{HoneycombPart, HoneycombStyle, encode_part};
+use super::style::{HoneycombStyle, encode_part};
 
 /// The default horizon: the walk stops at this distance from the origin of
 /// the frame (module docs).
 pub const DEFAULT_HORIZON: f64 = 12.0;
 
-/// The most chambers one ray may cross; a ray that would cross more (one
-/// aimed within `e^{-15}` of an ideal vertex, spiralling up its cusp) misses.
+/// The most steps (cells, or chambers for horosphere-inscribed cells) one
+/// ray may take; a ray that would take more (one aimed within `e^{-15}` of
+/// an ideal vertex, spiralling up its cusp) misses.
 pub const MAX_WALK_STEPS: u32 = 200_000;
 
 /// Parts within `SELF_HIT x0²` of a ray's start are skipped, `x0` the
@@ -117,8 +117,9 @@ pub const MAX_WALK_STEPS: u32 = 200_000;
 const SELF_HIT: f64 = 1e-14;
 
 /// The walk restores `<O,O> = -1`, `<D,D> = 1`, `<O,D> = 0` every this
-/// many chambers (rounding drifts them by a few ulps per step).
-const RENORMALISE_EVERY: u32 = 8;
+/// many steps (rounding drifts them by a few ulps per step, and the common
+/// scale grows by the `cosh` of each step, at most about 4 for a cell).
+const RENORMALISE_EVERY: u32 = 4;
 
 /// The most reflections that fold a ray's start into the simplex.
 const MAX_FOLD_STEPS: u32 = 100_000;
@@ -126,8 +127,10 @@ const MAX_FOLD_STEPS: u32 = 100_000;
 /// Counts from one walk.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct WalkStats {
-    /// Chambers (copies of the simplex) entered, the first included.
-    pub chambers: u32,
+    /// Domains entered, the first included: cells when the cells are
+    /// finite, chambers (copies of the characteristic simplex) when they
+    /// are horosphere-inscribed.
+    pub steps: u32,
     /// Cells entered (crossings of face planes, plus the first cell).
     pub cells: u32,
     /// Reflections that folded the start into the simplex.
@@ -138,34 +141,20 @@ pub struct WalkStats {
 /// it has crossed a wall, in the base simplex.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct WalkStep {
-    /// The wall crossed (`0..4`; 3 is a face plane).
+    /// The wall crossed: an index into [`RegularHoneycomb::walls`].
     pub wall: usize,
+    /// True if that wall is a face plane (the step enters another cell).
+    pub face: bool,
     /// The arc length along the original ray at the crossing.
     pub t: f64,
     /// The crossing point, reflected into the base simplex (on the wall).
     pub origin: DVec4,
     /// The reflected direction there.
     pub dir: DVec4,
-    /// The Lorentz matrix from the base simplex to the chamber entered
-    /// (in the honeycomb's frame, before placement).
+    /// The Lorentz matrix from the base domain to the domain entered (in
+    /// the honeycomb's frame, before placement); its last column is the
+    /// centre of the cell entered when the cells are finite.
     pub chamber: DMat4,
-}
-
-/// What the walk needs of the symbol, in the base simplex.
-#[derive(Clone, Debug)]
-struct Local {
-    n: [DVec4; 4],
-    /// `N2 = k2 n2 + k3 n3`: the edge line's second normal.
-    k2: f64,
-    k3: f64,
-    /// `sinh²` of the edge radius.
-    sinh2_edge: Option<f64>,
-    /// `v0` and `cosh` of the vertex radius (finite vertices only).
-    vertex: Option<(DVec4, f64)>,
-    /// The centres of the cells around the edge, the vertex and the face.
-    edge_cells: Vec<DVec4>,
-    vertex_cells: Vec<DVec4>,
-    face_cells: [DVec4; 2],
 }
 
 /// A regular honeycomb `{p,q,r}` of hyperbolic space as one surface: edges
@@ -180,7 +169,7 @@ struct Local {
 pub struct RegularHoneycomb {
     symbol: Schlafli,
     style: HoneycombStyle,
-    local: Arc<Local>,
+    domain: Arc<WalkDomain>,
     cells: Option<Arc<CellSet>>,
     shells: Shells,
     placement: Isometry,
@@ -208,32 +197,8 @@ impl RegularHoneycomb {
     pub fn new(symbol: Schlafli, style: HoneycombStyle) -> Result<RegularHoneycomb, GeomError> {
         style.validate()?;
         let simplex = CoxeterSimplex::new(symbol);
-        let n = simplex.normals();
         let v = simplex.vertices();
-        let reflections = [0, 1, 2, 3].map(|i| simplex.reflection(i));
-        let rad = std::f64::consts::PI / f64::from(symbol.r());
-        let too_many = GeomError::TooManyCells {
-            limit: super::MAX_TESSELLATION_CELLS,
-        };
-        let edge_cells = orbit(v[3], &reflections[2..]).ok_or(too_many.clone())?;
-        let vertex_cells = if simplex.ideal()[0] {
-            Vec::new()
-        } else {
-            orbit(v[3], &reflections[1..]).ok_or(too_many)?
-        };
-        let local = Local {
-            n,
-            k2: 1.0 / rad.sin(),
-            k3: rad.cos() / rad.sin(),
-            sinh2_edge: style.edges.map(|w| w.sinh() * w.sinh()),
-            vertex: match (style.vertices, simplex.ideal()[0]) {
-                (Some(r), false) => Some((v[0], r.cosh())),
-                _ => None,
-            },
-            edge_cells,
-            vertex_cells,
-            face_cells: [v[3], reflections[3] * v[3]],
-        };
+        let domain = WalkDomain::new(&simplex, &style)?;
         let cells = match style.depth {
             Some(depth) => Some(Arc::new(CellSet::build(&simplex, depth)?)),
             None => None,
@@ -254,7 +219,7 @@ impl RegularHoneycomb {
         Ok(RegularHoneycomb {
             symbol,
             style,
-            local: Arc::new(local),
+            domain: Arc::new(domain),
             cells,
             shells: Shells::new(&simplex),
             placement: Isometry::IDENTITY,
@@ -296,6 +261,26 @@ impl RegularHoneycomb {
         let v = CoxeterSimplex::new(self.symbol).vertices();
         let size = 2.0 * lorentz::distance(v[1], v[2]);
         (size / pixel_angle).asinh().clamp(f64::MIN_POSITIVE, 36.0)
+    }
+
+    /// The walls the walk reflects the ray in ([`WalkStep::wall`] indexes
+    /// them), inward unit normals in the honeycomb's frame before placement:
+    /// the faces of the base cell when the cells are finite, else the four
+    /// mirrors of the characteristic simplex ([`CoxeterSimplex::normals`]).
+    pub fn walls(&self) -> Vec<DVec4> {
+        self.domain.walls().to_vec()
+    }
+
+    /// The same honeycomb walked through the characteristic simplex even
+    /// when its cells are finite: the slower walk the cell walk is checked
+    /// against.
+    #[cfg(test)]
+    pub(super) fn walked_by_simplex(mut self) -> RegularHoneycomb {
+        let simplex = CoxeterSimplex::new(self.symbol);
+        if let Ok(domain) = WalkDomain::simplex(&simplex, &self.style) {
+            self.domain = Arc::new(domain);
+        }
+        self
     }
 
     /// The Schläfli symbol.
@@ -382,11 +367,7 @@ impl RegularHoneycomb {
                 vertices: None,
                 ..self.style
             },
-            local: Arc::new(Local {
-                sinh2_edge: None,
-                vertex: None,
-                ..(*self.local).clone()
-            }),
+            domain: Arc::new(self.domain.bare()),
             ..self.clone()
         };
         let mut steps = Vec::new();
@@ -434,7 +415,9 @@ impl RegularHoneycomb {
         mut trace: Option<(&mut Vec<WalkStep>, usize)>,
     ) -> Option<Hit> {
         let (lo, hi) = self.window(ray, t_min, t_max)?;
-        let l = &*self.local;
+        let domain = &*self.domain;
+        let walls = domain.walls();
+        let nw = walls.len();
         let (ch, sh) = (lo.cosh(), lo.sinh());
         let mut o = self.to_local * (ch * ray.origin + sh * ray.dir);
         // A ray that starts on a part far from the base point (a shadow or
@@ -446,8 +429,10 @@ impl RegularHoneycomb {
         renormalise(&mut o, &mut d);
         let mut m = DMat4::IDENTITY;
         loop {
-            let (i, a) = (0..4)
-                .map(|i| (i, lorentz::dot(o, l.n[i])))
+            let (i, a) = walls
+                .iter()
+                .map(|n| lorentz::dot(o, *n))
+                .enumerate()
                 .fold((0, f64::INFINITY), |b, x| if x.1 < b.1 { x } else { b });
             if a >= 0.0 {
                 break;
@@ -456,71 +441,73 @@ impl RegularHoneycomb {
                 return None;
             }
             stats.folds += 1;
-            o = reflect(o, l.n[i]);
-            d = reflect(d, l.n[i]);
-            m = times_reflection(&m, l.n[i]);
+            o = reflect(o, walls[i]);
+            d = reflect(d, walls[i]);
+            m = times_reflection(&m, walls[i]);
         }
         // Arc lengths are kept as v = e^{2τ} (a product along the walk),
         // which the exits give without a logarithm: e^{2 atanh s} =
         // (1+s)/(1-s). Only a hit takes the one logarithm.
         let mut u_acc = 1.0;
         let v_span = (2.0 * (hi - lo)).exp();
-        // A shadow ray of an unlimited honeycomb needs no chamber matrix.
+        // A shadow ray of an unlimited honeycomb needs no domain matrix.
         let need_m = !any || self.cells.is_some();
-        let mut last = 4;
+        let present = |cells: &[DVec4], m: &DMat4| self.present(cells, m);
+        let mut last = usize::MAX;
+        let mut a = [0.0; MAX_WALLS];
+        let mut b = [0.0; MAX_WALLS];
         stats.cells = 1;
-        while stats.chambers < MAX_WALK_STEPS {
-            stats.chambers += 1;
-            let a = l.n.map(|n| lorentz::dot(o, n));
-            let b = l.n.map(|n| lorentz::dot(d, n));
-            let mut exit = 4;
-            let mut s_min = 1.0;
-            for i in 0..4 {
-                if i != last && b[i] < 0.0 {
-                    // Rounding can leave the start a hair behind a wall
-                    // (a_i ~ -1e-17): that exit is immediate.
-                    let s = (-a[i] / b[i]).max(0.0);
-                    if s < s_min {
-                        s_min = s;
-                        exit = i;
-                    }
+        while stats.steps < MAX_WALK_STEPS {
+            stats.steps += 1;
+            // The exit is the wall with the least s = -a/b over b < 0,
+            // compared as fractions num/den: one division per step.
+            let (mut num, mut den) = (1.0, 1.0);
+            let mut exit = None;
+            domain.products(o, d, &mut a, &mut b);
+            for i in 0..nw {
+                // Rounding can leave the start a hair behind a wall
+                // (a_i ~ -1e-17): that exit is immediate.
+                if i != last && b[i] < 0.0 && a[i].max(0.0) * den < -b[i] * num {
+                    (num, den) = (a[i].max(0.0), -b[i]);
+                    exit = Some(i);
                 }
             }
+            let s_min = num / den;
             let span = v_span / u_acc;
-            let v_exit = if exit < 4 {
-                (1.0 + s_min) / (1.0 - s_min)
-            } else {
-                f64::INFINITY
+            let v_exit = match exit {
+                Some(_) => (1.0 + s_min) / (1.0 - s_min),
+                None => f64::INFINITY,
             };
-            let chamber = Chamber {
+            let here = DomainRay {
                 o,
                 d,
-                a,
-                b,
+                a: &a[..nw],
+                b: &b[..nw],
                 exit,
+                s_exit: s_min,
                 v_exit,
-                m: &m,
-                shadow: any,
             };
             let floor = (v_guard / u_acc).max(1.0);
-            if let Some((v, kind)) = self.first_part(&chamber, floor, v_exit.min(span)) {
+            if let Some((v, part)) =
+                domain.first_part(&here, floor, v_exit.min(span), |c| present(c, &m))
+            {
                 let t = lo + 0.5 * (u_acc * v).ln();
-                return Some(self.hit(ray, t, &chamber, v, kind));
+                return Some(self.hit(ray, t, &here, v, &m, part, any));
             }
-            if v_exit >= span {
+            let Some(exit) = exit.filter(|_| v_exit < span) else {
                 return None;
-            }
+            };
             // The exit point and tangent, both scaled by cosh τ: the walk
             // keeps o and d with a common scale λ (`<o,o> = -λ²`), which
             // the exit ratios ignore and the part tests divide out, and
             // restores λ = 1 every few steps.
-            let n = l.n[exit];
+            let n = walls[exit];
             let mut o2 = o + s_min * d;
             // The exit point lies on the wall: put it there exactly.
             o2 -= lorentz::dot(o2, n) * n;
             d = reflect(s_min * o + d, n);
             o = o2;
-            if stats.chambers.is_multiple_of(RENORMALISE_EVERY) {
+            if stats.steps.is_multiple_of(RENORMALISE_EVERY) {
                 renormalise(&mut o, &mut d);
             }
             if need_m {
@@ -528,7 +515,8 @@ impl RegularHoneycomb {
             }
             u_acc *= v_exit;
             last = exit;
-            if exit == 3 {
+            let face = domain.is_face(exit);
+            if face {
                 stats.cells += 1;
             }
             if let Some((steps, max)) = trace.as_mut() {
@@ -539,6 +527,7 @@ impl RegularHoneycomb {
                 renormalise(&mut o, &mut d);
                 steps.push(WalkStep {
                     wall: exit,
+                    face,
                     t: lo + 0.5 * u_acc.ln(),
                     origin: o,
                     dir: d,
@@ -549,60 +538,6 @@ impl RegularHoneycomb {
         None
     }
 
-    /// The first part in this chamber met at `floor < v <= window`, in
-    /// `v = e^{2τ}`, with its class (0 for a shadow ray, which needs none).
-    fn first_part(
-        &self,
-        c: &Chamber,
-        floor: f64,
-        window: f64,
-    ) -> Option<(f64, (HoneycombPart, u32))> {
-        let l = &*self.local;
-        let (a, b) = (&c.a, &c.b);
-        let mut found: Option<(f64, HoneycombPart)> = None;
-        let in_window = |v: f64, found: &Option<(f64, HoneycombPart)>| {
-            v > floor && v <= window && found.is_none_or(|(best, _)| v < best)
-        };
-        let first_root = |(near, far): (f64, f64)| if near > floor { near } else { far };
-        // o and d carry a common scale λ, λ² = -<o,o>: the tube's
-        // quadratic is homogeneous of degree 2 in (o, d, sinh w), the ball's
-        // of degree 1 in (o, d, cosh ρ), and their roots do not change.
-        let lambda2 = -lorentz::dot(c.o, c.o);
-        if let Some(sinh2) = l.sinh2_edge {
-            let o = [a[3], l.k2 * a[2] + l.k3 * a[3]];
-            let v = [b[3], l.k2 * b[2] + l.k3 * b[3]];
-            if let Some(v) = tube_roots(o, v, sinh2 * lambda2).map(first_root)
-                && in_window(v, &found)
-                && self.present(&l.edge_cells, c.m)
-            {
-                found = Some((v, HoneycombPart::Edge));
-            }
-        }
-        if let Some((v0, cosh_r)) = l.vertex {
-            // -<X(τ),v0> = α cosh τ + β sinh τ = cosh ρ, in u = e^τ.
-            let alpha = -lorentz::dot(c.o, v0);
-            let beta = -lorentz::dot(c.d, v0);
-            let k = cosh_r * lambda2.sqrt();
-            if let Some((near, far)) = exp_roots_plain(alpha + beta, k, alpha - beta)
-                && let v = first_root((near * near, far * far))
-                && in_window(v, &found)
-                && self.present(&l.vertex_cells, c.m)
-            {
-                found = Some((v, HoneycombPart::Vertex));
-            }
-        }
-        if self.style.faces
-            && c.exit == 3
-            && in_window(c.v_exit, &found)
-            && self.present(&l.face_cells, c.m)
-        {
-            found = Some((c.v_exit, HoneycombPart::Face));
-        }
-        let (v, kind) = found?;
-        let class = if c.shadow { 0 } else { self.class(kind, c.m) };
-        Some((v, (kind, class)))
-    }
-
     /// True if one of the cells (local centres mapped by `m`) is drawn.
     fn present(&self, cells: &[DVec4], m: &DMat4) -> bool {
         match &self.cells {
@@ -611,19 +546,13 @@ impl RegularHoneycomb {
         }
     }
 
-    /// The class of a part: the least rank of its drawn cells, modulo the
-    /// number of classes.
-    fn class(&self, kind: HoneycombPart, m: &DMat4) -> u32 {
+    /// The class of a part with these cells: the least rank of its drawn
+    /// cells, modulo the number of classes.
+    fn class(&self, cells: &[DVec4], m: &DMat4) -> u32 {
         let k = self.style.cell_classes;
         if k <= 1 {
             return 0;
         }
-        let l = &*self.local;
-        let cells: &[DVec4] = match kind {
-            HoneycombPart::Edge => &l.edge_cells,
-            HoneycombPart::Vertex => &l.vertex_cells,
-            HoneycombPart::Face => &l.face_cells,
-        };
         let rank = cells
             .iter()
             .filter_map(|c| {
@@ -639,54 +568,43 @@ impl RegularHoneycomb {
         rank.rem_euclid(i64::from(k)) as u32
     }
 
-    fn hit(&self, ray: &Ray, t: f64, c: &Chamber, v: f64, kind: (HoneycombPart, u32)) -> Hit {
-        let l = &*self.local;
+    /// The hit on `part` at `v = e^{2τ}` from the start of the domain ray
+    /// `c` (`t` along the original ray); a shadow ray's class is 0.
+    #[allow(clippy::too_many_arguments)]
+    fn hit(
+        &self,
+        ray: &Ray,
+        t: f64,
+        c: &DomainRay,
+        v: f64,
+        m: &DMat4,
+        part: DomainPart,
+        shadow: bool,
+    ) -> Hit {
         let (mut o, mut d) = (c.o, c.d);
         renormalise(&mut o, &mut d);
         // e^τ = sqrt v.
         let e = v.sqrt();
         let x = (0.5 * (e + 1.0 / e)) * o + (0.5 * (e - 1.0 / e)) * d;
-        let local_normal = match kind.0 {
-            // Two-sided: the normal faces the side the ray comes from.
-            HoneycombPart::Face => l.n[3],
-            HoneycombPart::Edge => {
-                let n2 = l.k2 * l.n[2] + l.k3 * l.n[3];
-                let g = lorentz::dot(x, l.n[3]) * l.n[3] + lorentz::dot(x, n2) * n2;
-                g + lorentz::dot(g, x) * x
-            }
-            HoneycombPart::Vertex => match l.vertex {
-                Some((v0, _)) => -(v0 + lorentz::dot(v0, x) * x),
-                None => l.n[3],
-            },
-        };
+        let local_normal = self.domain.local_normal(part, x);
         let point = ray.at(t);
-        let mut normal = self.to_world * (*c.m * local_normal);
+        let mut normal = self.to_world * (*m * local_normal);
         normal += lorentz::dot(normal, point) * point;
         let len = lorentz::norm(normal);
         if len > 0.0 && len.is_finite() {
             normal /= len;
         }
+        let class = if shadow {
+            0
+        } else {
+            self.class(self.domain.cells_of(part), m)
+        };
         Hit {
             t,
             point,
             normal,
             shading: normal,
-            part: encode_part(kind.0, kind.1),
+            part: encode_part(part.kind(), class),
         }
     }
-}
-
-/// The ray in one chamber: its start and direction in the base simplex,
-/// their products with the walls, where it leaves, and the product of
-/// reflections that maps the simplex to the chamber.
-struct Chamber<'a> {
-    o: DVec4,
-    d: DVec4,
-    a: [f64; 4],
-    b: [f64; 4],
-    exit: usize,
-    /// `e^{2τ}` at the exit.
-    v_exit: f64,
-    m: &'a DMat4,
-    shadow: bool,
 }
