@@ -385,7 +385,7 @@ impl WalkDomain {
         let lambda2 = -lorentz::dot(ray.o, ray.o);
         if let Some(sinh2) = self.sinh2_edge {
             let k = sinh2 * lambda2;
-            let near = self.walls_within(ray, k.sqrt());
+            let near = self.walls_within(ray, k);
             for (i, e) in self.edges.iter().enumerate() {
                 if near & e.walls != e.walls {
                     continue;
@@ -403,7 +403,8 @@ impl WalkDomain {
         if !self.vertices.is_empty() {
             let lambda = lambda2.sqrt();
             let k = self.cosh_vertex * lambda;
-            let near = self.walls_within(ray, self.sinh_vertex * lambda);
+            let sigma = self.sinh_vertex * lambda;
+            let near = self.walls_within(ray, sigma * sigma);
             for (i, vertex) in self.vertices.iter().enumerate() {
                 if near & vertex.walls != vertex.walls {
                     continue;
@@ -431,20 +432,22 @@ impl WalkDomain {
         found
     }
 
-    /// The walls the ray comes within `sigma` of (`λ sinh` of a distance)
-    /// inside the domain, as bits: a necessary condition for meeting a part
-    /// on a wall (the part's points are at most its radius from every wall
-    /// through it). In the domain `<X(τ),n> = cosh τ (a + b tanh τ) >= 0`,
-    /// so `<X(τ),n> <= sigma` needs `a + b tanh τ <= sigma` somewhere on
-    /// `0 <= tanh τ <= s_exit`, where that linear function is least at an
-    /// end. The margin covers the rounding of `a` and `b` (ulps of `o.w`,
-    /// which is at least `λ`).
-    fn walls_within(&self, ray: &DomainRay, sigma: f64) -> u32 {
-        let lambda = ray.o.w.abs();
-        let limit = sigma + 1e-12 * lambda;
+    /// The walls the ray comes within `σ` of (`λ sinh` of a distance)
+    /// inside the domain, as bits, given `σ²`: a necessary condition for
+    /// meeting a part on a wall (the part's points are at most its radius
+    /// from every wall through it). In the domain
+    /// `<X(τ),n> = cosh τ (a + b tanh τ) >= 0`, so `<X(τ),n> <= σ` needs
+    /// `a + b tanh τ <= σ` somewhere on `0 <= tanh τ <= s_exit`, where that
+    /// linear function is least at an end. Squared, with `ε` the rounding
+    /// of `a` and `b` (ulps of `o.w`, which is at least `λ`):
+    /// `(σ + ε)² <= 2σ² + 2ε²`, a looser test that needs no square root.
+    fn walls_within(&self, ray: &DomainRay, sigma2: f64) -> u32 {
+        let eps = 1e-12 * ray.o.w.abs();
+        let limit2 = 2.0 * (sigma2 + eps * eps);
         let mut bits = 0;
         for (i, (a, b)) in ray.a.iter().zip(ray.b).enumerate() {
-            if a.min(a + b * ray.s_exit) <= limit {
+            let m = a.min(a + b * ray.s_exit);
+            if m <= 0.0 || m * m <= limit2 {
                 bits |= 1 << i;
             }
         }

@@ -90,7 +90,7 @@ use crate::isometry::Isometry;
 use crate::lorentz;
 use crate::point::Point;
 use crate::ray::{Hit, Ray};
-use crate::roots::exp_roots;
+use crate::roots::exp_roots_lazy;
 
 use super::cells::{CellSet, Shells};
 use super::domain::{DomainPart, DomainRay, MAX_WALLS, WalkDomain};
@@ -384,18 +384,19 @@ impl RegularHoneycomb {
 
     /// The arc lengths of the original ray inside the horizon and (with a
     /// depth) the ball that holds every listed cell, clipped to
-    /// `(t_min, t_max)`.
+    /// `(t_min, t_max)`, as `(e^lo, e^hi)`: the walk needs no logarithm
+    /// of them.
     fn window(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<(f64, f64)> {
-        let mut lo = t_min.max(0.0);
-        let mut hi = t_max;
+        let mut lo = if t_min > 0.0 { t_min.exp() } else { 1.0 };
+        let mut hi = t_max.exp();
         // -<X(t),C> = a cosh t + b sinh t = k is (a+b) u² - 2k u + (a-b) = 0
         // in u = e^t; a ± b > 0 for a future C (<O ± D, C> of null vectors).
         let mut clip = |c: DVec4, k: f64| {
             let a = -lorentz::dot(ray.origin, c);
             let b = -lorentz::dot(ray.dir, c);
-            let (t_in, t_out) = exp_roots(a + b, k, a - b)?;
-            lo = lo.max(t_in);
-            hi = hi.min(t_out);
+            let (u_in, u_out) = exp_roots_lazy(a + b, k, a - b)?.exp();
+            lo = lo.max(u_in);
+            hi = hi.min(u_out);
             Some(())
         };
         clip(DVec4::W, self.cosh_horizon)?;
@@ -414,11 +415,11 @@ impl RegularHoneycomb {
         stats: &mut WalkStats,
         mut trace: Option<(&mut Vec<WalkStep>, usize)>,
     ) -> Option<Hit> {
-        let (lo, hi) = self.window(ray, t_min, t_max)?;
+        let (u_lo, u_hi) = self.window(ray, t_min, t_max)?;
         let domain = &*self.domain;
         let walls = domain.walls();
         let nw = walls.len();
-        let (ch, sh) = (lo.cosh(), lo.sinh());
+        let (ch, sh) = (0.5 * (u_lo + 1.0 / u_lo), 0.5 * (u_lo - 1.0 / u_lo));
         let mut o = self.to_local * (ch * ray.origin + sh * ray.dir);
         // A ray that starts on a part far from the base point (a shadow or
         // reflected ray from a far hit) would meet that part again within
@@ -449,7 +450,9 @@ impl RegularHoneycomb {
         // which the exits give without a logarithm: e^{2 atanh s} =
         // (1+s)/(1-s). Only a hit takes the one logarithm.
         let mut u_acc = 1.0;
-        let v_span = (2.0 * (hi - lo)).exp();
+        let v_span = (u_hi / u_lo) * (u_hi / u_lo);
+        // The arc length at v (from the start of the window): e^{2t} = u_lo² v.
+        let arc = |v: f64| 0.5 * (u_lo * u_lo * v).ln();
         // A shadow ray of an unlimited honeycomb needs no domain matrix.
         let need_m = !any || self.cells.is_some();
         let present = |cells: &[DVec4], m: &DMat4| self.present(cells, m);
@@ -491,7 +494,7 @@ impl RegularHoneycomb {
             if let Some((v, part)) =
                 domain.first_part(&here, floor, v_exit.min(span), |c| present(c, &m))
             {
-                let t = lo + 0.5 * (u_acc * v).ln();
+                let t = arc(u_acc * v);
                 return Some(self.hit(ray, t, &here, v, &m, part, any));
             }
             let Some(exit) = exit.filter(|_| v_exit < span) else {
@@ -528,7 +531,7 @@ impl RegularHoneycomb {
                 steps.push(WalkStep {
                     wall: exit,
                     face,
-                    t: lo + 0.5 * u_acc.ln(),
+                    t: arc(u_acc),
                     origin: o,
                     dir: d,
                     chamber: m,
