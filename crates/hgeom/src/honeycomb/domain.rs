@@ -77,8 +77,6 @@ impl DomainPart {
 struct DomainEdge {
     f: usize,
     g: usize,
-    /// The bits of `f` and `g`.
-    walls: u32,
     alpha: f64,
     beta: f64,
     cells: Vec<DVec4>,
@@ -92,7 +90,6 @@ impl DomainEdge {
         DomainEdge {
             f,
             g,
-            walls: (1 << f) | (1 << g),
             alpha: -c / s,
             beta: 1.0 / s,
             cells,
@@ -195,6 +192,9 @@ pub(super) struct WalkDomain {
     products: WallProducts,
     face_cells: Vec<Option<[DVec4; 2]>>,
     edges: Vec<DomainEdge>,
+    /// `edge_between[f * walls + g]`: the edge on walls `f` and `g`, or
+    /// [`NO_EDGE`].
+    edge_between: Vec<u8>,
     vertices: Vec<DomainVertex>,
     /// `sinh²` of the edge radius; `None`: no edges drawn.
     sinh2_edge: Option<f64>,
@@ -245,6 +245,7 @@ impl WalkDomain {
             walls,
             products,
             face_cells: vec![None, None, None, Some([v[3], refl[3] * v[3]])],
+            edge_between: edge_table(4, std::slice::from_ref(&edge)),
             edges: vec![edge],
             vertices,
             sinh2_edge: style.edges.map(|w| w.sinh() * w.sinh()),
@@ -274,7 +275,7 @@ impl WalkDomain {
         // it; g maps it to each edge of the cell.
         let across = refl[2] * n[3];
         let edge_cells = orbit(v[3], &refl[2..]).ok_or_else(too_many)?;
-        let edges = orbit_maps(v[1], cell_group)
+        let edges: Vec<DomainEdge> = orbit_maps(v[1], cell_group)
             .ok_or_else(too_many)?
             .into_iter()
             .map(|(_, g)| {
@@ -296,6 +297,7 @@ impl WalkDomain {
             }
             _ => Vec::new(),
         };
+        let edge_between = edge_table(walls.len(), &edges);
         let face_cells = walls
             .iter()
             .map(|nf| Some([v[3], reflection_matrix(*nf) * v[3]]))
@@ -304,6 +306,7 @@ impl WalkDomain {
             walls,
             products,
             face_cells,
+            edge_between,
             edges,
             vertices,
             sinh2_edge: style.edges.map(|w| w.sinh() * w.sinh()),
@@ -386,17 +389,29 @@ impl WalkDomain {
         if let Some(sinh2) = self.sinh2_edge {
             let k = sinh2 * lambda2;
             let near = self.walls_within(ray, k);
-            for (i, e) in self.edges.iter().enumerate() {
-                if near & e.walls != e.walls {
-                    continue;
-                }
-                let o = [a[e.f], e.alpha * a[e.f] + e.beta * a[e.g]];
-                let v = [b[e.f], e.alpha * b[e.f] + e.beta * b[e.g]];
-                if let Some(v) = tube_roots(o, v, k).map(first_root)
-                    && in_window(v, &found)
-                    && present(&e.cells)
-                {
-                    found = Some((v, DomainPart::Edge(i)));
+            // Few walls are near (the entry and the exit, mostly): test the
+            // edges on pairs of them.
+            let nw = self.walls.len();
+            let mut rest = near;
+            while rest != 0 {
+                let f = rest.trailing_zeros() as usize;
+                rest &= rest - 1;
+                let mut others = rest;
+                while others != 0 {
+                    let g = others.trailing_zeros() as usize;
+                    others &= others - 1;
+                    let i = usize::from(self.edge_between[f * nw + g]);
+                    let Some(e) = self.edges.get(i) else {
+                        continue;
+                    };
+                    let o = [a[e.f], e.alpha * a[e.f] + e.beta * a[e.g]];
+                    let v = [b[e.f], e.alpha * b[e.f] + e.beta * b[e.g]];
+                    if let Some(v) = tube_roots(o, v, k).map(first_root)
+                        && in_window(v, &found)
+                        && present(&e.cells)
+                    {
+                        found = Some((v, DomainPart::Edge(i)));
+                    }
                 }
             }
         }
@@ -444,12 +459,12 @@ impl WalkDomain {
     fn walls_within(&self, ray: &DomainRay, sigma2: f64) -> u32 {
         let eps = 1e-12 * ray.o.w.abs();
         let limit2 = 2.0 * (sigma2 + eps * eps);
+        let (a, b) = (ray.a, ray.b);
+        let n = a.len().min(b.len());
         let mut bits = 0;
-        for (i, (a, b)) in ray.a.iter().zip(ray.b).enumerate() {
-            let m = a.min(a + b * ray.s_exit);
-            if m <= 0.0 || m * m <= limit2 {
-                bits |= 1 << i;
-            }
+        for i in 0..n {
+            let m = a[i].min(a[i] + b[i] * ray.s_exit);
+            bits |= u32::from(m <= 0.0 || m * m <= limit2) << i;
         }
         bits
     }
@@ -482,6 +497,21 @@ impl WalkDomain {
             }
         }
     }
+}
+
+/// No edge between two walls.
+const NO_EDGE: u8 = u8::MAX;
+
+/// The [`WalkDomain::edge_between`] table of these edges.
+fn edge_table(walls: usize, edges: &[DomainEdge]) -> Vec<u8> {
+    let mut table = vec![NO_EDGE; walls * walls];
+    for (i, e) in edges.iter().enumerate() {
+        // At most 30 edges: the index fits a u8 below NO_EDGE.
+        let i = i as u8;
+        table[e.f * walls + e.g] = i;
+        table[e.g * walls + e.f] = i;
+    }
+    table
 }
 
 fn too_many() -> GeomError {

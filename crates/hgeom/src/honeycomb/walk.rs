@@ -453,8 +453,13 @@ impl RegularHoneycomb {
         let v_span = (u_hi / u_lo) * (u_hi / u_lo);
         // The arc length at v (from the start of the window): e^{2t} = u_lo² v.
         let arc = |v: f64| 0.5 * (u_lo * u_lo * v).ln();
-        // A shadow ray of an unlimited honeycomb needs no domain matrix.
-        let need_m = !any || self.cells.is_some();
+        // The domain matrix: a depth-limited honeycomb asks at every step
+        // which cells are drawn; otherwise only a primary hit needs it (for
+        // its normal and class), so the walls crossed are kept and folded
+        // into `m` in batches or at the hit, and a miss or a shadow ray of
+        // an unlimited honeycomb never builds it.
+        let eager_m = self.cells.is_some();
+        let mut pending = Pending::default();
         let present = |cells: &[DVec4], m: &DMat4| self.present(cells, m);
         let mut last = usize::MAX;
         let mut a = [0.0; MAX_WALLS];
@@ -495,6 +500,7 @@ impl RegularHoneycomb {
                 domain.first_part(&here, floor, v_exit.min(span), |c| present(c, &m))
             {
                 let t = arc(u_acc * v);
+                pending.fold_into(&mut m, walls);
                 return Some(self.hit(ray, t, &here, v, &m, part, any));
             }
             let Some(exit) = exit.filter(|_| v_exit < span) else {
@@ -513,8 +519,10 @@ impl RegularHoneycomb {
             if stats.steps.is_multiple_of(RENORMALISE_EVERY) {
                 renormalise(&mut o, &mut d);
             }
-            if need_m {
+            if eager_m {
                 m = times_reflection(&m, n);
+            } else if !any {
+                pending.push(exit, &mut m, walls);
             }
             u_acc *= v_exit;
             last = exit;
@@ -526,6 +534,7 @@ impl RegularHoneycomb {
                 if steps.len() >= *max {
                     return None;
                 }
+                pending.fold_into(&mut m, walls);
                 let (mut o, mut d) = (o, d);
                 renormalise(&mut o, &mut d);
                 steps.push(WalkStep {
@@ -609,5 +618,33 @@ impl RegularHoneycomb {
             shading: normal,
             part: encode_part(part.kind(), class),
         }
+    }
+}
+
+/// Walls crossed but not yet folded into the domain matrix.
+#[derive(Default)]
+struct Pending {
+    walls: [u8; Pending::CAPACITY],
+    len: usize,
+}
+
+impl Pending {
+    const CAPACITY: usize = 16;
+
+    fn push(&mut self, wall: usize, m: &mut DMat4, walls: &[DVec4]) {
+        if self.len == Self::CAPACITY {
+            self.fold_into(m, walls);
+        }
+        // Walls number at most MAX_WALLS (20): a u8 holds the index.
+        self.walls[self.len] = wall as u8;
+        self.len += 1;
+    }
+
+    /// `m` times the pending reflections, in the order crossed.
+    fn fold_into(&mut self, m: &mut DMat4, walls: &[DVec4]) {
+        for &w in &self.walls[..self.len] {
+            *m = times_reflection(m, walls[usize::from(w)]);
+        }
+        self.len = 0;
     }
 }
