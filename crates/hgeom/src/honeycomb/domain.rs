@@ -462,9 +462,13 @@ impl WalkDomain {
         let (a, b) = (ray.a, ray.b);
         let n = a.len().min(b.len());
         let mut bits = 0;
-        for i in 0..n {
-            let m = a[i].min(a[i] + b[i] * ray.s_exit);
-            bits |= u32::from(m <= 0.0 || m * m <= limit2) << i;
+        for i in (0..n).rev() {
+            // m <= 0 or m² <= limit², in one comparison (a plain `<`
+            // rather than `f64::min`, whose NaN rule costs a third of the
+            // loop; a NaN product fails the comparison either way).
+            let end = a[i] + b[i] * ray.s_exit;
+            let m = if end < a[i] { end } else { a[i] };
+            bits = (bits << 1) | u32::from(m * m.abs() <= limit2);
         }
         bits
     }

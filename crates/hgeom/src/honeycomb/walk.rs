@@ -475,8 +475,9 @@ impl RegularHoneycomb {
             for i in 0..nw {
                 // Rounding can leave the start a hair behind a wall
                 // (a_i ~ -1e-17): that exit is immediate.
-                if i != last && b[i] < 0.0 && a[i].max(0.0) * den < -b[i] * num {
-                    (num, den) = (a[i].max(0.0), -b[i]);
+                let ahead = if a[i] > 0.0 { a[i] } else { 0.0 };
+                if i != last && b[i] < 0.0 && ahead * den < -b[i] * num {
+                    (num, den) = (ahead, -b[i]);
                     exit = Some(i);
                 }
             }
