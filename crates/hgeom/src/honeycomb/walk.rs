@@ -1,8 +1,16 @@
 //! [`RegularHoneycomb`]: a regular honeycomb `{p,q,r}` traced by walking
-//! the ray through the characteristic simplex.
+//! the ray from cell to cell, or through the characteristic simplex.
+//!
+//! **The domain.** The walk steps through copies of one domain `C`, the
+//! intersection of the half-spaces of its walls: the base cell, whose walls
+//! are its faces, when the cells are finite; the characteristic simplex,
+//! whose walls are the four mirrors, when they are horosphere-inscribed
+//! (`domain.rs`). What follows is written for the simplex, whose parts the
+//! cell's are made of; the cell walk is the same with `F` walls, every one
+//! a face, and all the cell's edges and vertices as parts.
 //!
 //! **The walk.** The ray is moved into the honeycomb's frame and its start
-//! folded into the simplex `C = {X : <X,n_i> >= 0}` (reflect in a wall it
+//! folded into the domain `C = {X : <X,n_i> >= 0}` (reflect in a wall it
 //! is behind until it is behind none: each reflection brings the point
 //! strictly closer to `C`). Inside `C`, along `X(τ) = cosh τ O + sinh τ D`,
 //! `<X(τ),n_i> = a_i cosh τ + b_i sinh τ` with `a_i = <O,n_i> >= 0`,
