@@ -15,7 +15,6 @@
 
 mod build;
 
-use hgeom::glam::DVec3;
 use hgeom::{Hit, KleinRay, Ray};
 
 pub use build::Leaf;
@@ -45,19 +44,58 @@ struct PairNode {
 
 const ABSENT: u32 = u32::MAX;
 
+/// A chord set up for slab tests: per axis, its start, `1/V`, and which
+/// corner of a box it meets first (the least when `V >= 0`).
+#[derive(Clone, Copy, Debug)]
+struct Slabs {
+    origin: [f64; 3],
+    inv_dir: [f64; 3],
+    negative: [bool; 3],
+}
+
+impl Slabs {
+    fn new(chord: &KleinRay) -> Slabs {
+        let (o, inv) = (chord.origin(), chord.inv_dir());
+        Slabs {
+            origin: o.to_array(),
+            inv_dir: inv.to_array(),
+            negative: [inv.x < 0.0, inv.y < 0.0, inv.z < 0.0],
+        }
+    }
+}
+
 impl PairNode {
     /// Where the chord enters each child's box within `[lo, hi]`, if it
-    /// does. The boxes in `f64` are exact (every `f32` is an `f64`).
+    /// does: [`KleinRay::slab_entry`] for both children in two lanes, with
+    /// the near and far corner of each axis chosen once per ray by the
+    /// sign of `1/V` instead of a `min` and a `max` per axis (the same
+    /// products and comparisons, so the same answer). The boxes in `f64`
+    /// are exact (every `f32` is an `f64`).
     #[inline(always)]
-    fn entries(&self, chord: &KleinRay, lo: f64, hi: f64) -> [Option<f64>; 2] {
-        [0, 1].map(|k| {
-            let corner =
-                |c: &[[f32; 2]; 3]| DVec3::new(c[0][k].into(), c[1][k].into(), c[2][k].into());
-            if self.child[k] == ABSENT {
-                return None;
+    fn entries(&self, s: &Slabs, lo: f64, hi: f64) -> [Option<f64>; 2] {
+        #[inline(always)]
+        fn min(a: f64, b: f64) -> f64 {
+            if a < b { a } else { b }
+        }
+        #[inline(always)]
+        fn max(a: f64, b: f64) -> f64 {
+            if a > b { a } else { b }
+        }
+        let mut enter = [lo; 2];
+        let mut leave = [hi; 2];
+        for axis in 0..3 {
+            let (near, far) = if s.negative[axis] {
+                (&self.hi[axis], &self.lo[axis])
+            } else {
+                (&self.lo[axis], &self.hi[axis])
+            };
+            let (o, inv) = (s.origin[axis], s.inv_dir[axis]);
+            for k in 0..2 {
+                enter[k] = max(enter[k], (f64::from(near[k]) - o) * inv);
+                leave[k] = min(leave[k], (f64::from(far[k]) - o) * inv);
             }
-            chord.slab_entry(corner(&self.lo), corner(&self.hi), lo, hi)
-        })
+        }
+        [0, 1].map(|k| (self.child[k] != ABSENT && enter[k] <= leave[k]).then_some(enter[k]))
     }
 
     /// The items of child `k`, if it is a leaf.
@@ -147,6 +185,7 @@ impl Accel {
             return best;
         }
         let (lo, mut hi) = chord.arc(t_min, limit);
+        let slabs = Slabs::new(&chord);
         let mut stack = [(0u32, 0f64); MAX_DEPTH + 1];
         stack[0] = (0, lo);
         let mut top = 1usize;
@@ -158,7 +197,7 @@ impl Accel {
                 continue;
             }
             let node = &self.nodes[n as usize];
-            let [e0, e1] = node.entries(&chord, lo, hi);
+            let [e0, e1] = node.entries(&slabs, lo, hi);
             // Children in the order the chord enters them.
             let order = match (e0, e1) {
                 (Some(a), Some(b)) if b < a => [(1, b), (0, a)],
@@ -224,13 +263,14 @@ impl Accel {
             return;
         }
         let (lo, hi) = chord.arc(t_min, t_max);
+        let slabs = Slabs::new(&chord);
         let mut stack = [0u32; MAX_DEPTH + 1];
         let mut top = 1usize;
         let mut last = u32::MAX;
         while top > 0 {
             top -= 1;
             let node = &self.nodes[stack[top] as usize];
-            let entries = node.entries(&chord, lo, hi);
+            let entries = node.entries(&slabs, lo, hi);
             for (k, entry) in entries.iter().enumerate() {
                 if entry.is_none() {
                     continue;
