@@ -348,6 +348,7 @@ fn pair_up(binary: &[build::Node]) -> Vec<PairNode> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use hgeom::glam::DVec3;
     use hgeom::{HSphere, Point, Shape};
 
     /// Random small spheres: the hierarchy's nearest hit equals the
