@@ -512,9 +512,7 @@ impl RegularHoneycomb {
                 pending.fold_into(&mut m, walls);
                 return Some(self.hit(ray, t, &here, v, &m, part, any));
             }
-            let Some(exit) = exit.filter(|_| v_exit < span) else {
-                return None;
-            };
+            let exit = exit.filter(|_| v_exit < span)?;
             // The exit point and tangent, both scaled by cosh τ: the walk
             // keeps o and d with a common scale λ (`<o,o> = -λ²`), which
             // the exit ratios ignore and the part tests divide out, and
