@@ -19,11 +19,12 @@ use crate::rod::Rod;
 /// origin, so the pad is this factor times `1 + max w^2` over the vertices.
 const FLAT_PAD: f64 = 1e-9;
 
-/// The longest a piece of a rod's bound may be, in rod radii.
-const ROD_PIECE_RADII: f64 = 16.0;
+/// The longest a piece of a rod's bound may be, in rod radii (for its
+/// Klein boxes: in Klein half-widths).
+pub(crate) const ROD_PIECE_RADII: f64 = 16.0;
 
 /// The most pieces a rod's bound is cut into.
-const ROD_MAX_PIECES: f64 = 8.0;
+pub(crate) const ROD_MAX_PIECES: f64 = 8.0;
 
 /// A closed h-ball `{X : d(X, C) <= r}`, with its centre on the hyperboloid.
 ///

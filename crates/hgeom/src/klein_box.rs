@@ -38,6 +38,18 @@
 //! κ^2 sinh^2 r / Δ`. The half-width along axis `i` is
 //! `sqrt(ρ (A^{-1})_{ii}) = sinh r sqrt(Δ - c_i^2) / Δ`. At the origin
 //! (`c = 0, c_w = 1`) this is `tanh r`, the Klein radius of the ball.
+//!
+//! **The tube.** A rod of radius `w` is the set of points within `w` of a
+//! segment. For `d(p, q) <= w`, `|k(q) - k(p)| <= w sqrt(1 - s^2)` with
+//! `s = max(0, |k(p)| - w)`: the Klein metric is
+//! `ds^2 = |dk|^2/(1 - |k|^2) + (k·dk)^2/(1 - |k|^2)^2 >= |dk|^2/(1 - |k|^2)`,
+//! so along the geodesic from `p` to `q` (a straight chord)
+//! `|dk| <= sqrt(1 - |k|^2) ds`; that gives first `|k - k(p)| <= w` on it,
+//! hence `|k| >= |k(p)| - w`, and then the bound. So the box of a piece of
+//! the segment's chord, widened by that bound at the piece's point nearest
+//! the Klein origin, holds the part of the rod within `w` of that piece:
+//! thin where the rod is, `w / cosh(r - w)` at distance `r`, where a ball's
+//! box stays a cube.
 
 use glam::{DVec3, DVec4};
 
@@ -137,6 +149,54 @@ impl KleinBox {
         KleinBox::new(lo - pad, hi + pad)
     }
 
+    /// Boxes whose union holds the rod of radius `w` about the segment
+    /// from `a` to `b` (hyperboloid points; module docs, "The tube"): the
+    /// chord cut into at most `max_pieces` equal pieces, fewer where a
+    /// piece would be shorter than `piece_widths` times the rod's Klein
+    /// width. Empty if an end is not finite.
+    pub fn around_tube(
+        a: DVec4,
+        b: DVec4,
+        w: f64,
+        piece_widths: f64,
+        max_pieces: u32,
+    ) -> Vec<KleinBox> {
+        let (ka, kb) = (a.truncate() / a.w, b.truncate() / b.w);
+        if !(ka.is_finite() && kb.is_finite() && w.is_finite() && w >= 0.0) {
+            return Vec::new();
+        }
+        // The Klein half-width of the rod about a piece whose nearest point
+        // to the origin is at `near`.
+        let width = |near: f64| {
+            let s = (near - w).max(0.0);
+            w * (1.0 - s * s).max(0.0).sqrt()
+        };
+        let length = (kb - ka).length();
+        let widest = width(nearest_to_origin(ka, kb));
+        let pieces = if widest > 0.0 {
+            (length / (piece_widths * widest))
+                .ceil()
+                .clamp(1.0, f64::from(max_pieces.max(1)))
+        } else {
+            1.0
+        };
+        // `pieces` is a whole number from 1 to max_pieces.
+        let n = pieces as u32;
+        (0..n)
+            .filter_map(|i| {
+                let p = ka + (kb - ka) * (f64::from(i) / pieces);
+                let q = if i + 1 == n {
+                    kb
+                } else {
+                    ka + (kb - ka) * (f64::from(i + 1) / pieces)
+                };
+                let e = DVec3::splat(width(nearest_to_origin(p, q)));
+                let pad = (e + p.abs().max(q.abs())) * 1e-12 + DVec3::splat(PAD);
+                KleinBox::new(p.min(q) - e - pad, p.max(q) + e + pad)
+            })
+            .collect()
+    }
+
     /// The smallest box containing both.
     pub fn union(&self, other: &KleinBox) -> KleinBox {
         KleinBox {
@@ -171,6 +231,18 @@ impl KleinBox {
         let k = x.truncate() / x.w;
         k.cmpge(self.lo).all() && k.cmple(self.hi).all()
     }
+}
+
+/// The distance from the origin to the segment from `p` to `q`.
+fn nearest_to_origin(p: DVec3, q: DVec3) -> f64 {
+    let d = q - p;
+    let dd = d.length_squared();
+    let t = if dd > 0.0 {
+        (-p.dot(d) / dd).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (p + d * t).length()
 }
 
 /// The box from `lo` to `hi` rounded outwards to `f32`, for compact
@@ -329,10 +401,74 @@ impl KleinRay {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::lorentz;
     use crate::point::Point;
 
     fn ball(c: DVec3, r: f64) -> BoundingBall {
         BoundingBall::new(Point::from_coords(c).unwrap().to_hyperboloid(), r).unwrap()
+    }
+
+    /// Every point within `w` of the segment lies in one of its tube boxes:
+    /// rods near the origin and far from it (Klein radius up to 0.9993),
+    /// thin and thick, short and long, sampled on their surface and inside,
+    /// end caps included; and a rod near the origin gets boxes far thinner
+    /// than the cube of a ball around it.
+    #[test]
+    fn tube_boxes_hold_the_rod() {
+        struct Rng(u64);
+        impl Rng {
+            fn unit(&mut self) -> f64 {
+                self.0 ^= self.0 << 13;
+                self.0 ^= self.0 >> 7;
+                self.0 ^= self.0 << 17;
+                (self.0 >> 11) as f64 / (1u64 << 53) as f64
+            }
+            fn dir(&mut self) -> DVec3 {
+                let v = DVec3::new(self.unit(), self.unit(), self.unit()) * 2.0 - DVec3::ONE;
+                v.normalize_or(DVec3::X)
+            }
+        }
+        let mut rng = Rng(0x2545_F491_4F6C_DD1D);
+        let (unit, dir) = (|r: &mut Rng| r.unit(), |r: &mut Rng| r.dir());
+        for _ in 0..300 {
+            let (da, db) = (dir(&mut rng), dir(&mut rng));
+            let (ra, rb) = (unit(&mut rng) * 4.0, unit(&mut rng) * 4.0);
+            let w = 0.005 + unit(&mut rng) * 0.3;
+            let a = Point::at_distance_from_origin(da, ra)
+                .unwrap()
+                .to_hyperboloid();
+            let b = Point::at_distance_from_origin(db, rb)
+                .unwrap()
+                .to_hyperboloid();
+            let boxes = KleinBox::around_tube(a, b, w, 16.0, 8);
+            assert!(!boxes.is_empty() && boxes.len() <= 8);
+            let Some((towards, len)) = lorentz::direction_towards(a, b) else {
+                continue;
+            };
+            for k in 0..200 {
+                let p = lorentz::geodesic_point(a, towards, unit(&mut rng) * len);
+                // A unit tangent at p in a random direction.
+                let v = dir(&mut rng).extend(0.0);
+                let mut t = v + lorentz::dot(v, p) * p;
+                t /= lorentz::norm(t);
+                // Half on the surface, half inside.
+                let d = if k % 2 == 0 {
+                    w
+                } else {
+                    w * unit(&mut rng).sqrt()
+                };
+                let q = lorentz::geodesic_point(p, t, d);
+                assert!(boxes.iter().any(|b| b.contains(q)), "{a} {b} {w}: {q}");
+            }
+        }
+        // Near the origin, a long thin rod's boxes are thin across it.
+        let a = Point::new(-0.5, 0.0, 0.0).unwrap().to_hyperboloid();
+        let b = Point::new(0.5, 0.0, 0.0).unwrap().to_hyperboloid();
+        let boxes = KleinBox::around_tube(a, b, 0.01, 16.0, 8);
+        assert_eq!(boxes.len(), 8);
+        for bx in &boxes {
+            assert!((bx.hi().y - bx.lo().y) < 0.021 && (bx.hi().z - bx.lo().z) < 0.021);
+        }
     }
 
     /// The box around a ball at the origin is the cube of half-width

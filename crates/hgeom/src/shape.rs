@@ -201,6 +201,34 @@ impl Shape for Rod {
     fn bound_pieces(&self) -> Vec<BoundingBall> {
         bound::rod_pieces(self)
     }
+    /// The tube's own Klein boxes (thin where the rod is; see
+    /// [`KleinBox::around_tube`]); none with an ideal end. A rod of one
+    /// piece also lies in the ball about it, whose box is the exact extent
+    /// of an ellipsoid and, for a short thick rod far from the origin,
+    /// thinner along the line of sight than the tube's: it gets the
+    /// intersection of the two (each holds the rod, so their common part
+    /// does).
+    fn klein_boxes(&self) -> Vec<KleinBox> {
+        let (Vertex::Interior(a), Vertex::Interior(b)) = (self.start(), self.end()) else {
+            return Vec::new();
+        };
+        let mut boxes = KleinBox::around_tube(
+            a.to_hyperboloid(),
+            b.to_hyperboloid(),
+            self.radius(),
+            bound::ROD_PIECE_RADII,
+            bound::ROD_MAX_PIECES as u32,
+        );
+        if let [only] = boxes.as_mut_slice()
+            && let Some(ball) = bound::rod_ball(self)
+                .as_ref()
+                .and_then(KleinBox::around_ball)
+            && let Some(both) = only.intersection(&ball)
+        {
+            *only = both;
+        }
+        boxes
+    }
     fn is_representable(&self) -> bool {
         vertex_ok(&self.start())
             && vertex_ok(&self.end())
