@@ -233,6 +233,20 @@ impl KleinBox {
     }
 }
 
+/// The lesser of two numbers by one comparison (one instruction), for
+/// hot loops over numbers that are never NaN; `f64::min` also handles NaN
+/// and compiles to a compare-and-blend sequence. With a NaN it returns `b`.
+#[inline(always)]
+pub fn plain_min(a: f64, b: f64) -> f64 {
+    if a < b { a } else { b }
+}
+
+/// The greater of two numbers, as [`plain_min`].
+#[inline(always)]
+pub fn plain_max(a: f64, b: f64) -> f64 {
+    if a > b { a } else { b }
+}
+
 /// The distance from the origin to the segment from `p` to `q`.
 fn nearest_to_origin(p: DVec3, q: DVec3) -> f64 {
     let d = q - p;
@@ -382,14 +396,7 @@ impl KleinRay {
     pub fn slab_entry(&self, b_lo: DVec3, b_hi: DVec3, lo: f64, hi: f64) -> Option<f64> {
         // Plain comparisons (one instruction each): the chord of a finite
         // ray has finite inverse components, so nothing here is NaN.
-        #[inline(always)]
-        fn min(a: f64, b: f64) -> f64 {
-            if a < b { a } else { b }
-        }
-        #[inline(always)]
-        fn max(a: f64, b: f64) -> f64 {
-            if a > b { a } else { b }
-        }
+        let (min, max) = (plain_min, plain_max);
         let a = (b_lo - self.origin) * self.inv_dir;
         let z = (b_hi - self.origin) * self.inv_dir;
         let enter = max(max(max(min(a.x, z.x), min(a.y, z.y)), min(a.z, z.z)), lo);
@@ -403,6 +410,7 @@ mod tests {
     use super::*;
     use crate::lorentz;
     use crate::point::Point;
+    use crate::test_rng::Rng;
 
     fn ball(c: DVec3, r: f64) -> BoundingBall {
         BoundingBall::new(Point::from_coords(c).unwrap().to_hyperboloid(), r).unwrap()
@@ -415,21 +423,8 @@ mod tests {
     /// than the cube of a ball around it.
     #[test]
     fn tube_boxes_hold_the_rod() {
-        struct Rng(u64);
-        impl Rng {
-            fn unit(&mut self) -> f64 {
-                self.0 ^= self.0 << 13;
-                self.0 ^= self.0 >> 7;
-                self.0 ^= self.0 << 17;
-                (self.0 >> 11) as f64 / (1u64 << 53) as f64
-            }
-            fn dir(&mut self) -> DVec3 {
-                let v = DVec3::new(self.unit(), self.unit(), self.unit()) * 2.0 - DVec3::ONE;
-                v.normalize_or(DVec3::X)
-            }
-        }
         let mut rng = Rng(0x2545_F491_4F6C_DD1D);
-        let (unit, dir) = (|r: &mut Rng| r.unit(), |r: &mut Rng| r.dir());
+        let (unit, dir) = (|r: &mut Rng| r.unit(), |r: &mut Rng| r.direction());
         for _ in 0..300 {
             let (da, db) = (dir(&mut rng), dir(&mut rng));
             let (ra, rb) = (unit(&mut rng) * 4.0, unit(&mut rng) * 4.0);

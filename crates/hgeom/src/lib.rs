@@ -74,6 +74,8 @@ mod segment;
 mod serde_impls;
 mod shape;
 mod sphere;
+#[cfg(test)]
+mod test_rng;
 
 pub use bound::BoundingBall;
 pub use compact::Compact;
@@ -88,7 +90,7 @@ pub use honeycomb::{
 };
 pub use horosphere::Horosphere;
 pub use isometry::Isometry;
-pub use klein_box::{KleinBox, KleinRay, round_outward_f32};
+pub use klein_box::{KleinBox, KleinRay, plain_max, plain_min, round_outward_f32};
 pub use line::HLine;
 pub use mesh::{GivenNormals, TriangleMesh};
 pub use plane::{BallShape, HPlane};

@@ -15,7 +15,7 @@
 
 mod build;
 
-use hgeom::{Hit, KleinRay, Ray};
+use hgeom::{Hit, KleinRay, Ray, plain_max, plain_min};
 
 pub use build::Leaf;
 
@@ -73,14 +73,7 @@ impl PairNode {
     /// are exact (every `f32` is an `f64`).
     #[inline(always)]
     fn entries(&self, s: &Slabs, lo: f64, hi: f64) -> [Option<f64>; 2] {
-        #[inline(always)]
-        fn min(a: f64, b: f64) -> f64 {
-            if a < b { a } else { b }
-        }
-        #[inline(always)]
-        fn max(a: f64, b: f64) -> f64 {
-            if a > b { a } else { b }
-        }
+        let (min, max) = (plain_min, plain_max);
         let mut enter = [lo; 2];
         let mut leave = [hi; 2];
         for axis in 0..3 {

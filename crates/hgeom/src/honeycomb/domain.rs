@@ -41,6 +41,7 @@
 use glam::{DVec3, DVec4};
 
 use crate::error::GeomError;
+use crate::klein_box::plain_min;
 use crate::lorentz;
 
 use super::cells::{orbit, orbit_maps};
@@ -463,11 +464,10 @@ impl WalkDomain {
         let n = a.len().min(b.len());
         let mut bits = 0;
         for i in (0..n).rev() {
-            // m <= 0 or m² <= limit², in one comparison (a plain `<`
-            // rather than `f64::min`, whose NaN rule costs a third of the
-            // loop; a NaN product fails the comparison either way).
-            let end = a[i] + b[i] * ray.s_exit;
-            let m = if end < a[i] { end } else { a[i] };
+            // m <= 0 or m² <= limit², in one comparison (`plain_min`:
+            // `f64::min`'s NaN rule costs a third of the loop, and a NaN
+            // product fails the comparison either way).
+            let m = plain_min(a[i] + b[i] * ray.s_exit, a[i]);
             bits = (bits << 1) | u32::from(m * m.abs() <= limit2);
         }
         bits
@@ -526,33 +526,11 @@ fn too_many() -> GeomError {
 
 #[cfg(test)]
 mod tests {
-    use glam::DVec3;
-
     use super::*;
     use crate::honeycomb::{RegularHoneycomb, Schlafli, decode_honeycomb_part};
     use crate::point::Point;
     use crate::ray::Ray;
-
-    /// A few bits of a xorshift generator, enough to spread rays.
-    struct Rng(u64);
-
-    impl Rng {
-        fn unit(&mut self) -> f64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            (self.0 >> 11) as f64 / (1u64 << 53) as f64
-        }
-
-        fn direction(&mut self) -> DVec3 {
-            loop {
-                let v = DVec3::new(self.unit(), self.unit(), self.unit()) * 2.0 - DVec3::ONE;
-                if (0.01..1.0).contains(&v.length_squared()) {
-                    return v.normalize();
-                }
-            }
-        }
-    }
+    use crate::test_rng::Rng;
 
     fn finite_cell_symbols() -> Vec<Schlafli> {
         Schlafli::ALL

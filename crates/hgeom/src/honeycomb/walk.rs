@@ -95,6 +95,7 @@ use glam::{DMat4, DVec4};
 
 use crate::error::GeomError;
 use crate::isometry::Isometry;
+use crate::klein_box::plain_max;
 use crate::lorentz;
 use crate::point::Point;
 use crate::ray::{Hit, Ray};
@@ -483,7 +484,7 @@ impl RegularHoneycomb {
             for i in 0..nw {
                 // Rounding can leave the start a hair behind a wall
                 // (a_i ~ -1e-17): that exit is immediate.
-                let ahead = if a[i] > 0.0 { a[i] } else { 0.0 };
+                let ahead = plain_max(a[i], 0.0);
                 if i != last && b[i] < 0.0 && ahead * den < -b[i] * num {
                     (num, den) = (ahead, -b[i]);
                     exit = Some(i);
