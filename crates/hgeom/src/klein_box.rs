@@ -365,7 +365,7 @@ impl KleinRay {
     }
 
     /// The arc `(t_min, t_max)` as a padded `λ` interval. A start below
-    /// [`NEAR_START`] (the usual offset of secondary rays from their
+    /// `NEAR_START` = 1e-6 (the usual offset of secondary rays from their
     /// surface) is taken as 0: `λ(0) = 0 <= λ(t_min)` keeps the arc
     /// conservative and saves a hyperbolic tangent per ray.
     #[inline]
