@@ -59,7 +59,7 @@
 //! which in a renderer is the eye; [`RegularHoneycomb::with_horizon`]
 //! changes it), where a depth-limited honeycomb can reach no listed cell
 //! any more (a ball about the base cell holding all of them), or after
-//! [`MAX_WALK_STEPS`] chambers. Nothing is drawn beyond: the ray misses and
+//! [`MAX_WALK_STEPS`] steps. Nothing is drawn beyond: the ray misses and
 //! the background shows. At distance 12 a cell of size 1 subtends
 //! `1/sinh 12 ≈ 1.2e-5` rad, a hundredth of a pixel of a 1000-pixel image
 //! with a 90° field; [`RegularHoneycomb::horizon_for_pixel`] gives the
@@ -168,8 +168,9 @@ pub struct WalkStep {
 
 /// A regular honeycomb `{p,q,r}` of hyperbolic space as one surface: edges
 /// as rods, faces as polygons, vertices as balls, found by walking each
-/// ray through the Coxeter group's fundamental simplex (module docs), so a
-/// ray costs the chambers it crosses, not the cells in the scene.
+/// ray from cell to cell (or, for horosphere-inscribed cells, through the
+/// Coxeter group's fundamental simplex; module docs), so a ray costs the
+/// cells it crosses, not the cells in the scene.
 ///
 /// Invariants: `to_world` is the Lorentz matrix of `placement` and
 /// `to_local` its inverse; `style` is valid; `cells` holds the
