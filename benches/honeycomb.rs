@@ -18,15 +18,15 @@
 //! hscene's CPU time over POV-Ray's.
 //!
 //! In-process, on a 64x64 grid of the same primary rays (net 0, the
-//! scene's camera), the walk reports how many cells and chambers (copies
-//! of the characteristic simplex) each ray crosses: the mean number of
-//! cells crossed per ray is the cost the walk pays instead of the number
+//! scene's camera), walked to the renderer's pixel horizon, the walk
+//! reports how many cells each ray crosses (one step each): the mean number
+//! of cells crossed per ray is the cost the walk pays instead of the number
 //! of cells in the scene. Rays per second are the image's primary rays
 //! plus one shadow ray per primary hit (the one light), over hscene's CPU
 //! time. The drift is the walk's accuracy: the hyperbolic distance between
 //! the f64 walk's local ray origin (`RegularHoneycomb::walk_steps`) and a
-//! 320-bit walk's through the same walls after `N` reflections, the worst
-//! over rays from the base cell's centre in 64 directions.
+//! 320-bit walk's through the same faces after `N` cells, the worst over
+//! rays from the base cell's centre in 64 directions.
 
 use std::fmt::Write as _;
 use std::process::{Command, ExitCode};
