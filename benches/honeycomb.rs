@@ -29,7 +29,7 @@
 //! rays from the base cell's centre in 64 directions.
 
 use std::fmt::Write as _;
-use std::process::{Command, ExitCode};
+use std::process::ExitCode;
 
 use hgeom::glam::DVec3;
 use hgeom::{HoneycombStyle, Ray, RegularHoneycomb};
@@ -325,14 +325,7 @@ fn run(resolution: u32, threads: Option<usize>) -> Result<Report, String> {
     let path = dir.path().join("honeycomb.hsc");
     std::fs::write(&path, &source).map_err(|e| e.to_string())?;
     let bin = hscene_binary().ok_or("no hscene binary next to the bench")?;
-    let mut cmd = Command::new(bin);
-    cmd.arg("render")
-        .arg(&path)
-        .arg("-o")
-        .arg(dir.path().join("honeycomb.png"));
-    if let Some(t) = threads {
-        cmd.args(["--threads", &t.to_string()]);
-    }
+    let cmd = common::render_command(&bin, &path, &dir.path().join("honeycomb.png"), threads);
     let hscene = common::measure(&cmd, &dir.path().join("hscene.log"))?;
     let povray = if povray_installed() {
         Some(common::povray(

@@ -41,7 +41,7 @@
 
 use std::fmt::Write as _;
 use std::path::Path;
-use std::process::{Command, ExitCode};
+use std::process::ExitCode;
 
 use hgeom::glam::DVec3;
 use hgeom::{HSphere, Ray, Rod, Vertex};
@@ -509,14 +509,7 @@ fn run_case(
         std::fs::write(keep.join(format!("{}.hsc", case.name())), &source)
             .map_err(|e| format!("--write-scenes: {e}"))?;
     }
-    let mut cmd = Command::new(hscene);
-    cmd.arg("render")
-        .arg(&scene_file)
-        .arg("-o")
-        .arg(dir.path().join("out.png"));
-    if let Some(t) = threads {
-        cmd.arg(format!("--threads={t}"));
-    }
+    let cmd = common::render_command(hscene, &scene_file, &dir.path().join("out.png"), threads);
     let measured = common::measure(&cmd, &dir.path().join("hscene.log"))?;
     let (pov, pov_left_out) = pov_source(&scene);
     if let Some(keep) = keep {

@@ -62,6 +62,17 @@ pub struct Measured {
 /// one command (see [`measure`]).
 const MEASURE_FLAG: &str = "--measure-child";
 
+/// `hscene render SCENE -o OUT [--threads T]`, the command every bench
+/// measures.
+pub fn render_command(hscene: &Path, scene: &Path, out: &Path, threads: Option<usize>) -> Command {
+    let mut cmd = Command::new(hscene);
+    cmd.arg("render").arg(scene).arg("-o").arg(out);
+    if let Some(t) = threads {
+        cmd.arg(format!("--threads={t}"));
+    }
+    cmd
+}
+
 /// Run `cmd` with its output going to `log`, and measure it.
 ///
 /// The command runs under a fresh copy of this bench executable

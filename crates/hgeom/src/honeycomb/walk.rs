@@ -470,7 +470,6 @@ impl RegularHoneycomb {
         // an unlimited honeycomb never builds it.
         let eager_m = self.cells.is_some();
         let mut pending = Pending::default();
-        let present = |cells: &[DVec4], m: &DMat4| self.present(cells, m);
         let mut last = usize::MAX;
         let mut a = [0.0; MAX_WALLS];
         let mut b = [0.0; MAX_WALLS];
@@ -508,7 +507,7 @@ impl RegularHoneycomb {
             };
             let floor = (v_guard / u_acc).max(1.0);
             if let Some((v, part)) =
-                domain.first_part(&here, floor, v_exit.min(span), |c| present(c, &m))
+                domain.first_part(&here, floor, v_exit.min(span), |c| self.present(c, &m))
             {
                 let t = arc(u_acc * v);
                 pending.fold_into(&mut m, walls);
