@@ -10,20 +10,22 @@
 //! cargo bench --bench honeycomb -- --threads 1 --json
 //! ```
 //!
-//! Both renders run as measured child processes (`common::measure`: CPU
+//! The renders run as measured child processes (`common::measure`: CPU
 //! time user + system from `wait4`, wall time from the clock): `hscene
-//! render` on the honeycomb scene, and POV-Ray on the Euclidean twin of the
-//! thesis's "16 h-spheres, 1 light, recursion 0" scene
-//! (`common::thesis_scenes`, the `thesis` bench's own). The ratio is
+//! render` on the honeycomb scene twice, with its light at the eye (a
+//! headlight: the renderer skips shadow rays it knows to be clear) and off
+//! the eye (every lit hit walks a shadow ray), and POV-Ray on the Euclidean
+//! twin of the thesis's "16 h-spheres, 1 light, recursion 0" scene
+//! (`common::thesis_scenes`, the `thesis` bench's own). The ratios are
 //! hscene's CPU time over POV-Ray's.
 //!
 //! In-process, on a 64x64 grid of the same primary rays (net 0, the
 //! scene's camera), walked to the renderer's pixel horizon, the walk
 //! reports how many cells each ray crosses (one step each): the mean number
 //! of cells crossed per ray is the cost the walk pays instead of the number
-//! of cells in the scene. Rays per second are the image's primary rays
-//! plus one shadow ray per primary hit (the one light), over hscene's CPU
-//! time. The drift is the walk's accuracy: the hyperbolic distance between
+//! of cells in the scene. Rays per second are the rays traced over
+//! hscene's CPU time: the image's primary rays, plus with the light off
+//! the eye one shadow ray per primary hit. The drift is the walk's accuracy: the hyperbolic distance between
 //! the f64 walk's local ray origin (`RegularHoneycomb::walk_steps`) and a
 //! 320-bit walk's through the same faces after `N` cells, the worst over
 //! rays from the base cell's centre in 64 directions.
@@ -50,10 +52,16 @@ const EDGE_RADIUS: f64 = 0.02;
 const DRIFT_STEPS: [u32; 4] = [3, 5, 10, 15];
 const DRIFT_RAYS: u32 = 64;
 
+/// Where the one light is: at the eye (a headlight, whose shadow rays the
+/// renderer knows to be clear without tracing them), or off the eye inside
+/// the base cube, where every lit hit walks a shadow ray back to it.
+const LIGHT_AT_EYE: &str = "(0, 0, 0)";
+const LIGHT_OFF_EYE: &str = "(0.15, 0.1, -0.05)";
+
 /// The honeycomb scene: the eye at the centre of the base cube, looking at
 /// the middle of a face, tilted so that no edge points straight at it;
-/// one light at the eye.
-fn scene_source(resolution: u32) -> String {
+/// one light at `light`.
+fn scene_source(resolution: u32, light: &str) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
@@ -62,7 +70,7 @@ fn scene_source(resolution: u32) -> String {
          background = (0, 0, 0); ambient = (0.4, 0.4, 0.4); recursion_depth = 0; }}\n\
          BRDFs {{ edge: ambient = (0.4, 0.3, 0.2), diffuse = (0.9, 0.75, 0.45), \
          specular = (1, 1, 1), shininess = 40; }}\n\
-         Lights {{ (0, 0, 0), (6, 6, 6), (4, 4, 4); }}\n\
+         Lights {{ {light}, (6, 6, 6), (4, 4, 4); }}\n\
          Objects {{ Honeycomb {{4,3,5}}, #edge, edges = {EDGE_RADIUS}; }}"
     );
     s
@@ -216,22 +224,28 @@ fn drift() -> Vec<(u32, f64, usize)> {
 struct Report {
     resolution: u32,
     hscene: Measured,
+    /// The same render with the light off the eye.
+    hscene_off_eye: Measured,
     povray: Option<Measured>,
     walks: Walks,
     drift: Vec<(u32, f64, usize)>,
 }
 
 impl Report {
-    fn ratio(&self) -> Option<f64> {
-        self.povray.map(|p| self.hscene.cpu_s / p.cpu_s)
+    fn ratio(&self, hscene: &Measured) -> Option<f64> {
+        self.povray.map(|p| hscene.cpu_s / p.cpu_s)
     }
 
-    /// Primary rays plus one shadow ray per primary hit (estimated from
-    /// the grid's hit share), per CPU second.
-    fn rays_per_second(&self) -> f64 {
+    /// Rays traced per CPU second: the primary rays, plus with the light
+    /// off the eye one shadow ray per primary hit (estimated from the
+    /// grid's hit share).
+    fn rays_per_second(&self, off_eye: bool) -> f64 {
         let primary = f64::from(self.resolution) * f64::from(self.resolution);
+        if !off_eye {
+            return primary / self.hscene.cpu_s;
+        }
         let hit_share = self.walks.hits as f64 / self.walks.rays.max(1) as f64;
-        primary * (1.0 + hit_share) / self.hscene.cpu_s
+        primary * (1.0 + hit_share) / self.hscene_off_eye.cpu_s
     }
 
     fn mean(&self, total: u64) -> f64 {
@@ -246,10 +260,14 @@ impl Report {
             "hscene_cpu_s": self.hscene.cpu_s,
             "hscene_wall_s": self.hscene.wall_s,
             "hscene_peak_mib": self.hscene.peak_mib,
+            "hscene_light_off_eye_cpu_s": self.hscene_off_eye.cpu_s,
+            "hscene_light_off_eye_wall_s": self.hscene_off_eye.wall_s,
             "povray_16_spheres_cpu_s": self.povray.map(|p| p.cpu_s),
             "povray_16_spheres_wall_s": self.povray.map(|p| p.wall_s),
-            "cpu_ratio": self.ratio(),
-            "rays_per_cpu_s": self.rays_per_second(),
+            "cpu_ratio": self.ratio(&self.hscene),
+            "cpu_ratio_light_off_eye": self.ratio(&self.hscene_off_eye),
+            "rays_per_cpu_s": self.rays_per_second(false),
+            "rays_per_cpu_s_light_off_eye": self.rays_per_second(true),
             "mean_cells_per_ray": self.mean(self.walks.cells),
             "max_cells_per_ray": self.walks.max_cells,
             "hit_share": self.walks.hits as f64 / self.walks.rays.max(1) as f64,
@@ -267,28 +285,37 @@ impl Report {
         );
         let _ = writeln!(
             s,
-            "  hscene        CPU {:8.2} s   wall {:7.2} s   peak {:6.1} MiB",
+            "  hscene, light at the eye   CPU {:6.2} s   wall {:6.2} s   peak {:6.1} MiB",
             self.hscene.cpu_s, self.hscene.wall_s, self.hscene.peak_mib
+        );
+        let _ = writeln!(
+            s,
+            "  hscene, light off the eye  CPU {:6.2} s   wall {:6.2} s   peak {:6.1} MiB",
+            self.hscene_off_eye.cpu_s, self.hscene_off_eye.wall_s, self.hscene_off_eye.peak_mib
         );
         match self.povray {
             Some(p) => {
                 let _ = writeln!(
                     s,
-                    "  POV-Ray 16 h-spheres  CPU {:8.2} s   wall {:7.2} s",
+                    "  POV-Ray 16 h-spheres       CPU {:6.2} s   wall {:6.2} s",
                     p.cpu_s, p.wall_s
                 );
             }
             None => s.push_str("  POV-Ray: not installed\n"),
         }
-        if let Some(ratio) = self.ratio() {
-            let verdict = if ratio <= 2.0 { "within" } else { "beyond" };
-            let _ = writeln!(s, "  CPU ratio {ratio:.2} ({verdict} the 2x target)");
+        for (hscene, light, off_eye) in [
+            (&self.hscene, "at the eye", false),
+            (&self.hscene_off_eye, "off the eye", true),
+        ] {
+            if let Some(ratio) = self.ratio(hscene) {
+                let verdict = if ratio <= 2.0 { "within" } else { "beyond" };
+                let _ = writeln!(
+                    s,
+                    "  light {light}: CPU ratio {ratio:.2} ({verdict} the 2x target), {:.2} M rays per CPU second",
+                    self.rays_per_second(off_eye) / 1e6
+                );
+            }
         }
-        let _ = writeln!(
-            s,
-            "  {:.2} M rays per CPU second (primary + shadow)",
-            self.rays_per_second() / 1e6
-        );
         let _ = writeln!(
             s,
             "  per primary ray: {:.1} cells crossed (max {}); {:.0} % hit",
@@ -307,7 +334,7 @@ impl Report {
 }
 
 fn run(resolution: u32, threads: Option<usize>) -> Result<Report, String> {
-    let source = scene_source(resolution);
+    let source = scene_source(resolution, LIGHT_AT_EYE);
     let compiled = hscene_lang::compile(&source);
     let scene = compiled.scene.ok_or_else(|| {
         format!(
@@ -327,6 +354,10 @@ fn run(resolution: u32, threads: Option<usize>) -> Result<Report, String> {
     let bin = hscene_binary().ok_or("no hscene binary next to the bench")?;
     let cmd = common::render_command(&bin, &path, &dir.path().join("honeycomb.png"), threads);
     let hscene = common::measure(&cmd, &dir.path().join("hscene.log"))?;
+    let off_eye = dir.path().join("off-eye.hsc");
+    std::fs::write(&off_eye, scene_source(resolution, LIGHT_OFF_EYE)).map_err(|e| e.to_string())?;
+    let cmd = common::render_command(&bin, &off_eye, &dir.path().join("off-eye.png"), threads);
+    let hscene_off_eye = common::measure(&cmd, &dir.path().join("off-eye.log"))?;
     let povray = if povray_installed() {
         Some(common::povray(
             &pov_source(&sixteen_spheres(), resolution),
@@ -339,6 +370,7 @@ fn run(resolution: u32, threads: Option<usize>) -> Result<Report, String> {
     Ok(Report {
         resolution,
         hscene,
+        hscene_off_eye,
         povray,
         walks,
         drift: drift(),

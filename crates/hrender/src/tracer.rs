@@ -162,7 +162,15 @@ impl<'s> Tracer<'s> {
                 color += self.area_light(light, &shading, stream, stats);
                 continue;
             }
-            color += self.point_light(light, light.position, &shading, stats);
+            // A light where this ray started (a headlight at the eye) sees
+            // the hit along the ray itself, which met nothing before it:
+            // its shadow ray would retrace that segment and find it clear.
+            let seen = if at_ray_origin(light.position, ray) {
+                Visibility::Clear
+            } else {
+                Visibility::Trace
+            };
+            color += self.point_light(light, light.position, seen, &shading, stats);
         }
 
         if depth < self.scene.max_depth {
@@ -216,6 +224,7 @@ impl<'s> Tracer<'s> {
         &self,
         light: &PreparedLight,
         from: DVec4,
+        seen: Visibility,
         at: &Shading<'_>,
         stats: &mut TraceStats,
     ) -> Color {
@@ -226,15 +235,20 @@ impl<'s> Tracer<'s> {
         if !(cos_theta > 0.0) {
             return Color::default();
         }
-        stats.rays += 1;
-        let shadow = self.scene.transmittance(
-            &Ray {
-                origin: at.p,
-                dir: to_light,
-            },
-            T_MIN,
-            dist,
-        );
+        let shadow = match seen {
+            Visibility::Clear => 1.0,
+            Visibility::Trace => {
+                stats.rays += 1;
+                self.scene.transmittance(
+                    &Ray {
+                        origin: at.p,
+                        dir: to_light,
+                    },
+                    T_MIN,
+                    dist,
+                )
+            }
+        };
         if shadow == 0.0 {
             return Color::default();
         }
@@ -292,7 +306,7 @@ impl<'s> Tracer<'s> {
             // A sample that coincides with the shading point (a point on
             // the light's surface, to rounding) lights nothing there, like a
             // point light at the hit.
-            sum += self.point_light(light, q, at, stats);
+            sum += self.point_light(light, q, Visibility::Trace, at, stats);
         }
         sum * (cap / count)
     }
@@ -386,6 +400,22 @@ fn tangent_basis(c: DVec4, e: DVec4) -> (DVec4, DVec4) {
     (b1, b2 / lorentz::norm(b2))
 }
 
+/// Whether a point light's shadow ray must be traced.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Visibility {
+    /// The light is at the start of the ray that found the shading point.
+    Clear,
+    Trace,
+}
+
+/// True if `light` lies within [`T_MIN`] of the ray's start. For two points
+/// of the hyperboloid `<L - O, L - O> = 4 sinh²(d/2)`, accurate for near
+/// points where `-<L,O> = cosh d` loses `d` to cancellation.
+fn at_ray_origin(light: DVec4, ray: &Ray) -> bool {
+    let delta = light - ray.origin;
+    lorentz::dot(delta, delta) < T_MIN * T_MIN
+}
+
 /// True if the tangent vector's Lorentz norm is 1 up to a tolerance far
 /// above the rounding of any resolvable vector (which grows like
 /// `1e-16 cosh^2` of the distance from the eye: 3e-4 at distance 15).
@@ -426,6 +456,66 @@ mod tests {
         assert!(middle(1.0, 1.0, 1.0) && middle(-3.0, 2.0, 4.0));
         assert!(!checker_is_odd(DVec3::new(f64::NAN, 0.0, 0.0), s));
         assert!(!checker_is_odd(DVec3::splat(1e300), 1e-300));
+    }
+
+    /// A light within `T_MIN` of a ray's start is at it; one farther off
+    /// is not (`<L-O,L-O>` keeps the distance where `cosh d` rounds to 1).
+    #[test]
+    fn lights_at_the_ray_origin_are_found_to_t_min() {
+        let eye = Point::from_coords(DVec3::ZERO).unwrap().to_hyperboloid();
+        let ray = Ray {
+            origin: eye,
+            dir: DVec4::new(0.0, 0.0, 1.0, 0.0),
+        };
+        let light = |x: f64| {
+            Point::from_coords(DVec3::new(x, 0.0, 0.0))
+                .unwrap()
+                .to_hyperboloid()
+        };
+        assert!(at_ray_origin(eye, &ray));
+        // Ball x is distance 2x near the origin.
+        assert!(at_ray_origin(light(0.4e-9), &ray));
+        assert!(!at_ray_origin(light(0.6e-9), &ray));
+        assert!(!at_ray_origin(light(0.1), &ray));
+    }
+
+    /// A headlight (the light at the eye) lights every primary hit it faces:
+    /// its shadow ray would retrace the primary ray, which met nothing
+    /// before the hit, so it is not traced. The image is the one traced
+    /// shadow rays give with the light a hair (1e-7) off the eye, through
+    /// a honeycomb, a glass ball and a mirror bounce.
+    #[test]
+    fn headlight_shadows_are_known_clear() {
+        let source = |light: &str| {
+            format!(
+                "Globals {{ resolution = (48, 48); to = (0.1, 0.13, 0.4); fov = 90; \
+                 recursion_depth = 1; ambient = (0.2, 0.2, 0.2); }}\n\
+                 BRDFs {{ edge: ambient = (0.4, 0.3, 0.2), diffuse = (0.9, 0.75, 0.45), \
+                 specular = (1, 1, 1), shininess = 40, alpha = 0.3; \
+                 glass: ambient = (0.1, 0.2, 0.3), diffuse = (0.2, 0.4, 0.6), \
+                 specular = (1, 1, 1), shininess = 60, trans = 0.5, refraction = 1.3; }}\n\
+                 Lights {{ {light}, (6, 6, 6), (4, 4, 4); }}\n\
+                 Objects {{ Honeycomb {{4,3,5}}, #edge, edges = 0.05; \
+                 Sphere (0.05, 0.08, 0.3), 0.08, #glass; }}"
+            )
+        };
+        let draw = |light: &str| {
+            let compiled = hscene_lang::compile(&source(light));
+            let scene = compiled.scene.expect("the test scene compiles");
+            crate::render(&scene, &crate::RenderOptions::default(), &|_| {})
+                .expect("the test scene renders")
+        };
+        let headlight = draw("(0, 0, 0)");
+        let traced = draw("(1e-7, 0, 0)");
+        assert!(headlight.stats.rays < traced.stats.rays);
+        let mut lit = 0;
+        for (h, t) in headlight.image.pixels().iter().zip(traced.image.pixels()) {
+            for (a, b) in h.iter().zip(t) {
+                assert!((a - b).abs() <= 1e-5 * b.abs().max(1.0), "{h:?} {t:?}");
+            }
+            lit += usize::from(h[0] > 0.3);
+        }
+        assert!(lit > 100, "only {lit} lit pixels");
     }
 
     /// The tangent basis is Lorentz orthonormal and tangent, also for a

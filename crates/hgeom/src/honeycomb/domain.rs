@@ -370,6 +370,7 @@ impl WalkDomain {
     /// The first part met in this domain at `floor < v <= window`, in
     /// `v = e^{2τ}` from the ray's start here; `present` says whether a
     /// part with these cells is drawn.
+    #[inline(always)]
     pub(super) fn first_part(
         &self,
         ray: &DomainRay,
