@@ -439,6 +439,18 @@ impl RegularHoneycomb {
         let mut d = self.to_local * (sh * ray.origin + ch * ray.dir);
         renormalise(&mut o, &mut d);
         let mut m = DMat4::IDENTITY;
+        // The domain matrix: a depth-limited honeycomb asks at every step
+        // which cells are drawn; otherwise only a primary hit needs it (for
+        // its normal and class), so the walls crossed are kept and folded
+        // into `m` in batches or at the hit, and a miss or a shadow ray of
+        // an unlimited honeycomb never builds it.
+        let mut pending = Pending::new(if self.cells.is_some() {
+            Crossings::Eager
+        } else if any {
+            Crossings::Unused
+        } else {
+            Crossings::Deferred
+        });
         loop {
             let (i, a) = walls
                 .iter()
@@ -454,7 +466,7 @@ impl RegularHoneycomb {
             stats.folds += 1;
             o = reflect(o, walls[i]);
             d = reflect(d, walls[i]);
-            m = times_reflection(&m, walls[i]);
+            pending.cross(i, &mut m, walls);
         }
         // Arc lengths are kept as v = e^{2τ} (a product along the walk),
         // which the exits give without a logarithm: e^{2 atanh s} =
@@ -463,13 +475,6 @@ impl RegularHoneycomb {
         let v_span = (u_hi / u_lo) * (u_hi / u_lo);
         // The arc length at v (from the start of the window): e^{2t} = u_lo² v.
         let arc = |v: f64| 0.5 * (u_lo * u_lo * v).ln();
-        // The domain matrix: a depth-limited honeycomb asks at every step
-        // which cells are drawn; otherwise only a primary hit needs it (for
-        // its normal and class), so the walls crossed are kept and folded
-        // into `m` in batches or at the hit, and a miss or a shadow ray of
-        // an unlimited honeycomb never builds it.
-        let eager_m = self.cells.is_some();
-        let mut pending = Pending::default();
         let mut last = usize::MAX;
         let mut a = [0.0; MAX_WALLS];
         let mut b = [0.0; MAX_WALLS];
@@ -527,11 +532,7 @@ impl RegularHoneycomb {
             if stats.steps.is_multiple_of(RENORMALISE_EVERY) {
                 renormalise(&mut o, &mut d);
             }
-            if eager_m {
-                m = times_reflection(&m, n);
-            } else if !any {
-                pending.push(exit, &mut m, walls);
-            }
+            pending.cross(exit, &mut m, walls);
             u_acc *= v_exit;
             last = exit;
             let face = domain.is_face(exit);
@@ -630,14 +631,43 @@ impl RegularHoneycomb {
 }
 
 /// Walls crossed but not yet folded into the domain matrix.
-#[derive(Default)]
+/// What a walk does with the walls it crosses.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Crossings {
+    /// Folds each into the domain matrix at once (the drawn cells are asked
+    /// for at every step).
+    Eager,
+    /// Keeps them, to fold in batches or at a hit.
+    Deferred,
+    /// Drops them: the matrix is never read (an any-hit walk).
+    Unused,
+}
+
 struct Pending {
     walls: [u8; Pending::CAPACITY],
     len: usize,
+    crossings: Crossings,
 }
 
 impl Pending {
     const CAPACITY: usize = 16;
+
+    fn new(crossings: Crossings) -> Pending {
+        Pending {
+            walls: [0; Pending::CAPACITY],
+            len: 0,
+            crossings,
+        }
+    }
+
+    /// The walk crossed `wall`: `m` becomes (or will become) `m R_wall`.
+    fn cross(&mut self, wall: usize, m: &mut DMat4, walls: &[DVec4]) {
+        match self.crossings {
+            Crossings::Eager => *m = times_reflection(m, walls[wall]),
+            Crossings::Deferred => self.push(wall, m, walls),
+            Crossings::Unused => {}
+        }
+    }
 
     fn push(&mut self, wall: usize, m: &mut DMat4, walls: &[DVec4]) {
         if self.len == Self::CAPACITY {
