@@ -314,6 +314,13 @@ impl KleinRay {
         self.origin
     }
 
+    /// The chord's direction `V` (no component below `1e-200` in
+    /// magnitude; see [`KleinRay::new`]).
+    #[inline]
+    pub fn dir(&self) -> DVec3 {
+        self.dir
+    }
+
     /// `1/V` per component (each finite for a finite ray; see
     /// [`KleinRay::new`]).
     #[inline]

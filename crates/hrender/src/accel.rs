@@ -14,10 +14,16 @@
 //! conservative, and the exact `f64` intersection decides.
 
 mod build;
+mod chord32;
+mod stack;
+mod wide;
 
-use hgeom::{Hit, KleinRay, Ray, plain_max, plain_min};
+use hgeom::{Hit, KleinRay, Ray};
 
 pub use build::Leaf;
+use chord32::Chord32;
+use stack::Stack;
+use wide::{WIDTH, WideNode};
 
 /// What a visit asks the traversal to do next.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -28,81 +34,10 @@ pub enum Step {
     Stop,
 }
 
-/// A node of the hierarchy: the boxes of its two children side by side,
-/// so one pass of two-lane arithmetic tests both; each child is another
-/// node (`count == 0`), a leaf (`items[child .. child + count]`), or absent
-/// (`child == ABSENT`, only under a root that is a leaf).
-#[derive(Clone, Copy, Debug)]
-struct PairNode {
-    /// `lo[axis][k]`: child `k`'s least corner, rounded down to `f32`.
-    lo: [[f32; 2]; 3],
-    /// `hi[axis][k]`: its greatest corner, rounded up.
-    hi: [[f32; 2]; 3],
-    child: [u32; 2],
-    count: [u32; 2],
-}
-
-const ABSENT: u32 = u32::MAX;
-
-/// A chord set up for slab tests: per axis, its start, `1/V`, and which
-/// corner of a box it meets first (the least when `V >= 0`).
-#[derive(Clone, Copy, Debug)]
-struct Slabs {
-    origin: [f64; 3],
-    inv_dir: [f64; 3],
-    negative: [bool; 3],
-}
-
-impl Slabs {
-    fn new(chord: &KleinRay) -> Slabs {
-        let (o, inv) = (chord.origin(), chord.inv_dir());
-        Slabs {
-            origin: o.to_array(),
-            inv_dir: inv.to_array(),
-            negative: [inv.x < 0.0, inv.y < 0.0, inv.z < 0.0],
-        }
-    }
-}
-
-impl PairNode {
-    /// Where the chord enters each child's box within `[lo, hi]`, if it
-    /// does: [`KleinRay::slab_entry`] for both children in two lanes, with
-    /// the near and far corner of each axis chosen once per ray by the
-    /// sign of `1/V` instead of a `min` and a `max` per axis (the same
-    /// products and comparisons, so the same answer). The boxes in `f64`
-    /// are exact (every `f32` is an `f64`).
-    #[inline(always)]
-    fn entries(&self, s: &Slabs, lo: f64, hi: f64) -> [Option<f64>; 2] {
-        let (min, max) = (plain_min, plain_max);
-        let mut enter = [lo; 2];
-        let mut leave = [hi; 2];
-        for axis in 0..3 {
-            let (near, far) = if s.negative[axis] {
-                (&self.hi[axis], &self.lo[axis])
-            } else {
-                (&self.lo[axis], &self.hi[axis])
-            };
-            let (o, inv) = (s.origin[axis], s.inv_dir[axis]);
-            for k in 0..2 {
-                enter[k] = max(enter[k], (f64::from(near[k]) - o) * inv);
-                leave[k] = min(leave[k], (f64::from(far[k]) - o) * inv);
-            }
-        }
-        [0, 1].map(|k| (self.child[k] != ABSENT && enter[k] <= leave[k]).then_some(enter[k]))
-    }
-
-    /// The items of child `k`, if it is a leaf.
-    #[inline(always)]
-    fn leaf<'a>(&self, k: usize, items: &'a [u32]) -> Option<&'a [u32]> {
-        let first = self.child[k] as usize;
-        (self.count[k] > 0).then(|| &items[first..first + self.count[k] as usize])
-    }
-}
-
 /// The hierarchy over items `0..n` and the items without a box.
 #[derive(Clone, Debug, Default)]
 pub struct Accel {
-    nodes: Vec<PairNode>,
+    nodes: Vec<WideNode>,
     /// Leaf contents, in node order.
     items: Vec<u32>,
     /// Items every ray tests: those without a box, and all of them when
@@ -115,7 +50,7 @@ const DIRECT_LEAVES: usize = 2;
 
 /// The deepest a hierarchy may be: the build stops splitting there (the
 /// binned build halves the item count at least every few levels, so real
-/// scenes stay far below), so a fixed traversal stack always suffices.
+/// scenes stay far below), which bounds the build's recursion.
 const MAX_DEPTH: usize = 60;
 
 impl Accel {
@@ -138,7 +73,7 @@ impl Accel {
         }
         let (binary, items) = build::build(leaves);
         Accel {
-            nodes: pair_up(&binary),
+            nodes: wide::collapse(&binary),
             items,
             direct: unbounded,
         }
@@ -177,35 +112,41 @@ impl Accel {
             }
             return best;
         }
-        let (lo, mut hi) = chord.arc(t_min, limit);
-        let slabs = Slabs::new(&chord);
-        let mut stack = [(0u32, 0f64); MAX_DEPTH + 1];
-        stack[0] = (0, lo);
-        let mut top = 1usize;
+        let (lo, hi) = chord.arc(t_min, limit);
+        let c32 = Chord32::new(&chord);
+        let lo = c32.lambda_below(lo);
+        let mut hi = c32.lambda_above(hi);
+        let mut stack = Stack::with((0u32, lo));
         let mut last = u32::MAX;
-        while top > 0 {
-            top -= 1;
-            let (n, enter) = stack[top];
+        while let Some((n, enter)) = stack.pop() {
             if enter > hi {
                 continue;
             }
             let node = &self.nodes[n as usize];
-            let [e0, e1] = node.entries(&slabs, lo, hi);
-            // Children in the order the chord enters them.
-            let order = match (e0, e1) {
-                (Some(a), Some(b)) if b < a => [(1, b), (0, a)],
-                (Some(a), Some(b)) => [(0, a), (1, b)],
-                (Some(a), None) => [(0, a), (2, 0.0)],
-                (None, Some(b)) => [(1, b), (2, 0.0)],
-                (None, None) => continue,
-            };
+            let (mut mask, entries) = node.entries(&c32, lo, hi);
+            // The children entered, nearest first (insertion sort of at
+            // most four).
+            let mut order = [(0usize, 0f32); WIDTH];
+            let mut hits = 0;
+            while mask != 0 {
+                let k = mask.trailing_zeros() as usize;
+                mask &= mask - 1;
+                let e = entries[k];
+                let mut j = hits;
+                while j > 0 && order[j - 1].1 > e {
+                    order[j] = order[j - 1];
+                    j -= 1;
+                }
+                order[j] = (k, e);
+                hits += 1;
+            }
             // Leaves now, nearest first; inner children onto the stack,
-            // the farther below.
-            let mut push = [(0u32, 0f64); 2];
+            // the farthest lowest.
+            let mut push = [(0u32, 0f32); WIDTH];
             let mut pushed = 0;
-            for (k, e) in order {
-                if k == 2 || e > hi {
-                    continue;
+            for &(k, e) in &order[..hits] {
+                if e > hi {
+                    break;
                 }
                 let Some(leaf) = node.leaf(k, &self.items) else {
                     push[pushed] = (node.child[k], e);
@@ -221,14 +162,13 @@ impl Accel {
                     last = i;
                     if let Some(hit) = test(i, t_min, limit) {
                         limit = hit.t;
-                        hi = chord.arc_end_at(hit.point);
+                        hi = c32.lambda_above(chord.arc_end_at(hit.point));
                         best = Some((hit, i));
                     }
                 }
             }
-            for p in push[..pushed].iter().rev() {
-                stack[top] = *p;
-                top += 1;
+            for &p in push[..pushed].iter().rev() {
+                stack.push(p);
             }
         }
         best
@@ -256,21 +196,18 @@ impl Accel {
             return;
         }
         let (lo, hi) = chord.arc(t_min, t_max);
-        let slabs = Slabs::new(&chord);
-        let mut stack = [0u32; MAX_DEPTH + 1];
-        let mut top = 1usize;
+        let c32 = Chord32::new(&chord);
+        let (lo, hi) = (c32.lambda_below(lo), c32.lambda_above(hi));
+        let mut stack = Stack::with(0u32);
         let mut last = u32::MAX;
-        while top > 0 {
-            top -= 1;
-            let node = &self.nodes[stack[top] as usize];
-            let entries = node.entries(&slabs, lo, hi);
-            for (k, entry) in entries.iter().enumerate() {
-                if entry.is_none() {
-                    continue;
-                }
+        while let Some(n) = stack.pop() {
+            let node = &self.nodes[n as usize];
+            let (mut mask, _) = node.entries(&c32, lo, hi);
+            while mask != 0 {
+                let k = mask.trailing_zeros() as usize;
+                mask &= mask - 1;
                 let Some(leaf) = node.leaf(k, &self.items) else {
-                    stack[top] = node.child[k];
-                    top += 1;
+                    stack.push(node.child[k]);
                     continue;
                 };
                 for &i in leaf {
@@ -285,57 +222,6 @@ impl Accel {
             }
         }
     }
-}
-
-/// The paired layout of a binary hierarchy: one pair node per inner node,
-/// in the same order (a root that is a leaf gets a pair node of its own,
-/// with the second child absent).
-fn pair_up(binary: &[build::Node]) -> Vec<PairNode> {
-    let Some(root) = binary.first() else {
-        return Vec::new();
-    };
-    // Pair-node index of each inner binary node.
-    let mut index = vec![u32::MAX; binary.len()];
-    let mut count = 0u32;
-    for (i, n) in binary.iter().enumerate() {
-        if n.count == 0 {
-            index[i] = count;
-            count += 1;
-        }
-    }
-    let child = |b: usize| -> (u32, u32) {
-        let n = &binary[b];
-        if n.count == 0 {
-            (index[b], 0)
-        } else {
-            (n.index, n.count)
-        }
-    };
-    let mut out = Vec::with_capacity(count as usize + 1);
-    if root.count > 0 {
-        out.push(PairNode {
-            lo: [[root.lo[0], 0.0], [root.lo[1], 0.0], [root.lo[2], 0.0]],
-            hi: [[root.hi[0], 0.0], [root.hi[1], 0.0], [root.hi[2], 0.0]],
-            child: [root.index, ABSENT],
-            count: [root.count, 0],
-        });
-        return out;
-    }
-    for (i, n) in binary.iter().enumerate() {
-        if n.count > 0 {
-            continue;
-        }
-        let (l, r) = (i + 1, n.index as usize);
-        let (bl, br) = (&binary[l], &binary[r]);
-        let ((cl, nl), (cr, nr)) = (child(l), child(r));
-        out.push(PairNode {
-            lo: [0, 1, 2].map(|a| [bl.lo[a], br.lo[a]]),
-            hi: [0, 1, 2].map(|a| [bl.hi[a], br.hi[a]]),
-            child: [cl, cr],
-            count: [nl, nr],
-        });
-    }
-    out
 }
 
 #[cfg(test)]

@@ -1,0 +1,130 @@
+//! The four-wide layout of the hierarchy: each node holds the boxes of up
+//! to four children side by side, so one pass of four-lane `f32`
+//! arithmetic tests them all ([`Chord32`]), and a ray visits about half as
+//! many nodes as in the binary tree. It is collapsed from the binary build:
+//! a node takes its two children, then replaces the inner child of largest
+//! surface area by that child's two until it has four (the standard
+//! collapse of a binary SAH tree, as in Embree's BVH4).
+
+use hgeom::glam::Vec4;
+
+use super::build::Node;
+use super::chord32::{CORNER, Chord32};
+
+/// Children per node.
+pub(super) const WIDTH: usize = 4;
+
+/// A node: the boxes of its children in four lanes; each child is another
+/// node (`count == 0`), a leaf (`items[child .. child + count]`), or absent
+/// (an empty box, which no chord enters).
+#[derive(Clone, Copy, Debug)]
+#[repr(C, align(64))]
+pub(super) struct WideNode {
+    /// `corner[0][axis]`: the children's least corners, rounded down to
+    /// `f32`; `corner[1][axis]`: their greatest, rounded up. Indexed, not
+    /// named, so a chord picks its near and far side by index.
+    corner: [[Vec4; 3]; 2],
+    pub child: [u32; WIDTH],
+    pub count: [u32; WIDTH],
+}
+
+impl WideNode {
+    /// Which children's boxes the chord enters within `[lo, hi]` (bit `k`
+    /// for child `k`), and lower bounds of where it enters each.
+    #[inline(always)]
+    pub fn entries(&self, c: &Chord32, lo: f32, hi: f32) -> (u32, [f32; WIDTH]) {
+        let mut enter = Vec4::splat(lo);
+        let mut leave = Vec4::splat(hi);
+        for axis in 0..3 {
+            let near = c.near[axis];
+            enter = enter.max(c.enter(axis, self.corner[near][axis]));
+            leave = leave.min(c.leave(axis, self.corner[1 - near][axis]));
+        }
+        (enter.cmple(leave).bitmask(), enter.to_array())
+    }
+
+    /// The items of child `k`, if it is a leaf.
+    #[inline(always)]
+    pub fn leaf<'a>(&self, k: usize, items: &'a [u32]) -> Option<&'a [u32]> {
+        let first = self.child[k] as usize;
+        (self.count[k] > 0).then(|| &items[first..first + self.count[k] as usize])
+    }
+}
+
+/// The four-wide layout of a binary hierarchy (root first, each node's
+/// left child next to it and its right one at `index`). A root that is a
+/// leaf gets a node of its own, with one child.
+pub(super) fn collapse(binary: &[Node]) -> Vec<WideNode> {
+    let mut out = Vec::new();
+    if !binary.is_empty() {
+        if binary[0].count > 0 {
+            out.push(node_of(binary, &[0], &[0]));
+        } else {
+            place(binary, 0, &mut out);
+        }
+    }
+    out
+}
+
+/// Lay out the wide node for inner binary node `b` and, after it, those of
+/// its inner descendants; returns its index.
+fn place(binary: &[Node], b: usize, out: &mut Vec<WideNode>) -> u32 {
+    let inner = |i: usize| binary[i].count == 0;
+    let mut children = vec![b + 1, binary[b].index as usize];
+    while children.len() < WIDTH {
+        // Open the inner child with the largest box: the one most rays
+        // would otherwise visit as a node of its own.
+        let Some(k) = (0..children.len())
+            .filter(|&k| inner(children[k]))
+            .max_by(|&x, &y| area(&binary[children[x]]).total_cmp(&area(&binary[children[y]])))
+        else {
+            break;
+        };
+        let c = children.swap_remove(k);
+        children.extend([c + 1, binary[c].index as usize]);
+    }
+    let index = out.len();
+    // A placeholder until the children's indices are known.
+    out.push(node_of(binary, &children, &[]));
+    let placed: Vec<u32> = children
+        .iter()
+        .map(|&c| if inner(c) { place(binary, c, out) } else { 0 })
+        .collect();
+    out[index] = node_of(binary, &children, &placed);
+    index as u32
+}
+
+/// The wide node over binary nodes `children`, the inner ones at wide
+/// indices `placed` (in the same order; ignored for leaves).
+fn node_of(binary: &[Node], children: &[usize], placed: &[u32]) -> WideNode {
+    let mut lo = [[f32::INFINITY; WIDTH]; 3];
+    let mut hi = [[f32::NEG_INFINITY; WIDTH]; 3];
+    let mut child = [0; WIDTH];
+    let mut count = [0; WIDTH];
+    for (k, &c) in children.iter().enumerate() {
+        let n = &binary[c];
+        for axis in 0..3 {
+            // The arc never leaves [-CORNER, CORNER]^3, so clamping there
+            // keeps every box the chord can meet; it bounds the slab
+            // products of `Chord32`.
+            lo[axis][k] = n.lo[axis].clamp(-CORNER, CORNER);
+            hi[axis][k] = n.hi[axis].clamp(-CORNER, CORNER);
+        }
+        if n.count > 0 {
+            (child[k], count[k]) = (n.index, n.count);
+        } else {
+            child[k] = placed.get(k).copied().unwrap_or(0);
+        }
+    }
+    WideNode {
+        corner: [lo.map(Vec4::from_array), hi.map(Vec4::from_array)],
+        child,
+        count,
+    }
+}
+
+/// Half the surface area of a node's box.
+fn area(n: &Node) -> f64 {
+    let e = [0, 1, 2].map(|a| f64::from(n.hi[a]) - f64::from(n.lo[a]));
+    e[0] * e[1] + e[1] * e[2] + e[2] * e[0]
+}
