@@ -279,7 +279,6 @@ pub fn round_outward_f32(lo: DVec3, hi: DVec3) -> ([f32; 3], [f32; 3]) {
 pub struct KleinRay {
     origin: DVec3,
     dir: DVec3,
-    inv_dir: DVec3,
     o_w: f64,
     d_w: f64,
 }
@@ -302,7 +301,6 @@ impl KleinRay {
         KleinRay {
             origin: o.truncate() / o.w,
             dir,
-            inv_dir: DVec3::ONE / dir,
             o_w: o.w,
             d_w: d.w,
         }
@@ -325,7 +323,7 @@ impl KleinRay {
     /// [`KleinRay::new`]).
     #[inline]
     pub fn inv_dir(&self) -> DVec3 {
-        self.inv_dir
+        DVec3::ONE / self.dir
     }
 
     /// True if the chord is finite: the ray was. A hierarchy must not trust
@@ -333,7 +331,7 @@ impl KleinRay {
     #[inline]
     pub fn is_finite(&self) -> bool {
         self.origin.is_finite()
-            && self.inv_dir.is_finite()
+            && self.dir.is_finite()
             && self.o_w.is_finite()
             && self.d_w.is_finite()
     }
@@ -360,7 +358,7 @@ impl KleinRay {
         } else {
             2
         };
-        (k[axis] - self.origin[axis]) * self.inv_dir[axis]
+        (k[axis] - self.origin[axis]) / self.dir[axis]
     }
 
     /// `λ` of a point on the ray, padded upwards by the slack of
@@ -404,8 +402,9 @@ impl KleinRay {
         // Plain comparisons (one instruction each): the chord of a finite
         // ray has finite inverse components, so nothing here is NaN.
         let (min, max) = (plain_min, plain_max);
-        let a = (b_lo - self.origin) * self.inv_dir;
-        let z = (b_hi - self.origin) * self.inv_dir;
+        let inv_dir = self.inv_dir();
+        let a = (b_lo - self.origin) * inv_dir;
+        let z = (b_hi - self.origin) * inv_dir;
         let enter = max(max(max(min(a.x, z.x), min(a.y, z.y)), min(a.z, z.z)), lo);
         let leave = min(min(min(max(a.x, z.x), max(a.y, z.y)), max(a.z, z.z)), hi);
         (enter <= leave).then_some(enter)

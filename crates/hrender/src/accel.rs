@@ -118,57 +118,66 @@ impl Accel {
         let mut hi = c32.lambda_above(hi);
         let mut stack = Stack::with((0u32, lo));
         let mut last = u32::MAX;
-        while let Some((n, enter)) = stack.pop() {
+        while let Some((mut n, enter)) = stack.pop() {
             if enter > hi {
                 continue;
             }
-            let node = &self.nodes[n as usize];
-            let (mut mask, entries) = node.entries(&c32, lo, hi);
-            // The children entered, nearest first (insertion sort of at
-            // most four).
-            let mut order = [(0usize, 0f32); WIDTH];
-            let mut hits = 0;
-            while mask != 0 {
-                let k = mask.trailing_zeros() as usize;
-                mask &= mask - 1;
-                let e = entries[k];
-                let mut j = hits;
-                while j > 0 && order[j - 1].1 > e {
-                    order[j] = order[j - 1];
-                    j -= 1;
-                }
-                order[j] = (k, e);
-                hits += 1;
-            }
-            // Leaves now, nearest first; inner children onto the stack,
-            // the farthest lowest.
-            let mut push = [(0u32, 0f32); WIDTH];
-            let mut pushed = 0;
-            for &(k, e) in &order[..hits] {
-                if e > hi {
-                    break;
-                }
-                let Some(leaf) = node.leaf(k, &self.items) else {
-                    push[pushed] = (node.child[k], e);
-                    pushed += 1;
-                    continue;
-                };
-                for &i in leaf {
-                    // Consecutive boxes of one item (a rod's pieces) need
-                    // one exact test.
-                    if i == last {
+            // Down the tree: leaves entered are tested at once; of the inner
+            // children entered, the nearest is visited next and the others
+            // wait on the stack, the farthest lowest.
+            loop {
+                let node = &self.nodes[n as usize];
+                let (mut leaves, inner, entries) = node.entries(&c32, lo, hi);
+                while leaves != 0 {
+                    let k = leaves.trailing_zeros() as usize;
+                    leaves &= leaves - 1;
+                    if entries[k] > hi {
                         continue;
                     }
-                    last = i;
-                    if let Some(hit) = test(i, t_min, limit) {
-                        limit = hit.t;
-                        hi = c32.lambda_above(chord.arc_end_at(hit.point));
-                        best = Some((hit, i));
+                    for &i in node.items(k, &self.items) {
+                        // Consecutive boxes of one item (a rod's pieces)
+                        // need one exact test.
+                        if i == last {
+                            continue;
+                        }
+                        last = i;
+                        if let Some(hit) = test(i, t_min, limit) {
+                            limit = hit.t;
+                            hi = c32.lambda_above(chord.arc_end_at(hit.point));
+                            best = Some((hit, i));
+                        }
                     }
                 }
-            }
-            for &p in push[..pushed].iter().rev() {
-                stack.push(p);
+                if inner == 0 {
+                    break;
+                }
+                let first = inner.trailing_zeros() as usize;
+                let rest = inner & (inner - 1);
+                if rest == 0 {
+                    n = node.child[first];
+                    continue;
+                }
+                // Two or more: sort them (at most four) by entry.
+                let mut order = [(0u32, 0f32); WIDTH];
+                let mut count = 0;
+                let mut bits = inner;
+                while bits != 0 {
+                    let k = bits.trailing_zeros() as usize;
+                    bits &= bits - 1;
+                    let e = entries[k];
+                    let mut j = count;
+                    while j > 0 && order[j - 1].1 < e {
+                        order[j] = order[j - 1];
+                        j -= 1;
+                    }
+                    order[j] = (node.child[k], e);
+                    count += 1;
+                }
+                // `order` is farthest first: all but the nearest wait.
+                for &p in &order[..count - 1] {
+                    stack.push(p);
+                }
+                n = order[count - 1].0;
             }
         }
         best
@@ -200,24 +209,31 @@ impl Accel {
         let (lo, hi) = (c32.lambda_below(lo), c32.lambda_above(hi));
         let mut stack = Stack::with(0u32);
         let mut last = u32::MAX;
-        while let Some(n) = stack.pop() {
-            let node = &self.nodes[n as usize];
-            let (mut mask, _) = node.entries(&c32, lo, hi);
-            while mask != 0 {
-                let k = mask.trailing_zeros() as usize;
-                mask &= mask - 1;
-                let Some(leaf) = node.leaf(k, &self.items) else {
-                    stack.push(node.child[k]);
-                    continue;
-                };
-                for &i in leaf {
-                    if i == last {
-                        continue;
+        while let Some(mut n) = stack.pop() {
+            loop {
+                let node = &self.nodes[n as usize];
+                let (mut leaves, mut inner, _) = node.entries(&c32, lo, hi);
+                while leaves != 0 {
+                    let k = leaves.trailing_zeros() as usize;
+                    leaves &= leaves - 1;
+                    for &i in node.items(k, &self.items) {
+                        if i == last {
+                            continue;
+                        }
+                        last = i;
+                        if visit(i) == Step::Stop {
+                            return;
+                        }
                     }
-                    last = i;
-                    if visit(i) == Step::Stop {
-                        return;
-                    }
+                }
+                if inner == 0 {
+                    break;
+                }
+                n = node.child[inner.trailing_zeros() as usize];
+                inner &= inner - 1;
+                while inner != 0 {
+                    stack.push(node.child[inner.trailing_zeros() as usize]);
+                    inner &= inner - 1;
                 }
             }
         }

@@ -252,8 +252,11 @@ impl<'s> Tracer<'s> {
         if shadow == 0.0 {
             return Color::default();
         }
-        let sinh = dist.sinh();
-        let f_att = 1.0 / (4.0 * PI * sinh * sinh);
+        // sinh d = 2 sinh(d/2) cosh(d/2), with sinh(d/2) = |L - P|/2 (as
+        // in `distance`): no transcendental call.
+        let half = 0.5 * lorentz::norm(from - at.p);
+        let sinh_sq = 4.0 * half * half * (1.0 + half * half);
+        let f_att = 1.0 / (4.0 * PI * sinh_sq);
         at.phong(light, to_light, cos_theta.min(1.0)) * (shadow * f_att)
     }
 

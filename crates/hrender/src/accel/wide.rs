@@ -14,8 +14,13 @@ use super::chord32::{CORNER, Chord32};
 /// Children per node.
 pub(super) const WIDTH: usize = 4;
 
+/// The top bit of `child`: set for a leaf. Item indices stay below it (the
+/// build counts items in `u32`, and `2^31` leaf boxes would take 64 GiB).
+const LEAF: u32 = 1 << 31;
+
 /// A node: the boxes of its children in four lanes; each child is another
-/// node (`count == 0`), a leaf (`items[child .. child + count]`), or absent
+/// node, a leaf (`child` has its top bit set; the items are
+/// `items[first .. first + count]`, `first` the rest of `child`), or absent
 /// (an empty box, which no chord enters).
 #[derive(Clone, Copy, Debug)]
 #[repr(C, align(64))]
@@ -25,14 +30,15 @@ pub(super) struct WideNode {
     /// named, so a chord picks its near and far side by index.
     corner: [[Vec4; 3]; 2],
     pub child: [u32; WIDTH],
-    pub count: [u32; WIDTH],
+    count: [u32; WIDTH],
 }
 
 impl WideNode {
-    /// Which children's boxes the chord enters within `[lo, hi]` (bit `k`
-    /// for child `k`), and lower bounds of where it enters each.
+    /// Which children's boxes the chord enters within `[lo, hi]`, the
+    /// leaves and the inner nodes apart (bit `k` for child `k`), and lower
+    /// bounds of where it enters each.
     #[inline(always)]
-    pub fn entries(&self, c: &Chord32, lo: f32, hi: f32) -> (u32, [f32; WIDTH]) {
+    pub fn entries(&self, c: &Chord32, lo: f32, hi: f32) -> (u32, u32, [f32; WIDTH]) {
         let mut enter = Vec4::splat(lo);
         let mut leave = Vec4::splat(hi);
         for axis in 0..3 {
@@ -40,14 +46,18 @@ impl WideNode {
             enter = enter.max(c.enter(axis, self.corner[near][axis]));
             leave = leave.min(c.leave(axis, self.corner[1 - near][axis]));
         }
-        (enter.cmple(leave).bitmask(), enter.to_array())
+        let entered = enter.cmple(leave).bitmask();
+        // The leaf bits are the sign bits of `child` read as `f32` lanes:
+        // one instruction, no arithmetic on the values.
+        let leaves = Vec4::from_array(self.child.map(f32::from_bits)).is_negative_bitmask();
+        (entered & leaves, entered & !leaves, enter.to_array())
     }
 
-    /// The items of child `k`, if it is a leaf.
+    /// The items of child `k`, a leaf.
     #[inline(always)]
-    pub fn leaf<'a>(&self, k: usize, items: &'a [u32]) -> Option<&'a [u32]> {
-        let first = self.child[k] as usize;
-        (self.count[k] > 0).then(|| &items[first..first + self.count[k] as usize])
+    pub fn items<'a>(&self, k: usize, items: &'a [u32]) -> &'a [u32] {
+        let first = (self.child[k] & !LEAF) as usize;
+        &items[first..first + self.count[k] as usize]
     }
 }
 
@@ -111,7 +121,7 @@ fn node_of(binary: &[Node], children: &[usize], placed: &[u32]) -> WideNode {
             hi[axis][k] = n.hi[axis].clamp(-CORNER, CORNER);
         }
         if n.count > 0 {
-            (child[k], count[k]) = (n.index, n.count);
+            (child[k], count[k]) = (LEAF | n.index, n.count);
         } else {
             child[k] = placed.get(k).copied().unwrap_or(0);
         }
