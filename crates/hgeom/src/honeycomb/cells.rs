@@ -34,7 +34,7 @@
 //! its class is that rank modulo the number of classes: a function of the
 //! part alone, never of the path a ray took to it.
 
-use std::collections::HashMap;
+use foldhash::{HashMap, HashMapExt};
 
 use glam::{DMat4, DVec4};
 

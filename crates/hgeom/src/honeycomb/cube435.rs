@@ -23,7 +23,7 @@
 //! orthoscheme), and it maps the cell onto its neighbour across that face, so
 //! breadth-first reflection in faces reaches every cell, layer by layer.
 
-use std::collections::HashMap;
+use foldhash::{HashMap, HashMapExt};
 use std::f64::consts::{PI, SQRT_2};
 
 use crate::distance::distance;

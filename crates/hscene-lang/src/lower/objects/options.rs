@@ -380,7 +380,7 @@ fn wireframe(shapes: &[Shape], radius: f64) -> Result<Vec<Rod>, GeomError> {
         let c = v.coords() * 1e9;
         [c.x.round() as i64, c.y.round() as i64, c.z.round() as i64]
     };
-    let mut seen: std::collections::HashSet<(Key, Key)> = std::collections::HashSet::new();
+    let mut seen: foldhash::HashSet<(Key, Key)> = foldhash::HashSetExt::new();
     let mut rods = Vec::new();
     let mut add_polygon = |p: &ConvexPolygon, rods: &mut Vec<Rod>| -> Result<(), GeomError> {
         let vs = p.vertices();
