@@ -155,13 +155,8 @@ mod tests {
     /// and the `f32` exit never before it.
     #[test]
     fn f32_slabs_contain_the_exact_ones() {
-        let mut state = 11u64;
-        let mut rnd = move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((state >> 11) as f64) / ((1u64 << 53) as f64) * 2.0 - 1.0
-        };
+        let mut rng = hscene_test_support::SplitMix64::new(11);
+        let mut rnd = move || rng.range(-1.0, 1.0);
         let mut checked = 0;
         for k in 0..20_000 {
             let r = [0.0, 0.5, 0.99, 0.999_999][k % 4];
