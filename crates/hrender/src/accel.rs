@@ -59,9 +59,10 @@ impl Accel {
     /// enters, which is harmless: a repeated test finds nothing nearer), and
     /// the items with no box at all.
     pub fn new(leaves: Vec<Leaf>, mut unbounded: Vec<u32>) -> Accel {
-        if leaves.len() <= DIRECT_LEAVES {
+        if leaves.len() <= DIRECT_LEAVES || leaves.len() >= wide::MAX_LEAVES {
             // Culling a ray against so few boxes costs more than it saves
             // (the chord's set-up alone is four divisions): test directly.
+            // Past `MAX_LEAVES` the nodes could not name the items.
             let mut items: Vec<u32> = leaves.iter().map(Leaf::item).collect();
             items.dedup();
             unbounded.extend(items);
@@ -154,6 +155,11 @@ impl Accel {
                 let first = inner.trailing_zeros() as usize;
                 let rest = inner & (inner - 1);
                 if rest == 0 {
+                    // A leaf above may have brought the end of the arc
+                    // before this child's box.
+                    if entries[first] > hi {
+                        break;
+                    }
                     n = node.child[first];
                     continue;
                 }
@@ -177,7 +183,11 @@ impl Accel {
                 for &p in &order[..count - 1] {
                     stack.push(p);
                 }
-                n = order[count - 1].0;
+                let (nearest, entry) = order[count - 1];
+                if entry > hi {
+                    break;
+                }
+                n = nearest;
             }
         }
         best

@@ -1,5 +1,5 @@
 //! A ray's chord set up for slab tests in `f32`, four boxes at a time, that
-//! never reject a box the exact chord meets.
+//! never reject a box holding a point of the ray the exact tests can hit.
 //!
 //! The chord is `k(λ) = P + λ V` in Klein coordinates ([`KleinRay`]). Its
 //! slab parameter on the plane `x_i = c` is `t = (c - P_i)/V_i = c a + b`
@@ -10,28 +10,38 @@
 //!
 //! - **Scale.** `V` is divided by the power of two `p` at most its largest
 //!   component (exact), so `1 <= max |V_i| < 2`, and `λ` is multiplied by
-//!   `p` (exact). The arc of a ray lies in the closed ball, whose chords
-//!   are at most 2 long, so the arc has `|λ| <= 2 (1 + 1e-9)`.
+//!   `p` (exact). Every point the exact tests can hit lies in the ball, and
+//!   `|k - P| = |λ| |V| >= |λ|`, so such points have `|λ| < 2` (the arc's
+//!   ends themselves may be larger, even infinite, far out).
 //! - **Nearly parallel axes.** A component below `2^-40` is raised to
-//!   `±2^-40`: over `|λ| <= 2.01` that turns the chord by less than
-//!   `2^-38 ≈ 4e-12` in Klein coordinates, far inside the `1e-9` padding
-//!   of every box ([`hgeom::klein_box::PAD`]), as [`KleinRay::new`] does for
-//!   zero components. So `0.5 < |a| <= 2^40`, and with corners `|c| <= 2`
-//!   (boxes are clamped there; the arc never leaves `[-1.01, 1.01]^3`) no
-//!   `f32` product overflows and no `0 * inf` arises.
-//! - **The margin.** With `u = 2^-24`, `ã = a (1 + δ1)`, and the product
-//!   and the sum each rounded once more, the computed `t̃` of
-//!   `c ã + b̃` differs from `c a + b̃` by at most
-//!   `|c a| (3u + 3u^2 + u^3) + |b̃| u <= 6.02 u |a| + u |b̃|`. The entry's
-//!   `b̃` is `b - M` rounded to the nearest `f32`, `M = 32 u (|a| + |b|)`,
-//!   so `b̃ <= b - M + u (|b| + M)`, and then
-//!   `t̃ <= t - M (1 - 3u) + 2u |b| + 6.02 u |a| < t`; the exit is the
-//!   mirror image. A fused multiply-add rounds less. Rounding to nearest
+//!   `±2^-40`: over `|λ| < 2` that moves the chord by less than `2^-39`
+//!   (`2e-12`) in Klein coordinates, far inside the `1e-9` padding that
+//!   keeps every hit inside its box ([`hgeom::klein_box::PAD`]), as
+//!   [`KleinRay::new`] does for zero components: a box the turned chord
+//!   misses may be one the exact chord grazes, never one holding a hit. So
+//!   `0.5 < |a| <= 2^40`, and with corners `|c| <= 2` (boxes are clamped
+//!   there; every hit has `|k| <= 1`) no `f32` product overflows. The empty
+//!   box of an absent child (`+inf` below, `-inf` above) gives `±inf`
+//!   without NaN for either sign of `a` (never 0 or infinite), entry
+//!   `+inf` and exit `-inf`: always rejected.
+//! - **The margin.** With `u = 2^-24`: `a` is rounded in `f64` and then to
+//!   `f32`, `ã = a (1 + δ1)` with `|δ1| <= 1.01 u`; the product and the sum
+//!   are each rounded once more, so the computed `t̃` of `c ã + b̃` differs
+//!   from `c a + b̃` by at most `|c a| 3.05 u + |b̃| u <= 6.1 u |a| + u |b̃|`.
+//!   The entry's `b̃` is `b - M` rounded to the nearest `f32`,
+//!   `M = 32 u (|a| + |b|)`, so `b̃ <= b - M + u (|b| + M)`, and then
+//!   `t̃ <= t - M (1 - 2u - u^2) + (2u + u^2) |b| + 6.1 u |a| < t`; the exit
+//!   is the mirror image (`b` itself, `-P_i a` in `f64`, is a few `f64`
+//!   ulps off, far inside the slack). A fused multiply-add rounds less. Rounding to nearest
 //!   and a margin twice as wide need no branch, where rounding down would
 //!   need one per value, taken at random.
 //! - **The arc.** Its ends are widened by `4u` of their size (and the
 //!   least normal `f32`) before rounding to nearest, which keeps them
-//!   outside the exact ends by the same argument.
+//!   outside the exact ends by the same argument. An end that is NaN (far
+//!   out, `λ` of an inward ray can overflow and the padding then gives
+//!   `inf - inf`) is taken as unbounded: `-inf` for the start, `+inf` for
+//!   the end, never a NaN that SIMD `min`/`max` would treat differently on
+//!   different targets.
 //!
 //! In Klein coordinates the margin widens every box by `M/|a| <= 2^-18`
 //! (at most `4e-6`, and `2e-6` for rays from near the origin): it costs
@@ -106,19 +116,25 @@ impl Chord32 {
     }
 
     /// The chord's `λ` (of [`KleinRay`]) in this chord's units, at most
-    /// `lambda`: for the start of an arc.
+    /// `lambda` (`-inf` if that is NaN): for the start of an arc.
     #[inline]
     pub fn lambda_below(&self, lambda: f64) -> f32 {
         let x = lambda * self.scale;
-        (x - (ARC_MARGIN * x.abs() + f64::from(f32::MIN_POSITIVE))) as f32
+        let below = (x - (ARC_MARGIN * x.abs() + f64::from(f32::MIN_POSITIVE))) as f32;
+        if below.is_nan() {
+            f32::NEG_INFINITY
+        } else {
+            below
+        }
     }
 
-    /// As [`Chord32::lambda_below`], at least `lambda`: for the end of an
-    /// arc.
+    /// As [`Chord32::lambda_below`], at least `lambda` (`+inf` if that is
+    /// NaN): for the end of an arc.
     #[inline]
     pub fn lambda_above(&self, lambda: f64) -> f32 {
         let x = lambda * self.scale;
-        (x + (ARC_MARGIN * x.abs() + f64::from(f32::MIN_POSITIVE))) as f32
+        let above = (x + (ARC_MARGIN * x.abs() + f64::from(f32::MIN_POSITIVE))) as f32;
+        if above.is_nan() { f32::INFINITY } else { above }
     }
 
     /// Lower bounds of the slab parameters of the four corner coordinates
@@ -234,5 +250,11 @@ mod tests {
             }
             x *= 1.37;
         }
+        // Unbounded where the arc's end is not a number or infinite.
+        assert_eq!(c32.lambda_below(f64::NAN), f32::NEG_INFINITY);
+        assert_eq!(c32.lambda_above(f64::NAN), f32::INFINITY);
+        assert_eq!(c32.lambda_below(f64::INFINITY), f32::NEG_INFINITY);
+        assert_eq!(c32.lambda_above(f64::NEG_INFINITY), f32::INFINITY);
+        assert_eq!(c32.lambda_above(f64::INFINITY), f32::INFINITY);
     }
 }

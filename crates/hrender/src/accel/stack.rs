@@ -1,6 +1,7 @@
 //! The traversal stack: a few dozen entries inline, which every real
 //! hierarchy stays within, and a heap vector past them, so no depth can
-//! overflow it and no ray pays for clearing a worst-case array.
+//! overflow it, and a ray clears 32 entries instead of an array sized for
+//! the deepest tree the build allows (181).
 
 /// Entries kept inline: a four-wide tree over a million leaves is about
 /// ten levels deep and pushes at most three entries a level.

@@ -14,8 +14,12 @@ use super::chord32::{CORNER, Chord32};
 /// Children per node.
 pub(super) const WIDTH: usize = 4;
 
-/// The top bit of `child`: set for a leaf. Item indices stay below it (the
-/// build counts items in `u32`, and `2^31` leaf boxes would take 64 GiB).
+/// The most leaf boxes a tree is built over (`2^31`, about 96 GiB of
+/// leaves; far past any scene this memory holds).
+pub(super) const MAX_LEAVES: usize = 1 << 31;
+
+/// The top bit of `child`: set for a leaf. Item indices stay below it:
+/// [`super::Accel::new`] builds no tree over `MAX_LEAVES` or more boxes.
 const LEAF: u32 = 1 << 31;
 
 /// A node: the boxes of its children in four lanes; each child is another
@@ -137,4 +141,47 @@ fn node_of(binary: &[Node], children: &[usize], placed: &[u32]) -> WideNode {
 fn area(n: &Node) -> f64 {
     let e = [0, 1, 2].map(|a| f64::from(n.hi[a]) - f64::from(n.lo[a]));
     e[0] * e[1] + e[1] * e[2] + e[2] * e[0]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use hgeom::glam::DVec3;
+    use hgeom::{KleinRay, Ray};
+
+    /// A leaf root: one child and three absent lanes. Chords through the
+    /// box along every axis, in both directions, enter the child's lane and
+    /// never an absent one (their empty boxes give no NaN for either sign
+    /// of the chord), and chords beside the box enter none.
+    #[test]
+    fn absent_lanes_are_never_entered() {
+        let leaf = Node {
+            lo: [-0.1, -0.1, -0.1],
+            hi: [0.1, 0.1, 0.1],
+            index: 0,
+            count: 1,
+        };
+        let nodes = collapse(&[leaf]);
+        assert_eq!(nodes.len(), 1);
+        for axis in 0..3 {
+            for sign in [1.0, -1.0] {
+                let mut dir = DVec3::ZERO;
+                dir[axis] = sign;
+                let ray = Ray::from_origin_unchecked(dir);
+                let c = Chord32::new(&KleinRay::new(&ray));
+                let (leaves, inner, entries) =
+                    nodes[0].entries(&c, f32::NEG_INFINITY, f32::INFINITY);
+                assert_eq!((leaves, inner), (1, 0), "axis {axis}, sign {sign}");
+                assert!(entries[0] <= 0.0, "{}", entries[0]);
+                // From a start beside the box, parallel to it: no lane.
+                let mut beside = DVec3::splat(0.0);
+                beside[(axis + 1) % 3] = 0.5;
+                let start = hgeom::Point::from_coords(beside).unwrap();
+                let ray = Ray::from_ball_unchecked(&start, dir);
+                let c = Chord32::new(&KleinRay::new(&ray));
+                let (leaves, inner, _) = nodes[0].entries(&c, f32::NEG_INFINITY, f32::INFINITY);
+                assert_eq!((leaves, inner), (0, 0), "axis {axis}, sign {sign}, beside");
+            }
+        }
+    }
 }
