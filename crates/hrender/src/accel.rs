@@ -6,12 +6,14 @@
 //! In the Klein model every ray is a straight chord and every bounded
 //! surface has an exact box ([`hgeom::KleinBox`]), so this is the standard
 //! machinery of Euclidean tracers: a binned surface-area-heuristic build
-//! ([`build`]), boxes stored in `f32` rounded outwards (half the memory
-//! traffic of `f64`, never smaller than the `f64` box), the slab test in
-//! `f64`, nearest-first traversal ordered by the chord parameter `λ` (which
-//! increases with hyperbolic distance along the ray), and any-hit traversal
-//! for shadow rays. Exactness stays with the leaves: every box test is
-//! conservative, and the exact `f64` intersection decides.
+//! ([`build`]) collapsed into four-wide nodes ([`wide`]), boxes stored in
+//! `f32` rounded outwards (half the memory traffic of `f64`, never smaller
+//! than the `f64` box), the slab test in four `f32` lanes widened by more
+//! than its rounding ([`chord32`]), nearest-first traversal ordered by the
+//! chord parameter `λ` (which increases with hyperbolic distance along the
+//! ray), and any-hit traversal for shadow rays. Exactness stays with the
+//! leaves: every box test is conservative, and the exact `f64` intersection
+//! decides.
 
 mod build;
 mod chord32;
@@ -61,7 +63,7 @@ impl Accel {
     pub fn new(leaves: Vec<Leaf>, mut unbounded: Vec<u32>) -> Accel {
         if leaves.len() <= DIRECT_LEAVES || leaves.len() >= wide::MAX_LEAVES {
             // Culling a ray against so few boxes costs more than it saves
-            // (the chord's set-up alone is four divisions): test directly.
+            // (the chord's set-up alone is six divisions): test directly.
             // Past `MAX_LEAVES` the nodes could not name the items.
             let mut items: Vec<u32> = leaves.iter().map(Leaf::item).collect();
             items.dedup();
@@ -128,10 +130,8 @@ impl Accel {
             // wait on the stack, the farthest lowest.
             loop {
                 let node = &self.nodes[n as usize];
-                let (mut leaves, inner, entries) = node.entries(&c32, lo, hi);
-                while leaves != 0 {
-                    let k = leaves.trailing_zeros() as usize;
-                    leaves &= leaves - 1;
+                let (leaves, inner, entries) = node.entries(&c32, lo, hi);
+                for k in lanes(leaves) {
                     if entries[k] > hi {
                         continue;
                     }
@@ -166,10 +166,7 @@ impl Accel {
                 // Two or more: sort them (at most four) by entry.
                 let mut order = [(0u32, 0f32); WIDTH];
                 let mut count = 0;
-                let mut bits = inner;
-                while bits != 0 {
-                    let k = bits.trailing_zeros() as usize;
-                    bits &= bits - 1;
+                for k in lanes(inner) {
                     let e = entries[k];
                     let mut j = count;
                     while j > 0 && order[j - 1].1 < e {
@@ -222,10 +219,8 @@ impl Accel {
         while let Some(mut n) = stack.pop() {
             loop {
                 let node = &self.nodes[n as usize];
-                let (mut leaves, mut inner, _) = node.entries(&c32, lo, hi);
-                while leaves != 0 {
-                    let k = leaves.trailing_zeros() as usize;
-                    leaves &= leaves - 1;
+                let (leaves, inner, _) = node.entries(&c32, lo, hi);
+                for k in lanes(leaves) {
                     for &i in node.items(k, &self.items) {
                         if i == last {
                             continue;
@@ -236,18 +231,29 @@ impl Accel {
                         }
                     }
                 }
-                if inner == 0 {
+                let mut inner = lanes(inner).map(|k| node.child[k]);
+                let Some(next) = inner.next() else {
                     break;
-                }
-                n = node.child[inner.trailing_zeros() as usize];
-                inner &= inner - 1;
-                while inner != 0 {
-                    stack.push(node.child[inner.trailing_zeros() as usize]);
-                    inner &= inner - 1;
+                };
+                n = next;
+                for child in inner {
+                    stack.push(child);
                 }
             }
         }
     }
+}
+
+/// The lanes whose bits are set in `mask`, lowest first.
+#[inline(always)]
+fn lanes(mut mask: u32) -> impl Iterator<Item = usize> {
+    std::iter::from_fn(move || {
+        (mask != 0).then(|| {
+            let k = mask.trailing_zeros() as usize;
+            mask &= mask - 1;
+            k
+        })
+    })
 }
 
 #[cfg(test)]
