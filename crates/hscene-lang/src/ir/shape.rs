@@ -270,12 +270,10 @@ impl Shape {
                         lorentz::dot(here, f.plane().transformed(to_origin).normal()) < 0.0
                     })
             }
-            Shape::Rod(r) => r.transformed(to_origin).contains_hyperboloid(here),
+            Shape::Rod(r) => rod_encloses_origin(r, to_origin),
             Shape::Cylinder(c) => c.transformed(to_origin).contains_hyperboloid(here),
             Shape::Horosphere(h) => h.transformed(to_origin).contains_hyperboloid(here),
-            Shape::Wireframe(rods) => rods
-                .iter()
-                .any(|r| r.transformed(to_origin).contains_hyperboloid(here)),
+            Shape::Wireframe(rods) => rods.iter().any(|r| rod_encloses_origin(r, to_origin)),
         }
     }
 
@@ -315,6 +313,105 @@ impl Shape {
             Shape::Rod(r) => rod_behind(r),
             Shape::Wireframe(rods) => rods.iter().all(rod_behind),
             Shape::Mesh(m) => m.vertices().iter().all(|p| sinh_ahead(p) < 0.0),
+        }
+    }
+}
+
+/// True if `rod`, moved by `to_origin`, contains the origin.
+///
+/// A rod is the set of points within its radius `r` of its segment, and
+/// the distance from the origin to a point of Klein radius `k` is
+/// `artanh k`, which grows with `k`: the rod contains the origin exactly
+/// when the segment's Klein point nearest the origin (in the Euclidean
+/// sense, the segment being straight there) has `k < tanh r`. Only the two
+/// ends are moved for that, which is far cheaper than moving the rod (a
+/// wireframe honeycomb has tens of thousands, asked once per light); where
+/// the nearest point is within `CLEAR` of the threshold the moved rod's
+/// own exact test decides, so rounding of the ends cannot change the
+/// answer.
+fn rod_encloses_origin(rod: &Rod, to_origin: &Isometry) -> bool {
+    /// Klein-radius margin past which the segment is certainly out of
+    /// reach: far above the rounding of ends moved by a transvection.
+    const CLEAR: f64 = 1e-6;
+    let klein = |v: Vertex| {
+        let h = to_origin.apply_vertex(&v).to_hyperboloid();
+        h.truncate() / h.w
+    };
+    let (a, b) = (klein(rod.start()), klein(rod.end()));
+    let d = b - a;
+    let along = d.length_squared();
+    let t = if along > 0.0 {
+        (-a.dot(d) / along).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let nearest = (a + t * d).length();
+    // A NaN from an end f64 cannot move falls through to the exact test.
+    if nearest > rod.radius().tanh() + CLEAR {
+        return false;
+    }
+    rod.transformed(to_origin).contains_hyperboloid(DVec4::W)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use hgeom::IdealPoint;
+    use proptest::prelude::*;
+
+    fn unit(v: [f64; 3]) -> DVec3 {
+        let d = DVec3::from_array(v);
+        if d.length() < 1e-3 {
+            DVec3::Z
+        } else {
+            d.normalize()
+        }
+    }
+
+    proptest! {
+        /// The end-point shortcut of the inside lint answers as the moved
+        /// rod's exact test does: for rods near and far from the origin,
+        /// with ideal ends, and for points on either side of the surface.
+        #[test]
+        fn rod_shortcut_agrees_with_the_moved_rod(
+            a in prop::array::uniform3(-1.0..1.0f64),
+            b in prop::array::uniform3(-1.0..1.0f64),
+            da in 0.0..2.5f64,
+            db in 0.0..2.5f64,
+            ideal_end in 0..4u8,
+            radius in 0.01..1.0f64,
+            along in -0.2..1.2f64,
+            off in prop::array::uniform3(-1.0..1.0f64),
+            reach in 0.5..1.5f64,
+            far in prop::array::uniform3(-1.0..1.0f64),
+            far_d in 0.0..15.0f64,
+        ) {
+            let start: Vertex = Point::at_distance_from_origin(unit(a), da).unwrap().into();
+            let end: Vertex = if ideal_end == 0 {
+                IdealPoint::from_direction(unit(b)).unwrap().into()
+            } else {
+                Point::at_distance_from_origin(unit(b), db + 0.05).unwrap().into()
+            };
+            prop_assume!(start != end);
+            let Ok(rod) = Rod::new(start, end, radius) else { return Ok(()) };
+            // A point about `reach` radii from the segment's Klein point at
+            // `along`: inside, on and outside the rod.
+            let (ka, kb) = (start.to_hyperboloid(), end.to_hyperboloid());
+            let on = (ka.truncate() / ka.w).lerp(kb.truncate() / kb.w, along.clamp(0.0, 1.0));
+            let centre = Point::from_coords(on / (1.0 + (1.0 - on.length_squared()).max(0.0).sqrt()))
+                .unwrap_or(Point::ORIGIN);
+            let to_centre = Isometry::transvection_from_origin(centre);
+            let point = to_centre.apply(&Point::at_distance_from_origin(unit(off), reach * radius).unwrap());
+            // The whole scene moved away from the origin.
+            let away = Isometry::transvection_from_origin(
+                Point::at_distance_from_origin(unit(far), far_d).unwrap(),
+            );
+            let (rod, point) = (rod.transformed(&away), away.apply(&point));
+            let to_origin = Isometry::transvection_from_origin(point).inverse();
+            prop_assert_eq!(
+                rod_encloses_origin(&rod, &to_origin),
+                rod.transformed(&to_origin).contains_hyperboloid(DVec4::W)
+            );
         }
     }
 }
