@@ -68,8 +68,12 @@ impl PreparedObject {
         stages: &[Isometry],
         pixel_angle: Option<f64>,
     ) -> Vec<BoxedSurface> {
-        let mut moved = shape.transformed(&stages[0]);
-        for iso in &stages[1..] {
+        // A camera at the origin has identity stages, and moving by the
+        // identity only copies (every cached quantity is recomputed from
+        // the same inputs by the same formulas): tens of thousands of rods
+        // of a wireframe honeycomb are not copied for nothing.
+        let mut moved = shape.clone();
+        for iso in stages.iter().filter(|iso| **iso != Isometry::IDENTITY) {
             moved = moved.transformed(iso);
         }
         if let Some(angle) = pixel_angle {
