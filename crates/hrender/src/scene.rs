@@ -72,14 +72,20 @@ impl PreparedObject {
         // identity only copies (every cached quantity is recomputed from
         // the same inputs by the same formulas): tens of thousands of rods
         // of a wireframe honeycomb are not copied for nothing.
-        let mut moved = shape.clone();
+        let mut moved: Option<ir::Shape> = None;
         for iso in stages.iter().filter(|iso| **iso != Isometry::IDENTITY) {
-            moved = moved.transformed(iso);
+            moved = Some(moved.as_ref().unwrap_or(shape).transformed(iso));
         }
-        if let Some(angle) = pixel_angle {
-            moved = moved.for_pixel_angle(angle);
+        if let Some(nearer) =
+            pixel_angle.and_then(|a| moved.as_ref().unwrap_or(shape).for_pixel_angle(a))
+        {
+            moved = Some(nearer);
         }
-        match moved.into_surfaces() {
+        let surfaces = match moved {
+            Some(shape) => shape.into_surfaces(),
+            None => shape.to_surfaces(),
+        };
+        match surfaces {
             Surfaces::Single(s) => vec![s],
             Surfaces::Parts(parts) => parts,
         }

@@ -125,6 +125,27 @@ pub struct HoneycombCell {
 /// `tests/figures.rs`). Two centres within [`SAME_CELL_DISTANCE`] are one
 /// cell: rounding is ~1e-13 at depth 8, distinct cells are 1.06 apart.
 pub fn tessellate(cell: &Polyhedron, depth: usize) -> Result<Vec<HoneycombCell>, GeomError> {
+    Ok(tessellation_placements(cell, depth)?
+        .into_iter()
+        .map(|(placement, depth)| HoneycombCell {
+            polyhedron: cell.transformed(&placement),
+            placement,
+            depth,
+        })
+        .collect())
+}
+
+/// The placements of [`tessellate`]'s cells, in the same order, with each
+/// cell's layer: the search without building any cell. A caller that needs
+/// only some of a cell's geometry (its vertices, for the edges) maps the
+/// generating cell's by the placement itself; [`tessellate`] is
+/// `cell.transformed(placement)` over this list.
+///
+/// Errors and accuracy: as [`tessellate`].
+pub fn tessellation_placements(
+    cell: &Polyhedron,
+    depth: usize,
+) -> Result<Vec<(Isometry, usize)>, GeomError> {
     let mirrors: Vec<Isometry> = cell
         .faces()
         .iter()
@@ -158,14 +179,7 @@ pub fn tessellate(cell: &Polyhedron, depth: usize) -> Result<Vec<HoneycombCell>,
         }
         layer = start..placements.len();
     }
-    Ok(placements
-        .into_iter()
-        .map(|(placement, depth)| HoneycombCell {
-            polyhedron: cell.transformed(&placement),
-            placement,
-            depth,
-        })
-        .collect())
+    Ok(placements)
 }
 
 /// The {4,3,5} honeycomb to the given depth: [`tessellate`] applied to

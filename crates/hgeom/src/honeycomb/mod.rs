@@ -25,7 +25,7 @@ mod walk;
 
 pub use cube435::{
     CUBE_435_DIHEDRAL, HoneycombCell, MAX_TESSELLATION_CELLS, SAME_CELL_DISTANCE, cube_435,
-    cube_435_circumradius, honeycomb_435, tessellate,
+    cube_435_circumradius, honeycomb_435, tessellate, tessellation_placements,
 };
 pub use schlafli::{Schlafli, SchlafliError};
 pub use simplex::CoxeterSimplex;

@@ -185,20 +185,20 @@ impl Shape {
     /// radians at the eye, the origin of the frame it is in: a honeycomb is
     /// walked no farther than where its cells shrink below a pixel
     /// (`RegularHoneycomb::horizon_for_pixel`; beyond, the background
-    /// shows, docs/honeycombs.md); every other shape is unchanged.
-    pub fn for_pixel_angle(self, pixel_angle: f64) -> Shape {
-        match self {
-            Shape::Honeycomb(mut h) => {
-                let horizon = h.surface.horizon_for_pixel(pixel_angle);
-                if horizon < h.surface.horizon()
-                    && let Ok(nearer) = h.surface.clone().with_horizon(horizon)
-                {
-                    h.surface = nearer;
-                }
-                Shape::Honeycomb(h)
-            }
-            other => other,
+    /// shows, docs/honeycombs.md); every other shape is unchanged, and
+    /// `None` says so (without a copy).
+    pub fn for_pixel_angle(&self, pixel_angle: f64) -> Option<Shape> {
+        let Shape::Honeycomb(h) = self else {
+            return None;
+        };
+        let horizon = h.surface.horizon_for_pixel(pixel_angle);
+        if horizon >= h.surface.horizon() {
+            return None;
         }
+        let nearer = h.surface.clone().with_horizon(horizon).ok()?;
+        let mut h = h.clone();
+        h.surface = nearer;
+        Some(Shape::Honeycomb(h))
     }
 
     /// What it costs of the scene-wide primitive budget: its primitives,
@@ -225,9 +225,6 @@ impl Shape {
 
     /// The surfaces to trace: composites give their parts.
     pub fn into_surfaces(self) -> Surfaces {
-        fn boxed<S: Surface + Send + Sync + 'static>(s: S) -> BoxedSurface {
-            Box::new(s)
-        }
         match self {
             Shape::Sphere(s) => Surfaces::Single(boxed(s)),
             Shape::Polygon(p) => Surfaces::Single(boxed(p)),
@@ -241,6 +238,17 @@ impl Shape {
             Shape::Wireframe(rods) => Surfaces::Parts(rods.into_iter().map(boxed).collect()),
             Shape::Mesh(m) => Surfaces::Single(boxed(m)),
             Shape::Honeycomb(h) => Surfaces::Single(boxed(h.surface)),
+        }
+    }
+
+    /// [`Shape::into_surfaces`] of a copy, without copying the whole shape
+    /// first: a wireframe's rods and a polyhedron's faces are copied
+    /// straight into their boxes.
+    pub fn to_surfaces(&self) -> Surfaces {
+        match self {
+            Shape::Polyhedron(p) => Surfaces::Parts(p.faces().iter().cloned().map(boxed).collect()),
+            Shape::Wireframe(rods) => Surfaces::Parts(rods.iter().cloned().map(boxed).collect()),
+            _ => self.clone().into_surfaces(),
         }
     }
 
@@ -315,6 +323,10 @@ impl Shape {
             Shape::Mesh(m) => m.vertices().iter().all(|p| sinh_ahead(p) < 0.0),
         }
     }
+}
+
+fn boxed<S: Surface + Send + Sync + 'static>(s: S) -> BoxedSurface {
+    Box::new(s)
 }
 
 /// True if `rod`, moved by `to_origin`, contains the origin.

@@ -8,7 +8,7 @@ use hgeom::{
 use super::args::Arg;
 use super::figures::{self, Figure, FigureError};
 use super::keywords::ObjectKeyword;
-use super::options::ObjectOptions;
+use super::options::{Built, ObjectOptions};
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::Shape;
 use crate::lower::Lowerer;
@@ -18,7 +18,8 @@ impl Lowerer<'_> {
     /// Builds the shape(s) of a checked statement: one shape, or for
     /// polygons, polyhedra and figures the faceted shapes (each
     /// `Shape::Polygon` or `Shape::Polyhedron`) whose edges the wireframe
-    /// options draw.
+    /// options draw; a tessellation as the copies of its cell
+    /// ([`Built::Copies`]).
     pub(super) fn build(
         &mut self,
         kind: ObjectKeyword,
@@ -27,11 +28,11 @@ impl Lowerer<'_> {
         values: &[&Value],
         opts: &mut ObjectOptions,
         statement: Span,
-    ) -> Option<Vec<Shape>> {
+    ) -> Option<Built> {
         // Exhaustive over the keywords, so a new keyword without a case here
         // does not compile; the arguments were checked against the keyword's
         // row, so a mismatch (`None`) follows an error already reported.
-        match kind {
+        let shapes = match kind {
             ObjectKeyword::Sphere => {
                 let [Arg::Point(c), Arg::Number(r)] = args else {
                     return None;
@@ -132,15 +133,15 @@ impl Lowerer<'_> {
                 }
             }
             ObjectKeyword::Figure(f) => {
-                match figures::build(f, args) {
-                    Ok(shapes) => Some(shapes),
+                return match figures::build(f, args) {
+                    Ok(built) => Some(built),
                     Err(FigureError::Geom(e)) => {
                         self.figure_failure(f, name, values, &e);
                         None
                     }
                     // The arguments were checked against the same table.
                     Err(FigureError::Arguments) => None,
-                }
+                };
             }
             ObjectKeyword::Honeycomb => {
                 let [Arg::Symbol(symbol)] = args else {
@@ -148,7 +149,8 @@ impl Lowerer<'_> {
                 };
                 self.honeycomb(*symbol, opts, statement)
             }
-        }
+        };
+        shapes.map(Built::Shapes)
     }
 
     /// A failed rod or cylinder: coincident points, or a numeric problem.

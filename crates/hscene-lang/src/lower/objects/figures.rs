@@ -6,11 +6,12 @@
 //! are built with the other core objects in `build.rs`.)
 
 use hgeom::{
-    GeomError, Platonic, Polyhedron, cube_435, honeycomb_435, ideal_regular_polygon,
-    lambert_quadrilateral, regular_polygon, saccheri_quadrilateral,
+    GeomError, Platonic, Polyhedron, cube_435, ideal_regular_polygon, lambert_quadrilateral,
+    regular_polygon, saccheri_quadrilateral, tessellation_placements,
 };
 
 use super::args::Arg;
+use super::options::Built;
 use crate::ir::Shape;
 
 /// A predefined figure.
@@ -57,14 +58,14 @@ impl From<GeomError> for FigureError {
 
 /// Builds a figure from checked arguments (in the order of its parameters
 /// in the keyword table).
-pub(super) fn build(f: Figure, args: &[Arg]) -> Result<Vec<Shape>, FigureError> {
+pub(super) fn build(f: Figure, args: &[Arg]) -> Result<Built, FigureError> {
     let numbers: Vec<f64> = args
         .iter()
         .map(Arg::number)
         .collect::<Option<_>>()
         .ok_or(FigureError::Arguments)?;
-    let polygon = |p| Ok(vec![Shape::Polygon(p)]);
-    let solid = |p| Ok(vec![Shape::Polyhedron(p)]);
+    let polygon = |p| Ok(Built::Shapes(vec![Shape::Polygon(p)]));
+    let solid = |p| Ok(Built::Shapes(vec![Shape::Polyhedron(p)]));
     // Counts were checked against their range, so they convert exactly.
     match (f, numbers.as_slice()) {
         (Figure::Regular(n), [size]) => polygon(regular_polygon(n, *size)?),
@@ -80,10 +81,14 @@ pub(super) fn build(f: Figure, args: &[Arg]) -> Result<Vec<Shape>, FigureError> 
         }
         (Figure::GoldenRectangles, [size]) => solid(Polyhedron::golden_rectangles(*size)?),
         (Figure::Cube435, []) => solid(cube_435()?),
-        (Figure::Tessellation435, [depth]) => Ok(honeycomb_435(*depth as usize)?
-            .into_iter()
-            .map(Shape::Polyhedron)
-            .collect()),
+        (Figure::Tessellation435, [depth]) => {
+            let cell = cube_435()?;
+            let placements = tessellation_placements(&cell, *depth as usize)?;
+            Ok(Built::Copies {
+                cell,
+                placements: placements.into_iter().map(|(p, _)| p).collect(),
+            })
+        }
         _ => Err(FigureError::Arguments),
     }
 }

@@ -4,7 +4,7 @@
 //! crease angle) and a honeycomb's `faces`, `vertices`, `depth` and
 //! `colors`; and placing the built shapes by them.
 
-use hgeom::{ConvexPolygon, GeomError, Isometry, Point, Rod, Vertex};
+use hgeom::{GeomError, Isometry, Point, Polyhedron, Rod, Vertex};
 
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::{MaterialId, Object, Shape};
@@ -293,12 +293,33 @@ impl Lowerer<'_> {
     /// their indices.
     pub(super) fn place(
         &mut self,
-        mut shapes: Vec<Shape>,
+        built: Built,
         material: MaterialId,
         opts: ObjectOptions,
         st: &Statement,
     ) -> Vec<usize> {
         let name = st.label.as_ref().map(|l| l.text.clone());
+        let mut shapes = match (built, opts.wireframe) {
+            // Edges alone, where the copies stay: their vertices are all
+            // that is needed, so no face of any copy is built.
+            (Built::Copies { cell, placements }, Some((t, span))) if opts.at.is_none() => {
+                return match copies_wireframe(&cell, &placements, t) {
+                    Ok(rods) => vec![self.push_wireframe(
+                        rods,
+                        material,
+                        &opts,
+                        name,
+                        Isometry::IDENTITY,
+                        st,
+                    )],
+                    Err(e) => {
+                        self.geom_failure(span, "the edges", &e);
+                        Vec::new()
+                    }
+                };
+            }
+            (built, _) => built.into_shapes(),
+        };
         let mut placement = Isometry::IDENTITY;
         if let Some((centre, span)) = opts.at {
             let iso = Isometry::transvection_from_origin(centre);
@@ -353,49 +374,137 @@ impl Lowerer<'_> {
             }
         }
         if let Some(rods) = rods {
-            out.push(self.objects.len());
-            self.objects.push((
-                Object {
-                    shape: Shape::Wireframe(rods),
-                    material: opts.edge_material.unwrap_or(material),
-                    name,
-                    placement,
-                },
-                st.span,
-            ));
+            out.push(self.push_wireframe(rods, material, &opts, name, placement, st));
         }
         out
+    }
+
+    /// Pushes the rods of the edges as one object and returns its index.
+    fn push_wireframe(
+        &mut self,
+        rods: Vec<Rod>,
+        material: MaterialId,
+        opts: &ObjectOptions,
+        name: Option<String>,
+        placement: Isometry,
+        st: &Statement,
+    ) -> usize {
+        self.objects.push((
+            Object {
+                shape: Shape::Wireframe(rods),
+                material: opts.edge_material.unwrap_or(material),
+                name,
+                placement,
+            },
+            st.span,
+        ));
+        self.objects.len() - 1
+    }
+}
+
+/// What a statement built, for [`Lowerer::place`].
+pub(super) enum Built {
+    /// The shapes themselves.
+    Shapes(Vec<Shape>),
+    /// Copies of one cell, one per placement, not built yet: a tessellation
+    /// drawn as edges alone needs only the copies' vertices, and building
+    /// ten thousand cells' faces for that was most of its set-up.
+    Copies {
+        cell: Polyhedron,
+        placements: Vec<Isometry>,
+    },
+}
+
+impl Built {
+    /// The shapes, the copies built as polyhedra.
+    fn into_shapes(self) -> Vec<Shape> {
+        match self {
+            Built::Shapes(shapes) => shapes,
+            Built::Copies { cell, placements } => placements
+                .iter()
+                .map(|p| Shape::Polyhedron(cell.transformed(p)))
+                .collect(),
+        }
     }
 }
 
 /// The rods along every edge of the faces, each edge once.
+fn wireframe(shapes: &[Shape], radius: f64) -> Result<Vec<Rod>, GeomError> {
+    let mut edges = EdgeSet::new(radius);
+    for face in shapes.iter().flat_map(Shape::faces) {
+        edges.add_face(face.vertices())?;
+    }
+    Ok(edges.rods)
+}
+
+/// [`wireframe`] of the copies of `cell`, without building them: each copy's
+/// face has the vertices `p(v)` of the cell's face, in reverse order when
+/// `p` reverses orientation, exactly as [`Polyhedron::transformed`] gives
+/// them, so the rods are the same, in the same order.
+fn copies_wireframe(
+    cell: &Polyhedron,
+    placements: &[Isometry],
+    radius: f64,
+) -> Result<Vec<Rod>, GeomError> {
+    let mut edges = EdgeSet::new(radius);
+    // Every copy's edges, an upper bound (neighbours share them): reserved
+    // untouched, so growing never copies tens of megabytes of rods.
+    let sides: usize = cell.faces().iter().map(|f| f.vertices().len()).sum();
+    edges.reserve(placements.len() * sides / 2);
+    let mut face = Vec::new();
+    for p in placements {
+        for f in cell.faces() {
+            face.clear();
+            face.extend(f.vertices().iter().map(|v| p.apply_vertex(v)));
+            if !p.preserves_orientation() {
+                face.reverse();
+            }
+            edges.add_face(&face)?;
+        }
+    }
+    Ok(edges.rods)
+}
+
+/// Rods along edges, each edge once however many faces bring it.
 ///
 /// Faces of one polyhedron (and neighbouring cells of a tessellation) share
 /// edges whose end points agree only to rounding, so ends are matched on a
 /// grid of 1e-9 in ball coordinates: much finer than any two distinct
 /// vertices of a scene, much coarser than rounding.
-fn wireframe(shapes: &[Shape], radius: f64) -> Result<Vec<Rod>, GeomError> {
-    type Key = [i64; 3];
-    let key = |v: &Vertex| -> Key {
-        let c = v.coords() * 1e9;
-        [c.x.round() as i64, c.y.round() as i64, c.z.round() as i64]
-    };
-    let mut seen: foldhash::HashSet<(Key, Key)> = foldhash::HashSetExt::new();
-    let mut rods = Vec::new();
-    let mut add_polygon = |p: &ConvexPolygon, rods: &mut Vec<Rod>| -> Result<(), GeomError> {
-        let vs = p.vertices();
+struct EdgeSet {
+    radius: f64,
+    seen: foldhash::HashSet<([i64; 3], [i64; 3])>,
+    rods: Vec<Rod>,
+}
+
+impl EdgeSet {
+    fn new(radius: f64) -> EdgeSet {
+        EdgeSet {
+            radius,
+            seen: foldhash::HashSetExt::new(),
+            rods: Vec::new(),
+        }
+    }
+
+    fn reserve(&mut self, edges: usize) {
+        self.seen.reserve(edges);
+        self.rods.reserve(edges);
+    }
+
+    /// Adds the edges of the closed polygon `vs` not already present.
+    fn add_face(&mut self, vs: &[Vertex]) -> Result<(), GeomError> {
+        let key = |v: &Vertex| {
+            let c = v.coords() * 1e9;
+            [c.x.round() as i64, c.y.round() as i64, c.z.round() as i64]
+        };
         for (i, a) in vs.iter().enumerate() {
             let b = &vs[(i + 1) % vs.len()];
             let (ka, kb) = (key(a), key(b));
             let k = if ka <= kb { (ka, kb) } else { (kb, ka) };
-            if seen.insert(k) {
-                rods.push(Rod::new(*a, *b, radius)?);
+            if self.seen.insert(k) {
+                self.rods.push(Rod::new(*a, *b, self.radius)?);
             }
         }
         Ok(())
-    };
-    for face in shapes.iter().flat_map(Shape::faces) {
-        add_polygon(face, &mut rods)?;
     }
-    Ok(rods)
 }
