@@ -508,3 +508,30 @@ impl EdgeSet {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The edges of unbuilt copies are the edges of the built cells: the
+    /// same rods, bit for bit, in the same order (so images do not change).
+    #[test]
+    fn copies_give_the_rods_of_their_built_cells() {
+        let cell = hgeom::cube_435().unwrap();
+        let placements: Vec<Isometry> = hgeom::tessellation_placements(&cell, 3)
+            .unwrap()
+            .into_iter()
+            .map(|(p, _)| p)
+            .collect();
+        let direct = copies_wireframe(&cell, &placements, 0.02).unwrap();
+        let built = Built::Copies {
+            cell: cell.clone(),
+            placements,
+        }
+        .into_shapes();
+        assert_eq!(built.len(), 163);
+        let through_faces = wireframe(&built, 0.02).unwrap();
+        assert_eq!(direct.len(), through_faces.len());
+        assert!(direct == through_faces);
+    }
+}
