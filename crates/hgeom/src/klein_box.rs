@@ -247,8 +247,15 @@ pub fn plain_max(a: f64, b: f64) -> f64 {
     if a > b { a } else { b }
 }
 
-/// The distance from the origin to the segment from `p` to `q`.
-fn nearest_to_origin(p: DVec3, q: DVec3) -> f64 {
+/// The Euclidean distance from the origin to the segment from `p` to `q`
+/// (Klein points, where the geodesic segment is this straight one; the
+/// hyperbolic distance from the origin to it is the `artanh` of this, the
+/// Klein radius growing with the distance).
+///
+/// # Accuracy
+///
+/// A few ulps of `|p| + |q|`; 0 for `p = q` at the origin.
+pub fn nearest_to_origin(p: DVec3, q: DVec3) -> f64 {
     let d = q - p;
     let dd = d.length_squared();
     let t = if dd > 0.0 {

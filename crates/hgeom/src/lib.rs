@@ -90,7 +90,9 @@ pub use honeycomb::{
 };
 pub use horosphere::Horosphere;
 pub use isometry::Isometry;
-pub use klein_box::{KleinBox, KleinRay, plain_max, plain_min, round_outward_f32};
+pub use klein_box::{
+    KleinBox, KleinRay, nearest_to_origin, plain_max, plain_min, round_outward_f32,
+};
 pub use line::HLine;
 pub use mesh::{GivenNormals, TriangleMesh};
 pub use plane::{BallShape, HPlane};

@@ -13,7 +13,7 @@ use hgeom::glam::{DVec3, DVec4};
 use super::honeycomb::{Honeycomb, PartMaterials};
 use hgeom::{
     ConvexPolygon, HCylinder, HPlane, HSphere, Horosphere, Isometry, Point, Polyhedron, Rod,
-    Shape as Surface, TriangleMesh, Vertex, lorentz,
+    Shape as Surface, TriangleMesh, Vertex, lorentz, nearest_to_origin,
 };
 
 /// A surface the renderer can trace, of any kind.
@@ -349,15 +349,7 @@ fn rod_encloses_origin(rod: &Rod, to_origin: &Isometry) -> bool {
         let h = to_origin.apply_vertex(&v).to_hyperboloid();
         h.truncate() / h.w
     };
-    let (a, b) = (klein(rod.start()), klein(rod.end()));
-    let d = b - a;
-    let along = d.length_squared();
-    let t = if along > 0.0 {
-        (-a.dot(d) / along).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    let nearest = (a + t * d).length();
+    let nearest = nearest_to_origin(klein(rod.start()), klein(rod.end()));
     // A NaN from an end f64 cannot move falls through to the exact test.
     if nearest > rod.radius().tanh() + CLEAR {
         return false;
