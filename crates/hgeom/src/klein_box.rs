@@ -306,7 +306,9 @@ impl KleinRay {
             }
         }
         KleinRay {
-            origin: o.truncate() / o.w,
+            // One division for three: the start moves by an ulp at most,
+            // far inside the arc's and the boxes' padding.
+            origin: o.truncate() * o.w.recip(),
             dir,
             o_w: o.w,
             d_w: d.w,
@@ -347,6 +349,13 @@ impl KleinRay {
     #[inline]
     pub fn lambda(&self, t: f64) -> f64 {
         let tau = if t == f64::INFINITY { 1.0 } else { t.tanh() };
+        self.lambda_of_tanh(tau)
+    }
+
+    /// `λ` at the arc length whose hyperbolic tangent is `tau` (1 at the
+    /// absolute): for callers who know `tanh t` without computing `t`.
+    #[inline]
+    pub fn lambda_of_tanh(&self, tau: f64) -> f64 {
         tau / (self.o_w * (self.o_w + tau * self.d_w))
     }
 
@@ -382,13 +391,27 @@ impl KleinRay {
     /// conservative and saves a hyperbolic tangent per ray.
     #[inline]
     pub fn arc(&self, t_min: f64, t_max: f64) -> (f64, f64) {
+        let tau = if t_max == f64::INFINITY {
+            1.0
+        } else {
+            t_max.tanh()
+        };
+        self.arc_to_tanh(t_min, tau)
+    }
+
+    /// [`KleinRay::arc`] with its end given as `tanh(t_max)` (1 for an arc
+    /// to the absolute), same bits: a shadow ray knows the tangent of its
+    /// light's distance by algebra
+    /// ([`Separation::tanh`](crate::lorentz::Separation::tanh)).
+    #[inline]
+    pub fn arc_to_tanh(&self, t_min: f64, tanh_t_max: f64) -> (f64, f64) {
         let lo = if t_min <= NEAR_START {
             0.0
         } else {
             let lo = self.lambda(t_min);
             lo - ARC_SLACK * lo.abs()
         };
-        let hi = self.lambda(t_max);
+        let hi = self.lambda_of_tanh(tanh_t_max);
         (
             lo - f64::MIN_POSITIVE,
             hi + ARC_SLACK * hi.abs() + f64::MIN_POSITIVE,

@@ -191,9 +191,11 @@ impl Accel {
     }
 
     /// Visit every item that may meet the ray's arc `(t_min, t_max)`, in no
-    /// particular order, until `visit` says stop.
+    /// particular order, until `visit` says stop. The arc's end is given as
+    /// `tanh(t_max)` (1 for the absolute): culling needs nothing else, and
+    /// a shadow ray knows it without computing a hyperbolic tangent.
     #[inline]
-    pub fn any(&self, ray: &Ray, t_min: f64, t_max: f64, mut visit: impl FnMut(u32) -> Step) {
+    pub fn any(&self, ray: &Ray, t_min: f64, tanh_t_max: f64, mut visit: impl FnMut(u32) -> Step) {
         for &i in &self.direct {
             if visit(i) == Step::Stop {
                 return;
@@ -211,7 +213,7 @@ impl Accel {
             }
             return;
         }
-        let (lo, hi) = chord.arc(t_min, t_max);
+        let (lo, hi) = chord.arc_to_tanh(t_min, tanh_t_max);
         let c32 = Chord32::new(&chord);
         let (lo, hi) = (c32.lambda_below(lo), c32.lambda_above(hi));
         let mut stack = Stack::with(0u32);
@@ -312,7 +314,7 @@ mod tests {
             if let Some((t, _)) = exhaustive {
                 hits += 1;
                 let mut seen = vec![false; spheres.len()];
-                accel.any(&ray, 1e-9, t * 2.0, |i| {
+                accel.any(&ray, 1e-9, (t * 2.0).tanh(), |i| {
                     seen[i as usize] = true;
                     Step::Continue
                 });

@@ -96,18 +96,58 @@ impl DisplayTransform {
     /// Every sample through the transform, quantised to 8 bits (nearest
     /// level), interleaved RGB.
     pub fn to_rgb8(self, pixels: &[[f32; 3]]) -> Vec<u8> {
+        let mut levels = Recent::new(|c| (self.apply(c) * 255.0).round() as u8);
         pixels
             .iter()
-            .flat_map(|p| p.map(|c| (self.apply(c) * 255.0).round() as u8))
+            .flat_map(|p| p.map(|c| levels.get(c)))
             .collect()
     }
 
     /// Every sample through the transform, quantised to 16 bits.
     pub fn to_rgb16(self, pixels: &[[f32; 3]]) -> Vec<u16> {
+        let mut levels = Recent::new(|c| (self.apply(c) * 65535.0).round() as u16);
         pixels
             .iter()
-            .flat_map(|p| p.map(|c| (self.apply(c) * 65535.0).round() as u16))
+            .flat_map(|p| p.map(|c| levels.get(c)))
             .collect()
+    }
+}
+
+/// Slots of [`Recent`]: a power of two.
+const RECENT_SLOTS: usize = 256;
+
+/// A function of a sample, remembering its latest results by the sample's
+/// bits: the same bits give the same level, so the output is the
+/// function's own, and a picture's many equal samples (its background, an
+/// unlit flat colour) pay the transfer function's power once instead of
+/// once per pixel.
+struct Recent<T, F> {
+    f: F,
+    slots: [Option<(u32, T)>; RECENT_SLOTS],
+}
+
+impl<T: Copy, F: Fn(f32) -> T> Recent<T, F> {
+    fn new(f: F) -> Recent<T, F> {
+        Recent {
+            f,
+            slots: [None; RECENT_SLOTS],
+        }
+    }
+
+    #[inline]
+    fn get(&mut self, c: f32) -> T {
+        let bits = c.to_bits();
+        // Fibonacci hashing: the top bits of the product mix every bit of
+        // the sample, mantissa and exponent alike.
+        let slot = (bits.wrapping_mul(0x9E37_79B9) >> 24) as usize % RECENT_SLOTS;
+        match self.slots[slot] {
+            Some((b, level)) if b == bits => level,
+            _ => {
+                let level = (self.f)(c);
+                self.slots[slot] = Some((bits, level));
+                level
+            }
+        }
     }
 }
 
@@ -138,6 +178,30 @@ mod tests {
             let x = f64::from(i) / 100.0;
             assert!((srgb_decode(srgb_encode(x)) - x).abs() < 1e-12, "{x}");
         }
+    }
+
+    /// Remembered levels are the transform's own: a run of repeated and
+    /// colliding samples, in every order, gives what `apply` gives each.
+    #[test]
+    fn remembered_levels_equal_computed_ones() {
+        let d = DisplayTransform::default();
+        let mut samples: Vec<f32> = (0..5000).map(|i| (i as f32 * 0.37).fract() * 1.2).collect();
+        samples.extend_from_within(..);
+        samples.extend([0.0, -0.0, 1.0, 0.05, 0.05, 0.1, 0.05, f32::MIN_POSITIVE]);
+        let pixels: Vec<[f32; 3]> = samples
+            .chunks_exact(3)
+            .map(|c| [c[0], c[1], c[2]])
+            .collect();
+        let expect8: Vec<u8> = pixels
+            .iter()
+            .flat_map(|p| p.map(|c| (d.apply(c) * 255.0).round() as u8))
+            .collect();
+        let expect16: Vec<u16> = pixels
+            .iter()
+            .flat_map(|p| p.map(|c| (d.apply(c) * 65535.0).round() as u16))
+            .collect();
+        assert_eq!(d.to_rgb8(&pixels), expect8);
+        assert_eq!(d.to_rgb16(&pixels), expect16);
     }
 
     #[test]

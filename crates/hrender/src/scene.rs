@@ -329,12 +329,13 @@ impl PreparedScene {
     /// per object; an object drawn in several materials (a honeycomb) by
     /// that of each part crossed, since its transparent faces are many
     /// separate sheets. The search ends at the first opaque blocker.
-    pub fn transmittance(&self, ray: &Ray, t_min: f64, t_max: f64) -> f64 {
+    /// `tanh_t_max` is `tanh(t_max)`, which the hierarchy culls with.
+    pub fn transmittance(&self, ray: &Ray, t_min: f64, t_max: f64, tanh_t_max: f64) -> f64 {
         let mut s = 1.0;
         // The objects already counted: only translucent ones get here, and
         // a shadow ray meets few of them.
         let mut counted: Vec<u32> = Vec::new();
-        self.accel.any(ray, t_min, t_max, |i| {
+        self.accel.any(ray, t_min, tanh_t_max, |i| {
             let r = self.surfaces[i as usize];
             if counted.contains(&r.object) {
                 return Step::Continue;

@@ -5,7 +5,7 @@
 use std::f64::consts::{PI, TAU};
 
 use hgeom::glam::DVec4;
-use hgeom::lorentz;
+use hgeom::lorentz::{self, Separation};
 use hgeom::ray::{reflect, refract};
 use hgeom::{Hit, Point, Ray, fermi_coordinates};
 use hscene_lang::ir::{Material, Pattern, Rgb, Texture};
@@ -228,9 +228,12 @@ impl<'s> Tracer<'s> {
         at: &Shading<'_>,
         stats: &mut TraceStats,
     ) -> Color {
-        let Some((to_light, dist)) = lorentz::direction_towards(at.p, from) else {
+        let Some(to_light) = lorentz::unit_tangent_towards(at.p, from) else {
             return Color::default();
         };
+        // The distance, its tangent (the shadow ray's arc) and its sinh
+        // (the attenuation) by algebra from one Lorentz separation.
+        let apart = Separation::between(at.p, from);
         let cos_theta = lorentz::dot(at.n, to_light);
         if !(cos_theta > 0.0) {
             return Color::default();
@@ -245,18 +248,15 @@ impl<'s> Tracer<'s> {
                         dir: to_light,
                     },
                     T_MIN,
-                    dist,
+                    apart.distance(),
+                    apart.tanh(),
                 )
             }
         };
         if shadow == 0.0 {
             return Color::default();
         }
-        // sinh d = 2 sinh(d/2) cosh(d/2), with sinh(d/2) = |L - P|/2 (as
-        // in `distance`): no transcendental call.
-        let half = 0.5 * lorentz::norm(from - at.p);
-        let sinh_sq = 4.0 * half * half * (1.0 + half * half);
-        let f_att = 1.0 / (4.0 * PI * sinh_sq);
+        let f_att = 1.0 / (4.0 * PI * apart.sinh_squared());
         at.phong(light, to_light, cos_theta.min(1.0)) * (shadow * f_att)
     }
 

@@ -88,13 +88,17 @@ impl Chord32 {
         // The power of two at most `largest`: its exponent bits alone
         // (`largest >= 1e-200` is normal).
         let scale = f64::from_bits(largest.to_bits() & 0x7ff0_0000_0000_0000);
+        // The reciprocal of a power of two is exact (a subnormal one too),
+        // so multiplying by it is dividing by `scale`, bit for bit, for one
+        // division instead of three.
+        let inv_scale = 1.0 / scale;
         let origin = chord.origin();
         let mut a = [Vec4::ZERO; 3];
         let mut b_enter = [Vec4::ZERO; 3];
         let mut b_leave = [Vec4::ZERO; 3];
         let mut near = [0; 3];
         for i in 0..3 {
-            let mut vi = v[i] / scale;
+            let mut vi = v[i] * inv_scale;
             if vi.abs() < LEAST_COMPONENT {
                 vi = LEAST_COMPONENT.copysign(vi);
             }
