@@ -117,8 +117,9 @@ impl Separation {
     }
 
     /// The distance `d = 2 asinh h`, with
-    /// `asinh h = log1p(h + h^2 / (1 + sqrt(1 + h^2)))`: the same value as
-    /// `f64::asinh` without the `hypot` it calls (which costs as much as
+    /// `asinh h = log1p(h + h^2 / (1 + sqrt(1 + h^2)))` (as
+    /// `h + sqrt(1 + h^2) - 1 = h + h^2 / (1 + sqrt(1 + h^2))`): `f64::asinh`
+    /// to a few ulps, without the `hypot` it calls (which costs as much as
     /// the logarithm). Past `h = 1e150`, where `h^2` would overflow,
     /// `asinh h = ln 2h` to far below an ulp.
     #[inline]
