@@ -58,6 +58,34 @@ pub struct Measured {
     pub peak_mib: f64,
 }
 
+impl Measured {
+    /// The better of two runs of one command: the least CPU and the least
+    /// wall time, each on its own (a VM's neighbours, the scheduler and
+    /// the page cache only ever slow a run down, so the least is the
+    /// estimate with the least of that noise in it), and the larger peak
+    /// memory (the conservative one).
+    pub fn best(self, other: Measured) -> Measured {
+        Measured {
+            cpu_s: self.cpu_s.min(other.cpu_s),
+            wall_s: self.wall_s.min(other.wall_s),
+            peak_mib: self.peak_mib.max(other.peak_mib),
+        }
+    }
+}
+
+/// `--runs N`: how many times each program is run (the measurements kept
+/// are the best of them, [`Measured::best`]); `default` without the flag.
+pub fn runs_arg(args: &[String], default: usize) -> Result<usize, String> {
+    match arg_value(args, "--runs") {
+        None => Ok(default),
+        Some(s) => s
+            .parse()
+            .ok()
+            .filter(|&n: &usize| n > 0)
+            .ok_or(format!("--runs: `{s}` is not a positive whole number")),
+    }
+}
+
 /// The flag under which a bench executable runs as the measuring parent of
 /// one command (see [`measure`]).
 const MEASURE_FLAG: &str = "--measure-child";
