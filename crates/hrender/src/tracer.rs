@@ -231,13 +231,13 @@ impl<'s> Tracer<'s> {
         let Some(to_light) = lorentz::unit_tangent_towards(at.p, from) else {
             return Color::default();
         };
-        // The distance, its tangent (the shadow ray's arc) and its sinh
-        // (the attenuation) by algebra from one Lorentz separation.
-        let apart = Separation::between(at.p, from);
         let cos_theta = lorentz::dot(at.n, to_light);
         if !(cos_theta > 0.0) {
             return Color::default();
         }
+        // The distance, its tangent (the shadow ray's arc) and its sinh
+        // (the attenuation) by algebra from one Lorentz separation.
+        let apart = Separation::between(at.p, from);
         let shadow = match seen {
             Visibility::Clear => 1.0,
             Visibility::Trace => {

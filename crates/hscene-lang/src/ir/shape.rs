@@ -278,10 +278,20 @@ impl Shape {
                         lorentz::dot(here, f.plane().transformed(to_origin).normal()) < 0.0
                     })
             }
-            Shape::Rod(r) => rod_encloses_origin(r, to_origin),
+            Shape::Rod(r) => rod_encloses_origin(r, r.radius().tanh(), to_origin),
             Shape::Cylinder(c) => c.transformed(to_origin).contains_hyperboloid(here),
             Shape::Horosphere(h) => h.transformed(to_origin).contains_hyperboloid(here),
-            Shape::Wireframe(rods) => rods.iter().any(|r| rod_encloses_origin(r, to_origin)),
+            Shape::Wireframe(rods) => {
+                // A wireframe's rods share one radius: one `tanh` for all
+                // of them, not one per rod and frame.
+                let mut reach = (f64::NAN, f64::NAN);
+                rods.iter().any(|r| {
+                    if r.radius() != reach.0 {
+                        reach = (r.radius(), r.radius().tanh());
+                    }
+                    rod_encloses_origin(r, reach.1, to_origin)
+                })
+            }
         }
     }
 
@@ -329,7 +339,8 @@ fn boxed<S: Surface + Send + Sync + 'static>(s: S) -> BoxedSurface {
     Box::new(s)
 }
 
-/// True if `rod`, moved by `to_origin`, contains the origin.
+/// True if `rod`, moved by `to_origin`, contains the origin; `tanh_r` is
+/// the hyperbolic tangent of its radius.
 ///
 /// A rod is the set of points within its radius `r` of its segment, and
 /// the distance from the origin to a point of Klein radius `k` is
@@ -341,7 +352,7 @@ fn boxed<S: Surface + Send + Sync + 'static>(s: S) -> BoxedSurface {
 /// the nearest point is within `CLEAR` of the threshold the moved rod's
 /// own exact test decides, so rounding of the ends cannot change the
 /// answer.
-fn rod_encloses_origin(rod: &Rod, to_origin: &Isometry) -> bool {
+fn rod_encloses_origin(rod: &Rod, tanh_r: f64, to_origin: &Isometry) -> bool {
     /// Klein-radius margin past which the segment is certainly out of
     /// reach: far above the rounding of ends moved by a transvection.
     const CLEAR: f64 = 1e-6;
@@ -351,7 +362,7 @@ fn rod_encloses_origin(rod: &Rod, to_origin: &Isometry) -> bool {
     };
     let nearest = nearest_to_origin(klein(rod.start()), klein(rod.end()));
     // A NaN from an end f64 cannot move falls through to the exact test.
-    if nearest > rod.radius().tanh() + CLEAR {
+    if nearest > tanh_r + CLEAR {
         return false;
     }
     rod.transformed(to_origin).contains_hyperboloid(DVec4::W)
@@ -414,7 +425,7 @@ mod tests {
             let (rod, point) = (rod.transformed(&away), away.apply(&point));
             let to_origin = Isometry::transvection_from_origin(point).inverse();
             prop_assert_eq!(
-                rod_encloses_origin(&rod, &to_origin),
+                rod_encloses_origin(&rod, rod.radius().tanh(), &to_origin),
                 rod.transformed(&to_origin).contains_hyperboloid(DVec4::W)
             );
         }
