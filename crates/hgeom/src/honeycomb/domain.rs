@@ -390,7 +390,9 @@ impl WalkDomain {
         let lambda2 = -lorentz::dot(ray.o, ray.o);
         if let Some(sinh2) = self.sinh2_edge {
             let k = sinh2 * lambda2;
-            let near = self.walls_within(ray, k);
+            let limit2 = wall_limit2(ray, k);
+            let near = self.walls_within(ray, limit2);
+            let bound = limit2.sqrt();
             // Few walls are near (the entry and the exit, mostly): test the
             // edges on pairs of them.
             let nw = self.walls.len();
@@ -406,6 +408,9 @@ impl WalkDomain {
                     let Some(e) = self.edges.get(i) else {
                         continue;
                     };
+                    if !may_near_both(a[f], b[f], a[g], b[g], bound) {
+                        continue;
+                    }
                     let o = [a[e.f], e.alpha * a[e.f] + e.beta * a[e.g]];
                     let v = [b[e.f], e.alpha * b[e.f] + e.beta * b[e.g]];
                     if let Some(v) = tube_roots(o, v, k).map(first_root)
@@ -421,7 +426,7 @@ impl WalkDomain {
             let lambda = lambda2.sqrt();
             let k = self.cosh_vertex * lambda;
             let sigma = self.sinh_vertex * lambda;
-            let near = self.walls_within(ray, sigma * sigma);
+            let near = self.walls_within(ray, wall_limit2(ray, sigma * sigma));
             for (i, vertex) in self.vertices.iter().enumerate() {
                 if near & vertex.walls != vertex.walls {
                     continue;
@@ -450,17 +455,13 @@ impl WalkDomain {
     }
 
     /// The walls the ray comes within `σ` of (`λ sinh` of a distance)
-    /// inside the domain, as bits, given `σ²`: a necessary condition for
-    /// meeting a part on a wall (the part's points are at most its radius
-    /// from every wall through it). In the domain
+    /// inside the domain, as bits, given [`wall_limit2`] of `σ²`: a
+    /// necessary condition for meeting a part on a wall (the part's points
+    /// are at most its radius from every wall through it). In the domain
     /// `<X(τ),n> = cosh τ (a + b tanh τ) >= 0`, so `<X(τ),n> <= σ` needs
     /// `a + b tanh τ <= σ` somewhere on `0 <= tanh τ <= s_exit`, where that
-    /// linear function is least at an end. Squared, with `ε` the rounding
-    /// of `a` and `b` (ulps of `o.w`, which is at least `λ`):
-    /// `(σ + ε)² <= 2σ² + 2ε²`, a looser test that needs no square root.
-    fn walls_within(&self, ray: &DomainRay, sigma2: f64) -> u32 {
-        let eps = 1e-12 * ray.o.w.abs();
-        let limit2 = 2.0 * (sigma2 + eps * eps);
+    /// linear function is least at an end.
+    fn walls_within(&self, ray: &DomainRay, limit2: f64) -> u32 {
         let (a, b) = (ray.a, ray.b);
         let n = a.len().min(b.len());
         let mut bits = 0;
@@ -504,6 +505,32 @@ impl WalkDomain {
     }
 }
 
+/// The square of a bound `L >= σ + ε` on `a + b tanh τ` near a wall, given
+/// `σ²`, with `ε` the rounding of `a` and `b` (ulps of `o.w`, which is at
+/// least `λ`): `(σ + ε)² <= 2σ² + 2ε²`, a looser bound that needs no
+/// square root.
+fn wall_limit2(ray: &DomainRay, sigma2: f64) -> f64 {
+    let eps = 1e-12 * ray.o.w.abs();
+    2.0 * (sigma2 + eps * eps)
+}
+
+/// False if no point of the ray's line is within `bound` of walls `f` and
+/// `g` at once (in `a + b tanh τ`, as [`WalkDomain::walls_within`]), so
+/// that it cannot meet the edge on both. Each wall alone is near at one
+/// end of the ray's way through the domain, mostly the way in and the way
+/// out; both at once only where the way passes close by the edge.
+///
+/// When `b_f` and `b_g` have opposite signs, the greater of the two linear
+/// functions is least where they cross, at
+/// `(|b_f| a_g + |b_g| a_f) / (|b_f| + |b_g|)`; otherwise they may both be
+/// small at one end, and the pair is kept. The rounding of these few
+/// products is far below the `ε` already in `bound`.
+#[inline(always)]
+fn may_near_both(a_f: f64, b_f: f64, a_g: f64, b_g: f64, bound: f64) -> bool {
+    let (wf, wg) = (b_f.abs(), b_g.abs());
+    !(b_f * b_g < 0.0 && wf * a_g + wg * a_f > bound * (wf + wg))
+}
+
 /// No edge between two walls.
 const NO_EDGE: u8 = u8::MAX;
 
@@ -532,6 +559,33 @@ mod tests {
     use crate::point::Point;
     use crate::ray::Ray;
     use crate::test_rng::Rng;
+
+    /// `may_near_both` never drops a pair that some point of the line
+    /// has within the bound of both walls: checked on a fine grid of
+    /// `s = tanh τ` and at the exact crossing.
+    #[test]
+    fn edges_are_skipped_only_where_both_walls_are_never_near() {
+        let mut rng = Rng(11);
+        let mut skipped = 0;
+        for case in 0..20_000 {
+            let mut v = || 4.0 * rng.unit() - 2.0;
+            let (af, bf, ag, bg) = (v(), v(), v(), v());
+            let bound = 0.05 + rng.unit();
+            if may_near_both(af, bf, ag, bg, bound) {
+                continue;
+            }
+            skipped += 1;
+            let worse = |s: f64| (af + bf * s).max(ag + bg * s);
+            let crossing = (ag - af) / (bf - bg);
+            assert!(worse(crossing) > bound * (1.0 - 1e-12), "case {case}");
+            for k in -400..=400 {
+                let s = f64::from(k) / 100.0;
+                assert!(worse(s) > bound, "case {case} at {s}");
+            }
+        }
+        // Most random pairs of opposite slopes are far apart.
+        assert!(skipped > 2_000, "{skipped}");
+    }
 
     fn finite_cell_symbols() -> Vec<Schlafli> {
         Schlafli::ALL

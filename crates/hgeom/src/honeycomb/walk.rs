@@ -95,7 +95,6 @@ use glam::{DMat4, DVec4};
 
 use crate::error::GeomError;
 use crate::isometry::Isometry;
-use crate::klein_box::plain_max;
 use crate::lorentz;
 use crate::point::Point;
 use crate::ray::{Hit, Ray};
@@ -103,7 +102,7 @@ use crate::roots::exp_roots_lazy;
 
 use super::cells::{CellSet, Shells};
 use super::domain::{DomainPart, DomainRay, MAX_WALLS, WalkDomain};
-use super::kernels::{lorentz_inverse, reflect, renormalise, times_reflection};
+use super::kernels::{lorentz_inverse, nearest_exit, reflect, renormalise, times_reflection};
 use super::schlafli::Schlafli;
 use super::simplex::CoxeterSimplex;
 use super::style::{HoneycombStyle, encode_part};
@@ -481,21 +480,11 @@ impl RegularHoneycomb {
         stats.cells = 1;
         while stats.steps < MAX_WALK_STEPS {
             stats.steps += 1;
-            // The exit is the wall with the least s = -a/b over b < 0,
-            // compared as fractions num/den: one division per step.
-            let (mut num, mut den) = (1.0, 1.0);
-            let mut exit = None;
             domain.products(o, d, &mut a, &mut b);
-            for i in 0..nw {
-                // Rounding can leave the start a hair behind a wall
-                // (a_i ~ -1e-17): that exit is immediate.
-                let ahead = plain_max(a[i], 0.0);
-                if i != last && b[i] < 0.0 && ahead * den < -b[i] * num {
-                    (num, den) = (ahead, -b[i]);
-                    exit = Some(i);
-                }
-            }
-            let s_min = num / den;
+            let (exit, s_min) = match nearest_exit(&a, &b, nw, last) {
+                Some((i, s)) => (Some(i), s),
+                None => (None, 1.0),
+            };
             let span = v_span / u_acc;
             let v_exit = match exit {
                 Some(_) => (1.0 + s_min) / (1.0 - s_min),
