@@ -82,33 +82,36 @@ pub(super) struct Chord32 {
 
 impl Chord32 {
     /// The chord of a finite ray ([`KleinRay::is_finite`]).
+    #[inline]
     pub fn new(chord: &KleinRay) -> Chord32 {
         let v = chord.dir();
         let largest = v.abs().max_element();
         // The power of two at most `largest`: its exponent bits alone
         // (`largest >= 1e-200` is normal).
         let scale = f64::from_bits(largest.to_bits() & 0x7ff0_0000_0000_0000);
-        // The reciprocal of a power of two is exact (a subnormal one too),
-        // so multiplying by it is dividing by `scale`, bit for bit, for one
-        // division instead of three.
-        let inv_scale = 1.0 / scale;
+        // Components below LEAST_COMPONENT (after scaling) are raised to
+        // it; scaled by a power of two, that is `|v_i| < least`, exactly.
+        let least = LEAST_COMPONENT * scale;
         let origin = chord.origin();
         let mut a = [Vec4::ZERO; 3];
         let mut b_enter = [Vec4::ZERO; 3];
         let mut b_leave = [Vec4::ZERO; 3];
         let mut near = [0; 3];
         for i in 0..3 {
-            let mut vi = v[i] * inv_scale;
-            if vi.abs() < LEAST_COMPONENT {
-                vi = LEAST_COMPONENT.copysign(vi);
-            }
-            let ai = 1.0 / vi;
+            // `1 / (v_i / scale)` is `scale / v_i` rounded once, as dividing
+            // by a power of two is exact: one division on the way instead
+            // of two.
+            let ai = if v[i].abs() < least {
+                1.0 / LEAST_COMPONENT.copysign(v[i])
+            } else {
+                scale / v[i]
+            };
             let bi = -origin[i] * ai;
             let margin = MARGIN * (ai.abs() + bi.abs());
             a[i] = Vec4::splat(ai as f32);
             b_enter[i] = Vec4::splat((bi - margin) as f32);
             b_leave[i] = Vec4::splat((bi + margin) as f32);
-            near[i] = usize::from(vi < 0.0);
+            near[i] = usize::from(ai < 0.0);
         }
         Chord32 {
             a,
