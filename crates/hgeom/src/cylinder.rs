@@ -182,6 +182,43 @@ impl HCylinder {
         Some((0.5 * near, 0.5 * far))
     }
 
+    /// [`HCylinder::roots`], or with none whether the ray's whole line
+    /// passes clear of the tube: farther from the axis everywhere than a
+    /// radius whose `sinh²` is `1 + CLEAR` times this one's, so that no
+    /// ball of this radius about a point of the axis (a rod's cap) can
+    /// meet it.
+    ///
+    /// The line comes within `ρ` of the axis where
+    /// `a u² - 2 k_ρ u + c <= 0` for some `u = e^{2t} > 0`, that is iff
+    /// `k_ρ > 0` and `k_ρ² >= a c` (`a, c >= 0`), with
+    /// `k_ρ = 2 sinh² ρ - p.q`. In `g = k_ρ - sqrt(a c)` widening the tube
+    /// adds `2 sinh² r CLEAR`; rounding moves `g` by a few ulps of
+    /// `|o|² + |d|²`, so the answer is "clear" only where that is below
+    /// the margin by a factor of a thousand or more, and "not clear" (test
+    /// the caps) otherwise.
+    pub(crate) fn roots_or_clear(&self, ray: &Ray) -> (Option<(f64, f64)>, bool) {
+        const CLEAR: f64 = 1e-2;
+        let ax = self.axis_coords(ray);
+        let p = [ax.o[0] + ax.d[0], ax.o[1] + ax.d[1]];
+        let q = [ax.o[0] - ax.d[0], ax.o[1] - ax.d[1]];
+        let a = p[0] * p[0] + p[1] * p[1];
+        let c = q[0] * q[0] + q[1] * q[1];
+        let (oo, dd) = (
+            ax.o[0] * ax.o[0] + ax.o[1] * ax.o[1],
+            ax.d[0] * ax.d[0] + ax.d[1] * ax.d[1],
+        );
+        let pq = oo - dd;
+        let k = 2.0 * self.sinh2_r - pq;
+        if k > 0.0
+            && let Some((near, far)) = exp_roots(a, k, c)
+        {
+            return (Some((0.5 * near, 0.5 * far)), false);
+        }
+        let wide = 2.0 * self.sinh2_r * (1.0 + CLEAR) - pq;
+        let resolved = (oo + dd) * 1e-12 < self.sinh2_r * CLEAR;
+        (None, resolved && (wide <= 0.0 || wide * wide < a * c))
+    }
+
     pub(crate) fn axis_coords(&self, ray: &Ray) -> AxisCoords {
         let m = self.line.lorentz_basis();
         AxisCoords {

@@ -313,13 +313,19 @@ impl Rod {
                 *best = Some((t, piece));
             }
         };
-        if let Some((near, far)) = self.tube.roots(ray) {
+        let (tube, clear) = self.tube.roots_or_clear(ray);
+        if let Some((near, far)) = tube {
             for t in [near, far] {
                 look(t, Piece::Tube, &mut best);
                 if any && best.is_some() {
                     return best;
                 }
             }
+        }
+        // A line clear of the tube cannot meet the caps, which lie within
+        // the radius of the axis.
+        if clear {
+            return best;
         }
         for (cap, piece) in [
             (self.start_cap.as_ref(), Piece::StartCap),
@@ -384,6 +390,51 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Where the tube test says the ray's line passes clear of the tube,
+    /// the caps are missed too (so `first_piece` may skip them), and the
+    /// roots are the tube's own. Rays graze the ends at the radius and a
+    /// little outside it, on rods near the eye and far from it.
+    #[test]
+    fn a_line_clear_of_the_tube_misses_the_caps() {
+        let mut rng = hscene_test_support::SplitMix64::new(5);
+        let (mut clear, mut tested) = (0, 0);
+        for case in 0..3000 {
+            let far = [0.2, 3.0, 8.0, 12.0][case % 4];
+            let towards = rng.direction();
+            let mut end_point = || {
+                let dir = (towards + 0.2 * rng.direction()).normalize();
+                Point::at_distance_from_origin(dir, far + rng.range(0.0, 0.5))
+            };
+            let (Ok(a), Ok(b)) = (end_point(), end_point()) else {
+                continue;
+            };
+            let radius = [0.005, 0.015, 0.1, 0.6][case % 3];
+            let Ok(rod) = Rod::new(a.into(), b.into(), radius) else {
+                continue;
+            };
+            let end = if case % 2 == 0 { a } else { b };
+            for k in 0..8 {
+                // Aim past the end, off by about the radius in the ball.
+                let off =
+                    radius * (0.2 + 0.3 * f64::from(k)) * (1.0 - end.coords().length_squared());
+                let aim = end.coords() + off * rng.direction();
+                let ray = Ray::from_origin_unchecked(aim);
+                let (roots, is_clear) = rod.tube.roots_or_clear(&ray);
+                assert_eq!(roots, rod.tube.roots(&ray), "case {case}");
+                tested += 1;
+                if is_clear {
+                    clear += 1;
+                    assert!(roots.is_none(), "case {case}");
+                    for cap in [&rod.start_cap, &rod.end_cap].into_iter().flatten() {
+                        assert!(cap.sphere.roots(&ray).is_none(), "case {case}, ray {k}");
+                    }
+                }
+            }
+        }
+        // The shortcut is taken for many of these rays, and not for all.
+        assert!(clear > tested / 10 && clear < tested, "{clear} of {tested}");
     }
 
     #[test]
