@@ -397,7 +397,12 @@ impl RegularHoneycomb {
     /// of them.
     fn window(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<(f64, f64)> {
         let mut lo = if t_min > 0.0 { t_min.exp() } else { 1.0 };
-        let mut hi = t_max.exp();
+        // A primary ray's arc is unbounded: e^inf is inf, without the call.
+        let mut hi = if t_max == f64::INFINITY {
+            f64::INFINITY
+        } else {
+            t_max.exp()
+        };
         // -<X(t),C> = a cosh t + b sinh t = k is (a+b) u² - 2k u + (a-b) = 0
         // in u = e^t; a ± b > 0 for a future C (<O ± D, C> of null vectors).
         let mut clip = |c: DVec4, k: f64| {
