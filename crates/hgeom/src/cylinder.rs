@@ -167,19 +167,7 @@ impl HCylinder {
     ///
     /// As [`HCylinder::intersect`], for both roots.
     pub fn roots(&self, ray: &Ray) -> Option<(f64, f64)> {
-        let ax = self.axis_coords(ray);
-        let p = [ax.o[0] + ax.d[0], ax.o[1] + ax.d[1]];
-        let q = [ax.o[0] - ax.d[0], ax.o[1] - ax.d[1]];
-        let a = p[0] * p[0] + p[1] * p[1];
-        let c = q[0] * q[0] + q[1] * q[1];
-        // p.q = |o|^2 - |d|^2, computed from o and d directly: fewer roundings.
-        let pq = (ax.o[0] * ax.o[0] + ax.o[1] * ax.o[1]) - (ax.d[0] * ax.d[0] + ax.d[1] * ax.d[1]);
-        let k = 2.0 * self.sinh2_r - pq;
-        if !(k > 0.0) {
-            return None;
-        }
-        let (near, far) = exp_roots(a, k, c)?;
-        Some((0.5 * near, 0.5 * far))
+        self.roots_or_clear(ray).0
     }
 
     /// [`HCylinder::roots`], or with none whether the ray's whole line
@@ -203,6 +191,7 @@ impl HCylinder {
         let q = [ax.o[0] - ax.d[0], ax.o[1] - ax.d[1]];
         let a = p[0] * p[0] + p[1] * p[1];
         let c = q[0] * q[0] + q[1] * q[1];
+        // p.q = |o|^2 - |d|^2, computed from o and d directly: fewer roundings.
         let (oo, dd) = (
             ax.o[0] * ax.o[0] + ax.o[1] * ax.o[1],
             ax.d[0] * ax.d[0] + ax.d[1] * ax.d[1],
