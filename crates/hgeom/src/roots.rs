@@ -43,22 +43,36 @@ impl ExpRoots {
     }
 
     /// [`first_in_range`] of the two roots, taking the far one's logarithm
-    /// only if the near one is not past `t_min`.
+    /// only if the near one is not past `t_min`, and neither where its
+    /// root is plainly not past `t_min` ([`plainly_not_past`]): a shadow
+    /// ray leaving a sphere has both roots at or behind its start, and
+    /// needed two logarithms to say so.
     #[inline]
     pub(crate) fn first_in_range(&self, t_min: f64, t_max: f64) -> Option<f64> {
-        let near = self.near();
-        let t = if near > t_min {
-            near
-        } else {
-            let far = self.far();
-            if far > t_min {
-                far
-            } else {
-                return None;
+        let (u_near, u_far) = self.exp();
+        if !plainly_not_past(u_near, t_min) {
+            let near = u_near.ln();
+            if near > t_min {
+                return (near < t_max).then_some(near);
             }
-        };
-        (t < t_max).then_some(t)
+        }
+        if plainly_not_past(u_far, t_min) {
+            return None;
+        }
+        let far = u_far.ln();
+        (far > t_min && far < t_max).then_some(far)
     }
+}
+
+/// True only if `ln u <= t_min`, decided without the logarithm; false
+/// where that takes it. For `|t_min| <= 1e-6`,
+/// `1 + t_min <= e^{t_min}` (and `1 + t_min` rounds by an ulp of 1), so
+/// `u < 1 + t_min - 1e-15` puts `ln u` at least `8e-16` below `t_min`,
+/// far more than the error of a logarithm near `t_min` (an ulp of
+/// `1e-6`): the logarithm would say the same.
+#[inline]
+fn plainly_not_past(u: f64, t_min: f64) -> bool {
+    t_min.abs() <= 1e-6 && u < (1.0 + t_min) - 1e-15
 }
 
 /// [`exp_roots`] with the logarithms left to the caller.
@@ -120,6 +134,49 @@ pub(crate) fn first_in_range(near: f64, far: f64, t_min: f64, t_max: f64) -> Opt
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// [`ExpRoots::first_in_range`] as it was, with both logarithms.
+    fn first_in_range_by_logs(r: &ExpRoots, t_min: f64, t_max: f64) -> Option<f64> {
+        first_in_range(r.near(), r.far(), t_min, t_max)
+    }
+
+    /// The shortcut never changes an answer: roots placed just before,
+    /// at and after the arc's start (to a few ulps), for the starts the
+    /// renderer uses and others.
+    #[test]
+    fn roots_behind_the_start_are_passed_over_as_the_logarithms_would() {
+        let mut rng = hscene_test_support::SplitMix64::new(3);
+        let mut skipped = 0;
+        for case in 0..200_000 {
+            let t_min = [0.0, 1e-9, -1e-9, 1e-6, 2e-6, 0.3][case % 6];
+            let near_root = |rng: &mut hscene_test_support::SplitMix64| match rng.next_u64() % 4 {
+                0 => t_min + rng.range(-1e-15, 1e-15),
+                1 => t_min * (1.0 + rng.range(-1e-12, 1e-12)),
+                2 => rng.range(-3.0, 3.0),
+                _ => rng.range(-1e-12, 1e-12),
+            };
+            let (mut a, mut b) = (near_root(&mut rng), near_root(&mut rng));
+            if a > b {
+                std::mem::swap(&mut a, &mut b);
+            }
+            // alpha u² - 2 k u + beta with roots e^a, e^b.
+            let (ua, ub) = (a.exp(), b.exp());
+            let alpha = rng.range(0.1, 10.0);
+            let (k, beta) = (0.5 * alpha * (ua + ub), alpha * ua * ub);
+            let Some(r) = exp_roots_lazy(alpha, k, beta) else {
+                continue;
+            };
+            let t_max = [f64::INFINITY, 0.5, t_min][case % 3];
+            assert_eq!(
+                r.first_in_range(t_min, t_max),
+                first_in_range_by_logs(&r, t_min, t_max),
+                "case {case}: roots {a}, {b}, t_min {t_min}"
+            );
+            let (un, uf) = r.exp();
+            skipped += usize::from(plainly_not_past(un, t_min) || plainly_not_past(uf, t_min));
+        }
+        assert!(skipped > 10_000, "{skipped}");
+    }
 
     #[test]
     fn roots_solve_the_quadratic() {
