@@ -180,12 +180,17 @@ impl HCylinder {
     /// `a u² - 2 k_ρ u + c <= 0` for some `u = e^{2t} > 0`, that is iff
     /// `k_ρ > 0` and `k_ρ² >= a c` (`a, c >= 0`), with
     /// `k_ρ = 2 sinh² ρ - p.q`. In `g = k_ρ - sqrt(a c)` widening the tube
-    /// adds `2 sinh² r CLEAR`; rounding moves `g` by a few ulps of
-    /// `|o|² + |d|²`, so the answer is "clear" only where that is below
-    /// the margin by a factor of a thousand or more, and "not clear" (test
-    /// the caps) otherwise.
+    /// adds the margin `M = 2 sinh² r CLEAR`. Rounding moves `g` by a few
+    /// ulps of `|o|² + |d|²` in the last steps, and by `|o| + |d|` times
+    /// the error of the axis coordinates `o`, `d` themselves: Lorentz
+    /// products of the ray's start and direction with the axis basis, a
+    /// few ulps of `(X_0 + V_0 + 1) |N|` (Euclidean norms; large for a
+    /// ray starting far out beside a far rod, where the products cancel).
+    /// The answer is "clear" only where a thousand times both is below half
+    /// the margin, and "not clear" (test the caps) otherwise.
     pub(crate) fn roots_or_clear(&self, ray: &Ray) -> (Option<(f64, f64)>, bool) {
         const CLEAR: f64 = 1e-2;
+        const SLACK: f64 = 1e-12;
         let ax = self.axis_coords(ray);
         let p = [ax.o[0] + ax.d[0], ax.o[1] + ax.d[1]];
         let q = [ax.o[0] - ax.d[0], ax.o[1] - ax.d[1]];
@@ -204,7 +209,16 @@ impl HCylinder {
             return (Some((0.5 * near, 0.5 * far)), false);
         }
         let wide = 2.0 * self.sinh2_r * (1.0 + CLEAR) - pq;
-        let resolved = (oo + dd) * 1e-12 < self.sinh2_r * CLEAR;
+        // `x + y < M` with `x = SLACK (|o|² + |d|²)` and
+        // `y = SLACK sqrt(|o|² + |d|²) (X_0 + V_0 + 1) |N|`, squared where
+        // both sides are positive: no square root.
+        let m = self.line.lorentz_basis();
+        let nn = m.x_axis.length_squared().max(m.y_axis.length_squared());
+        let input = ray.origin.w.abs() + ray.dir.w.abs() + 1.0;
+        let margin = self.sinh2_r * CLEAR;
+        let x = SLACK * (oo + dd);
+        let y2 = SLACK * SLACK * (oo + dd) * input * input * nn;
+        let resolved = x < margin && y2 < (margin - x) * (margin - x);
         (None, resolved && (wide <= 0.0 || wide * wide < a * c))
     }
 

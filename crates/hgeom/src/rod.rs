@@ -410,17 +410,24 @@ mod tests {
             let (Ok(a), Ok(b)) = (end_point(), end_point()) else {
                 continue;
             };
-            let radius = [0.005, 0.015, 0.1, 0.6][case % 3];
+            let radius = [0.005, 0.015, 0.1, 0.6][case / 4 % 4];
             let Ok(rod) = Rod::new(a.into(), b.into(), radius) else {
                 continue;
             };
             let end = if case % 2 == 0 { a } else { b };
+            // Shadow and reflected rays start out there, beside the rod.
+            let shrink = 1.0 - end.coords().length_squared();
+            let beside = Point::from_coords(
+                0.5 * (a.coords() + b.coords()) + 0.01 * shrink * rng.direction(),
+            );
             for k in 0..8 {
                 // Aim past the end, off by about the radius in the ball.
-                let off =
-                    radius * (0.2 + 0.3 * f64::from(k)) * (1.0 - end.coords().length_squared());
+                let off = radius * (0.2 + 0.3 * f64::from(k)) * shrink;
                 let aim = end.coords() + off * rng.direction();
-                let ray = Ray::from_origin_unchecked(aim);
+                let ray = match (&beside, k % 2) {
+                    (Ok(start), 1) => Ray::from_ball_unchecked(start, aim - start.coords()),
+                    _ => Ray::from_origin_unchecked(aim),
+                };
                 let (roots, is_clear) = rod.tube.roots_or_clear(&ray);
                 assert_eq!(roots, rod.tube.roots(&ray), "case {case}");
                 tested += 1;
