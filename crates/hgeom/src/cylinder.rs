@@ -27,6 +27,30 @@ pub struct HCylinder {
     sinh2_r: f64,
 }
 
+/// [`HCylinder::quadratic`]: its coefficients, and `|o|²`, `|d|²` and
+/// `p.q = |o|² - |d|²` of the axis coordinates it came from.
+#[derive(Clone, Copy, Debug)]
+struct TubeQuadratic {
+    a: f64,
+    c: f64,
+    k: f64,
+    oo: f64,
+    dd: f64,
+    pq: f64,
+}
+
+impl TubeQuadratic {
+    /// The two arc lengths, as [`HCylinder::roots`].
+    #[inline]
+    fn roots(&self) -> Option<(f64, f64)> {
+        if !(self.k > 0.0) {
+            return None;
+        }
+        let (near, far) = exp_roots(self.a, self.k, self.c)?;
+        Some((0.5 * near, 0.5 * far))
+    }
+}
+
 /// The coefficients of the equidistant quadric along a ray, shared with rods.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct AxisCoords {
@@ -167,7 +191,7 @@ impl HCylinder {
     ///
     /// As [`HCylinder::intersect`], for both roots.
     pub fn roots(&self, ray: &Ray) -> Option<(f64, f64)> {
-        self.roots_or_clear(ray).0
+        self.quadratic(ray).roots()
     }
 
     /// [`HCylinder::roots`], or with none whether the ray's whole line
@@ -191,24 +215,11 @@ impl HCylinder {
     pub(crate) fn roots_or_clear(&self, ray: &Ray) -> (Option<(f64, f64)>, bool) {
         const CLEAR: f64 = 1e-2;
         const SLACK: f64 = 1e-12;
-        let ax = self.axis_coords(ray);
-        let p = [ax.o[0] + ax.d[0], ax.o[1] + ax.d[1]];
-        let q = [ax.o[0] - ax.d[0], ax.o[1] - ax.d[1]];
-        let a = p[0] * p[0] + p[1] * p[1];
-        let c = q[0] * q[0] + q[1] * q[1];
-        // p.q = |o|^2 - |d|^2, computed from o and d directly: fewer roundings.
-        let (oo, dd) = (
-            ax.o[0] * ax.o[0] + ax.o[1] * ax.o[1],
-            ax.d[0] * ax.d[0] + ax.d[1] * ax.d[1],
-        );
-        let pq = oo - dd;
-        let k = 2.0 * self.sinh2_r - pq;
-        if k > 0.0
-            && let Some((near, far)) = exp_roots(a, k, c)
-        {
-            return (Some((0.5 * near, 0.5 * far)), false);
+        let q = self.quadratic(ray);
+        if let Some(roots) = q.roots() {
+            return (Some(roots), false);
         }
-        let wide = 2.0 * self.sinh2_r * (1.0 + CLEAR) - pq;
+        let wide = 2.0 * self.sinh2_r * (1.0 + CLEAR) - q.pq;
         // `x + y < M` with `x = SLACK (|o|² + |d|²)` and
         // `y = SLACK sqrt(|o|² + |d|²) (X_0 + V_0 + 1) |N|`, squared where
         // both sides are positive: no square root.
@@ -216,10 +227,33 @@ impl HCylinder {
         let nn = m.x_axis.length_squared().max(m.y_axis.length_squared());
         let input = ray.origin.w.abs() + ray.dir.w.abs() + 1.0;
         let margin = self.sinh2_r * CLEAR;
-        let x = SLACK * (oo + dd);
-        let y2 = SLACK * SLACK * (oo + dd) * input * input * nn;
+        let size = q.oo + q.dd;
+        let x = SLACK * size;
+        let y2 = SLACK * SLACK * size * input * input * nn;
         let resolved = x < margin && y2 < (margin - x) * (margin - x);
-        (None, resolved && (wide <= 0.0 || wide * wide < a * c))
+        (None, resolved && (wide <= 0.0 || wide * wide < q.a * q.c))
+    }
+
+    /// The tube's quadratic `a u² - 2 k u + c` in `u = e^{2t}` along `ray`.
+    #[inline]
+    fn quadratic(&self, ray: &Ray) -> TubeQuadratic {
+        let ax = self.axis_coords(ray);
+        let p = [ax.o[0] + ax.d[0], ax.o[1] + ax.d[1]];
+        let q = [ax.o[0] - ax.d[0], ax.o[1] - ax.d[1]];
+        // p.q = |o|^2 - |d|^2, computed from o and d directly: fewer roundings.
+        let (oo, dd) = (
+            ax.o[0] * ax.o[0] + ax.o[1] * ax.o[1],
+            ax.d[0] * ax.d[0] + ax.d[1] * ax.d[1],
+        );
+        let pq = oo - dd;
+        TubeQuadratic {
+            a: p[0] * p[0] + p[1] * p[1],
+            c: q[0] * q[0] + q[1] * q[1],
+            k: 2.0 * self.sinh2_r - pq,
+            oo,
+            dd,
+            pq,
+        }
     }
 
     pub(crate) fn axis_coords(&self, ray: &Ray) -> AxisCoords {
