@@ -4,9 +4,10 @@
 //! object ([`crate::accel`]), so a ray pays the exact intersection only for
 //! what it may actually meet.
 
+use hgeom::Shape as Surface;
 use hgeom::glam::{DVec3, DVec4};
 use hgeom::{Hit, Isometry, KleinBox, Point, Ray};
-use hscene_lang::ir::{self, BoxedSurface, Fog, Material, PartMaterials, Rgb, Scene, Surfaces};
+use hscene_lang::ir::{self, Fog, Material, PartMaterials, Rgb, Scene, Surfaces};
 
 use rayon::prelude::*;
 
@@ -20,7 +21,7 @@ pub struct PreparedObject {
     /// composite (a polyhedron's faces, a wireframe's rods). Which kinds of
     /// surface there are is the IR's business ([`ir::Shape`]); here every
     /// surface is an `hgeom::Shape`.
-    pub surfaces: Vec<BoxedSurface>,
+    pub surfaces: Surfaces,
     /// Index into the materials.
     pub material: usize,
     /// The materials of its parts, for an object drawn in several (a
@@ -63,11 +64,7 @@ impl PreparedObject {
 
     /// The shape moved by each of `stages` in turn, as surfaces; drawn for
     /// pixels of `pixel_angle` radians if given.
-    fn surfaces_of(
-        shape: &ir::Shape,
-        stages: &[Isometry],
-        pixel_angle: Option<f64>,
-    ) -> Vec<BoxedSurface> {
+    fn surfaces_of(shape: &ir::Shape, stages: &[Isometry], pixel_angle: Option<f64>) -> Surfaces {
         // A camera at the origin has identity stages, and moving by the
         // identity only copies (every cached quantity is recomputed from
         // the same inputs by the same formulas): tens of thousands of rods
@@ -81,13 +78,9 @@ impl PreparedObject {
         {
             moved = Some(nearer);
         }
-        let surfaces = match moved {
+        match moved {
             Some(shape) => shape.into_surfaces(),
             None => shape.to_surfaces(),
-        };
-        match surfaces {
-            Surfaces::Single(s) => vec![s],
-            Surfaces::Parts(parts) => parts,
         }
     }
 
@@ -96,7 +89,7 @@ impl PreparedObject {
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         let mut limit = t_max;
         let mut best = None;
-        for s in &self.surfaces {
+        for s in self.surfaces.iter() {
             if let Some(hit) = s.intersect(ray, t_min, limit) {
                 limit = hit.t;
                 best = Some(hit);
@@ -313,7 +306,10 @@ impl PreparedScene {
         }
         let found = self.accel.nearest(ray, t_min, f64::INFINITY, |i, lo, hi| {
             let r = self.surfaces[i as usize];
-            self.objects[r.object as usize].surfaces[r.surface as usize].intersect(ray, lo, hi)
+            self.objects[r.object as usize]
+                .surfaces
+                .get(r.surface as usize)
+                .intersect(ray, lo, hi)
         });
         match found {
             None => Nearest::Miss,
@@ -341,7 +337,7 @@ impl PreparedScene {
                 return Step::Continue;
             }
             let o = &self.objects[r.object as usize];
-            let surface = &o.surfaces[r.surface as usize];
+            let surface = o.surfaces.get(r.surface as usize);
             if o.parts.is_some() {
                 s *= self.parts_transmittance(o, surface, ray, t_min, t_max);
                 if s == 0.0 {
@@ -368,7 +364,7 @@ impl PreparedScene {
     fn parts_transmittance(
         &self,
         o: &PreparedObject,
-        surface: &BoxedSurface,
+        surface: &dyn Surface,
         ray: &Ray,
         t_min: f64,
         t_max: f64,
@@ -406,7 +402,12 @@ fn hierarchy(objects: &[PreparedObject]) -> (Vec<SurfaceRef>, Accel) {
     let boxes: Vec<Vec<KleinBox>> = surfaces
         .par_iter()
         .map(|r| {
-            fewest_boxes(objects[r.object as usize].surfaces[r.surface as usize].klein_boxes())
+            fewest_boxes(
+                objects[r.object as usize]
+                    .surfaces
+                    .get(r.surface as usize)
+                    .klein_boxes(),
+            )
         })
         .collect();
     let mut leaves = Vec::with_capacity(boxes.iter().map(Vec::len).sum());
@@ -502,7 +503,7 @@ mod tests {
             ir::Shape::Polygon(poly),
             ir::Shape::Polygon(ideal),
             ir::Shape::Polyhedron(dodeca),
-            ir::Shape::Wireframe(vec![rod]),
+            ir::Shape::Wireframe(vec![rod].into()),
             ir::Shape::Sphere(hgeom::HSphere::new(p(0.1, 0.0, 0.6), 0.3).unwrap()),
         ];
         for shape in &shapes {
@@ -514,7 +515,7 @@ mod tests {
                 let ray = Ray::from_origin_unchecked(DVec3::new(r * a.sin(), r * a.cos(), 1.0));
                 let chord = hgeom::KleinRay::new(&ray);
                 let (lo, hi) = chord.arc(0.0, f64::INFINITY);
-                for s in &surfaces {
+                for s in surfaces.iter() {
                     let boxes = s.klein_boxes();
                     assert!(!boxes.is_empty(), "{}", shape.kind_name());
                     if let Some(hit) = s.intersect(&ray, 0.0, f64::INFINITY) {

@@ -69,7 +69,7 @@ fn every_kind() -> Vec<(&'static str, Shape)> {
             cylinder(p(-0.1, 0.0, 0.4), p(0.1, 0.05, 0.45), 0.05),
         ),
         ("horosphere", Shape::Horosphere(horo)),
-        ("wireframe", Shape::Wireframe(edges)),
+        ("wireframe", Shape::Wireframe(edges.into())),
     ]
 }
 

@@ -285,7 +285,7 @@ fn platonic_wireframe_has_one_rod_per_edge() {
             panic!()
         };
         assert_eq!(rods.len(), edges, "{name}");
-        for r in rods {
+        for r in rods.iter() {
             // Every end is a vertex: at the circumradius from the origin.
             for v in [r.start(), r.end()] {
                 let p = pt(interior(v));
@@ -446,7 +446,7 @@ fn every_shape_kind_can_be_moved() {
     let Shape::Wireframe(rods) = &s.objects[5].shape else {
         panic!()
     };
-    for r in rods {
+    for r in rods.iter() {
         let d = pt(interior(r.start())).distance(pt(z));
         assert!((d - 0.2).abs() < 1e-12);
     }

@@ -327,7 +327,7 @@ pub fn many_rods_scene(n: usize, size: u32) -> Scene {
             wire.push(r);
         }
     }
-    objects.push(obj(Shape::Wireframe(wire), 1));
+    objects.push(obj(Shape::Wireframe(wire.into()), 1));
     // A wall behind everything, to catch the shadows: the h-plane
     // orthogonal to the z axis at distance 2.3.
     // Cannot fail: two distinct points on the z axis.
@@ -370,7 +370,7 @@ pub fn solids_scene(net: Net, size: u32, window: f64) -> Scene {
         .expect("horosphere");
     let objects = vec![
         obj(Shape::Polyhedron(dodeca), 0),
-        obj(Shape::Wireframe(edges), 1),
+        obj(Shape::Wireframe(edges.into()), 1),
         obj(Shape::Horosphere(horo), 2),
     ];
     scene(

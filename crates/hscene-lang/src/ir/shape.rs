@@ -8,6 +8,8 @@
 //! the lowering's keyword table, and its JSON fields in the binary's IR
 //! writer (`docs/ARCHITECTURE.md`, "Adding a primitive").
 
+use std::sync::Arc;
+
 use hgeom::glam::{DVec3, DVec4};
 
 use super::honeycomb::{Honeycomb, PartMaterials};
@@ -19,14 +21,52 @@ use hgeom::{
 /// A surface the renderer can trace, of any kind.
 pub type BoxedSurface = Box<dyn Surface + Send + Sync>;
 
-/// What a shape is made of, for a renderer.
+/// What a shape is made of, for a renderer: one surface, or several parts
+/// (a polyhedron's faces, a wireframe's rods), which a renderer may put
+/// under a bounding hierarchy; the object is met where its nearest part
+/// is. Parts are kept as they are, not boxed one by one: a wireframe of
+/// tens of thousands of rods is shared with the IR, not copied.
 pub enum Surfaces {
     /// One surface.
     Single(BoxedSurface),
-    /// Several parts (a polyhedron's faces, a wireframe's rods), which a
-    /// renderer may put under a bounding hierarchy of their own; the object
-    /// is met where its nearest part is.
-    Parts(Vec<BoxedSurface>),
+    /// A polyhedron's faces.
+    Faces(Vec<ConvexPolygon>),
+    /// A wireframe's rods.
+    Rods(Arc<Vec<Rod>>),
+}
+
+impl Surfaces {
+    /// The number of surfaces.
+    pub fn len(&self) -> usize {
+        match self {
+            Surfaces::Single(_) => 1,
+            Surfaces::Faces(f) => f.len(),
+            Surfaces::Rods(r) => r.len(),
+        }
+    }
+
+    /// True if there are none (a polyhedron without faces).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The `k`-th surface; panics unless `k < len()`, like a slice.
+    #[inline]
+    pub fn get(&self, k: usize) -> &(dyn Surface + Send + Sync) {
+        match self {
+            Surfaces::Single(s) => {
+                assert_eq!(k, 0, "a single surface is surface 0");
+                s.as_ref()
+            }
+            Surfaces::Faces(f) => &f[k],
+            Surfaces::Rods(r) => &r[k],
+        }
+    }
+
+    /// The surfaces in order.
+    pub fn iter(&self) -> impl Iterator<Item = &(dyn Surface + Send + Sync)> {
+        (0..self.len()).map(|k| self.get(k))
+    }
 }
 
 /// Mesh triangles per primitive of the scene-wide budget: a mesh of up to
@@ -58,8 +98,10 @@ pub enum Shape {
     Cylinder(HCylinder),
     /// A horosphere (the outside is away from its ideal centre).
     Horosphere(Horosphere),
-    /// A wireframe: the edges of a polygon or polyhedron as rods.
-    Wireframe(Vec<Rod>),
+    /// A wireframe: the edges of a polygon or polyhedron as rods (shared:
+    /// a tessellation's are tens of megabytes, which the renderer traces in
+    /// place when the camera needs no move).
+    Wireframe(Arc<Vec<Rod>>),
     /// A triangle mesh (from an OBJ or PLY file).
     Mesh(TriangleMesh),
     /// A regular honeycomb, walked ray by ray (boxed: its walk tables are
@@ -134,7 +176,7 @@ impl Shape {
             Shape::Horosphere(h) => Shape::Horosphere(h.transformed(iso)),
             Shape::Mesh(m) => Shape::Mesh(m.transformed(iso)),
             Shape::Wireframe(rods) => {
-                Shape::Wireframe(rods.iter().map(|r| r.transformed(iso)).collect())
+                Shape::Wireframe(Arc::new(rods.iter().map(|r| r.transformed(iso)).collect()))
             }
             Shape::Honeycomb(h) => Shape::Honeycomb(Box::new(Honeycomb {
                 surface: h.surface.transformed(iso),
@@ -228,26 +270,23 @@ impl Shape {
         match self {
             Shape::Sphere(s) => Surfaces::Single(boxed(s)),
             Shape::Polygon(p) => Surfaces::Single(boxed(p)),
-            Shape::Polyhedron(p) => {
-                Surfaces::Parts(p.into_faces().into_iter().map(boxed).collect())
-            }
+            Shape::Polyhedron(p) => Surfaces::Faces(p.into_faces()),
             Shape::Plane(p) => Surfaces::Single(boxed(p)),
             Shape::Rod(r) => Surfaces::Single(boxed(r)),
             Shape::Cylinder(c) => Surfaces::Single(boxed(c)),
             Shape::Horosphere(h) => Surfaces::Single(boxed(h)),
-            Shape::Wireframe(rods) => Surfaces::Parts(rods.into_iter().map(boxed).collect()),
+            Shape::Wireframe(rods) => Surfaces::Rods(rods),
             Shape::Mesh(m) => Surfaces::Single(boxed(m)),
             Shape::Honeycomb(h) => Surfaces::Single(boxed(h.surface)),
         }
     }
 
     /// [`Shape::into_surfaces`] of a copy, without copying the whole shape
-    /// first: a wireframe's rods and a polyhedron's faces are copied
-    /// straight into their boxes.
+    /// first: a polyhedron gives a copy of its faces alone, a wireframe
+    /// its shared rods.
     pub fn to_surfaces(&self) -> Surfaces {
         match self {
-            Shape::Polyhedron(p) => Surfaces::Parts(p.faces().iter().cloned().map(boxed).collect()),
-            Shape::Wireframe(rods) => Surfaces::Parts(rods.iter().cloned().map(boxed).collect()),
+            Shape::Polyhedron(p) => Surfaces::Faces(p.faces().to_vec()),
             _ => self.clone().into_surfaces(),
         }
     }
@@ -381,6 +420,39 @@ mod tests {
         } else {
             d.normalize()
         }
+    }
+
+    /// A wireframe's surfaces are its rods, shared and not copied, in
+    /// order; a polyhedron's are its faces; every other shape is one.
+    #[test]
+    fn surfaces_are_the_parts_in_order_and_a_wireframe_shares_its_rods() {
+        let p = |x: f64, y: f64| Vertex::from(Point::from_coords(DVec3::new(x, y, 0.1)).unwrap());
+        let rods = Arc::new(vec![
+            Rod::new(p(0.0, 0.0), p(0.3, 0.0), 0.02).unwrap(),
+            Rod::new(p(0.3, 0.0), p(0.3, 0.4), 0.05).unwrap(),
+        ]);
+        let wire = Shape::Wireframe(rods.clone());
+        let surfaces = wire.to_surfaces();
+        let Surfaces::Rods(shared) = &surfaces else {
+            panic!("a wireframe gives its rods");
+        };
+        assert!(Arc::ptr_eq(shared, &rods));
+        assert_eq!(surfaces.len(), 2);
+        let ray = hgeom::Ray::from_ball_unchecked(&Point::ORIGIN, DVec3::new(0.3, 0.2, 0.1));
+        for (k, s) in surfaces.iter().enumerate() {
+            assert_eq!(
+                s.intersect(&ray, 0.0, 9.0),
+                rods[k].intersect(&ray, 0.0, 9.0)
+            );
+            assert_eq!(s.klein_boxes(), rods[k].klein_boxes());
+        }
+        let cube = hgeom::cube_435().unwrap();
+        let faces = Shape::Polyhedron(cube.clone()).to_surfaces();
+        assert!(matches!(faces, Surfaces::Faces(_)));
+        assert_eq!(faces.len(), cube.faces().len());
+        assert_eq!(faces.get(3).klein_boxes(), cube.faces()[3].klein_boxes());
+        let ball = Shape::Sphere(HSphere::new(Point::ORIGIN, 0.5).unwrap()).into_surfaces();
+        assert_eq!((ball.len(), ball.is_empty()), (1, false));
     }
 
     proptest! {

@@ -391,7 +391,7 @@ impl Lowerer<'_> {
     ) -> usize {
         self.objects.push((
             Object {
-                shape: Shape::Wireframe(rods),
+                shape: Shape::Wireframe(std::sync::Arc::new(rods)),
                 material: opts.edge_material.unwrap_or(material),
                 name,
                 placement,
@@ -441,28 +441,100 @@ fn wireframe(shapes: &[Shape], radius: f64) -> Result<Vec<Rod>, GeomError> {
 /// face has the vertices `p(v)` of the cell's face, in reverse order when
 /// `p` reverses orientation, exactly as [`Polyhedron::transformed`] gives
 /// them, so the rods are the same, in the same order.
+///
+/// The edges are walked as [`wireframe`] walks the copies' faces, but each
+/// copy moves the cell's vertices once (not once per face that has them)
+/// and offers each of its edges once (not once per face): an edge a copy
+/// offers twice is refused the second time anyway, so the rods and their
+/// order are unchanged.
 fn copies_wireframe(
     cell: &Polyhedron,
     placements: &[Isometry],
     radius: f64,
 ) -> Result<Vec<Rod>, GeomError> {
+    let walk = CellEdges::of(cell);
     let mut edges = EdgeSet::new(radius);
     // Every copy's edges, an upper bound (neighbours share them): reserved
     // untouched, so growing never copies tens of megabytes of rods.
-    let sides: usize = cell.faces().iter().map(|f| f.vertices().len()).sum();
-    edges.reserve(placements.len() * sides / 2);
-    let mut face = Vec::new();
+    edges.reserve(placements.len() * walk.forward.len());
+    let mut moved = Vec::with_capacity(walk.vertices.len());
+    let mut keys = Vec::with_capacity(walk.vertices.len());
     for p in placements {
-        for f in cell.faces() {
-            face.clear();
-            face.extend(f.vertices().iter().map(|v| p.apply_vertex(v)));
-            if !p.preserves_orientation() {
-                face.reverse();
-            }
-            edges.add_face(&face)?;
+        moved.clear();
+        moved.extend(walk.vertices.iter().map(|v| p.apply_vertex(v)));
+        keys.clear();
+        keys.extend(moved.iter().map(grid_key));
+        let order = if p.preserves_orientation() {
+            &walk.forward
+        } else {
+            &walk.reversed
+        };
+        for &(a, b) in order {
+            edges.add_edge((keys[a], keys[b]), &moved[a], &moved[b])?;
         }
     }
     Ok(edges.rods)
+}
+
+/// A cell's distinct vertices, and its edges as pairs of their indices in
+/// the order a walk round its faces first meets them, for the cell as it
+/// is (`forward`) and with every face reversed (`reversed`).
+struct CellEdges {
+    vertices: Vec<Vertex>,
+    forward: Vec<(usize, usize)>,
+    reversed: Vec<(usize, usize)>,
+}
+
+impl CellEdges {
+    fn of(cell: &Polyhedron) -> CellEdges {
+        // Vertices are the same when their bits are: moving equal bits
+        // gives equal bits, which is all the walk relies on.
+        let bits = |v: &Vertex| (v.is_ideal(), v.coords().to_array().map(f64::to_bits));
+        let mut vertices: Vec<Vertex> = Vec::new();
+        let faces: Vec<Vec<usize>> = cell
+            .faces()
+            .iter()
+            .map(|f| {
+                f.vertices()
+                    .iter()
+                    .map(|v| match vertices.iter().position(|u| bits(u) == bits(v)) {
+                        Some(k) => k,
+                        None => {
+                            vertices.push(*v);
+                            vertices.len() - 1
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
+        let walk = |reverse: bool| {
+            let mut order: Vec<(usize, usize)> = Vec::new();
+            for face in &faces {
+                let mut face = face.clone();
+                if reverse {
+                    face.reverse();
+                }
+                for (i, &a) in face.iter().enumerate() {
+                    let b = face[(i + 1) % face.len()];
+                    if !order.iter().any(|&e| e == (a, b) || e == (b, a)) {
+                        order.push((a, b));
+                    }
+                }
+            }
+            order
+        };
+        CellEdges {
+            forward: walk(false),
+            reversed: walk(true),
+            vertices,
+        }
+    }
+}
+
+/// Where a vertex falls on the grid edge ends are matched on ([`EdgeSet`]).
+fn grid_key(v: &Vertex) -> [i64; 3] {
+    let c = v.coords() * 1e9;
+    [c.x.round() as i64, c.y.round() as i64, c.z.round() as i64]
 }
 
 /// Rods along edges, each edge once however many faces bring it.
@@ -493,17 +565,24 @@ impl EdgeSet {
 
     /// Adds the edges of the closed polygon `vs` not already present.
     fn add_face(&mut self, vs: &[Vertex]) -> Result<(), GeomError> {
-        let key = |v: &Vertex| {
-            let c = v.coords() * 1e9;
-            [c.x.round() as i64, c.y.round() as i64, c.z.round() as i64]
-        };
         for (i, a) in vs.iter().enumerate() {
             let b = &vs[(i + 1) % vs.len()];
-            let (ka, kb) = (key(a), key(b));
-            let k = if ka <= kb { (ka, kb) } else { (kb, ka) };
-            if self.seen.insert(k) {
-                self.rods.push(Rod::new(*a, *b, self.radius)?);
-            }
+            self.add_edge((grid_key(a), grid_key(b)), a, b)?;
+        }
+        Ok(())
+    }
+
+    /// Adds the edge `a -> b` unless an edge with the same ends (`keys`,
+    /// their [`grid_key`]s) is present.
+    fn add_edge(
+        &mut self,
+        (ka, kb): ([i64; 3], [i64; 3]),
+        a: &Vertex,
+        b: &Vertex,
+    ) -> Result<(), GeomError> {
+        let k = if ka <= kb { (ka, kb) } else { (kb, ka) };
+        if self.seen.insert(k) {
+            self.rods.push(Rod::new(*a, *b, self.radius)?);
         }
         Ok(())
     }
