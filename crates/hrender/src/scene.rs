@@ -340,19 +340,22 @@ impl PreparedScene {
             let surface = o.surfaces.get(r.surface as usize);
             if o.parts.is_some() {
                 s *= self.parts_transmittance(o, surface, ray, t_min, t_max);
-                if s == 0.0 {
-                    return Step::Stop;
-                }
                 counted.push(r.object);
             } else if surface.blocks(ray, t_min, t_max) {
                 // PreparedScene::new checked every material index.
                 s *= self.materials[o.material].transmission;
-                if s == 0.0 {
-                    return Step::Stop;
-                }
                 counted.push(r.object);
+            } else {
+                return Step::Continue;
             }
-            Step::Continue
+            // Nothing changes the light left once it is none or once every
+            // object is counted (a lone wireframe of thousands of rods: its
+            // first rod crossed settles the ray).
+            if s == 0.0 || counted.len() == self.objects.len() {
+                Step::Stop
+            } else {
+                Step::Continue
+            }
         });
         s
     }
@@ -473,6 +476,57 @@ mod tests {
         };
         assert!(traceable(&placed));
         assert!(!traceable(&bare));
+    }
+
+    /// A shadow ray through translucent objects keeps each object's
+    /// transmission once, however many of its parts it crosses, and the
+    /// search that stops once every object is counted gives the product a
+    /// search of every part gives: here a wireframe of rods strung along
+    /// the ray, with and without a glass sphere beyond them.
+    #[test]
+    fn shadow_rays_count_each_translucent_object_once() {
+        use hscene_test_support::scenes::{
+            default_camera, flat, light, obj, scene, settings, sphere,
+        };
+        let along = |z: f64| p(0.0, 0.0, z);
+        let rods: Vec<Rod> = (0..40)
+            .map(|k| {
+                let z = 0.05 + 0.015 * f64::from(k);
+                Rod::new(p(-0.1, 0.0, z).into(), p(0.1, 0.0, z).into(), 0.004).unwrap()
+            })
+            .collect();
+        let glass = |t: f64| ir::Material {
+            transmission: t,
+            ..flat(0.5, 0.5, 0.5)
+        };
+        let lamp = light(along(0.9), 1.0);
+        let ray = Ray::from_ball_unchecked(&Point::ORIGIN, DVec3::Z);
+        let t_max = Point::ORIGIN.distance(along(0.9));
+        for with_sphere in [false, true] {
+            let mut objects = vec![obj(ir::Shape::Wireframe(rods.clone().into()), 0)];
+            if with_sphere {
+                objects.push(obj(sphere(along(0.75), 0.05), 1));
+            }
+            let s = scene(
+                settings(ir::Net::Euclidean, 4, 0.1),
+                default_camera(0.1),
+                vec![glass(0.5), glass(0.25)],
+                vec![lamp.clone()],
+                objects,
+            );
+            let prepared = PreparedScene::new(&s, &Isometry::IDENTITY).unwrap();
+            // Every part of every object, each object once if any part
+            // blocks: what the hierarchy's search must give.
+            let want: f64 = prepared
+                .objects
+                .iter()
+                .filter(|o| o.surfaces.iter().any(|x| x.blocks(&ray, 1e-9, t_max)))
+                .map(|o| prepared.materials[o.material].transmission)
+                .product();
+            let got = prepared.transmittance(&ray, 1e-9, t_max, t_max.tanh());
+            assert_eq!(got, want);
+            assert_eq!(got, if with_sphere { 0.125 } else { 0.5 });
+        }
     }
 
     /// Every surface's boxes contain the hits of many rays (each hit lies
