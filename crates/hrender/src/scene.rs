@@ -340,18 +340,21 @@ impl PreparedScene {
             let surface = o.surfaces.get(r.surface as usize);
             if o.parts.is_some() {
                 s *= self.parts_transmittance(o, surface, ray, t_min, t_max);
-                counted.push(r.object);
             } else if surface.blocks(ray, t_min, t_max) {
                 // PreparedScene::new checked every material index.
                 s *= self.materials[o.material].transmission;
-                counted.push(r.object);
             } else {
                 return Step::Continue;
             }
-            // Nothing changes the light left once it is none or once every
-            // object is counted (a lone wireframe of thousands of rods: its
-            // first rod crossed settles the ray).
-            if s == 0.0 || counted.len() == self.objects.len() {
+            // Nothing changes the light left once it is none (an opaque
+            // blocker: most shadow rays, which then never allocate) or once
+            // every object is counted (a lone wireframe of thousands of
+            // rods: its first rod crossed settles the ray).
+            if s == 0.0 {
+                return Step::Stop;
+            }
+            counted.push(r.object);
+            if counted.len() == self.objects.len() {
                 Step::Stop
             } else {
                 Step::Continue
