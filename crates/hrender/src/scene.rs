@@ -10,6 +10,7 @@ use hgeom::{Hit, Isometry, KleinBox, Point, Ray};
 use hscene_lang::ir::{self, Fog, Material, PartMaterials, Rgb, Scene, Surfaces};
 
 use rayon::prelude::*;
+use smallvec::SmallVec;
 
 use crate::accel::{Accel, Leaf, Step};
 use crate::camera::CanonicalCamera;
@@ -330,7 +331,7 @@ impl PreparedScene {
         let mut s = 1.0;
         // The objects already counted: only translucent ones get here, and
         // a shadow ray meets few of them.
-        let mut counted: Vec<u32> = Vec::new();
+        let mut counted: SmallVec<[u32; 8]> = SmallVec::new();
         self.accel.any(ray, t_min, tanh_t_max, |i| {
             let r = self.surfaces[i as usize];
             if counted.contains(&r.object) {

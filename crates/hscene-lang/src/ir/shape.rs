@@ -50,12 +50,13 @@ impl Surfaces {
         self.len() == 0
     }
 
-    /// The `k`-th surface; panics unless `k < len()`, like a slice.
+    /// The `k`-th surface; panics unless `k < len()` for parts, like a
+    /// slice (a single surface is surface 0, and any `k` gives it).
     #[inline]
     pub fn get(&self, k: usize) -> &(dyn Surface + Send + Sync) {
         match self {
             Surfaces::Single(s) => {
-                assert_eq!(k, 0, "a single surface is surface 0");
+                debug_assert_eq!(k, 0, "a single surface is surface 0");
                 s.as_ref()
             }
             Surfaces::Faces(f) => &f[k],
