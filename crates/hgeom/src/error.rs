@@ -92,6 +92,15 @@ pub enum GeomError {
     /// A honeycomb's colouring needs at least one class.
     #[error("a honeycomb needs at least 1 cell class, got 0")]
     NoCellClasses,
+    /// The ringed nodes of a Coxeter diagram are some of 0, 1, 2 and 3,
+    /// at least one.
+    #[error("the ringed nodes must be some of 0, 1, 2 and 3, at least one")]
+    BadRings,
+    /// A depth or cell colours were asked of a uniform honeycomb other than
+    /// the regular one: its cells are of several kinds, and neither is
+    /// defined for them.
+    #[error("depth and cell colours are for regular honeycombs (node 0 ringed alone)")]
+    UniformWithCells,
     /// A mesh triangle refers to a vertex that does not exist.
     #[error("triangle {triangle} refers to vertex {index}, but the mesh has {vertices} vertices")]
     MeshIndexOutOfRange {

@@ -48,6 +48,7 @@ use super::cells::{orbit, orbit_maps};
 use super::kernels::{exp_roots_plain, tube_roots};
 use super::simplex::{CoxeterSimplex, reflection_matrix};
 use super::style::{HoneycombPart, HoneycombStyle};
+use super::uniform::{Rings, SeedParts};
 
 /// The most walls a domain has: the 20 faces of an icosahedral cell.
 pub(super) const MAX_WALLS: usize = 20;
@@ -59,14 +60,20 @@ pub(super) enum DomainPart {
     Edge(usize),
     Vertex(usize),
     Face(usize),
+    /// A uniform honeycomb's half-edge (`uniform.rs`).
+    HalfEdge(usize),
+    /// The ball of the edges' radius about a uniform honeycomb's seed.
+    Cap,
+    /// A uniform honeycomb's face piece.
+    Piece(usize),
 }
 
 impl DomainPart {
     pub(super) fn kind(self) -> HoneycombPart {
         match self {
-            DomainPart::Edge(_) => HoneycombPart::Edge,
+            DomainPart::Edge(_) | DomainPart::HalfEdge(_) | DomainPart::Cap => HoneycombPart::Edge,
             DomainPart::Vertex(_) => HoneycombPart::Vertex,
-            DomainPart::Face(_) => HoneycombPart::Face,
+            DomainPart::Face(_) | DomainPart::Piece(_) => HoneycombPart::Face,
         }
     }
 }
@@ -204,6 +211,8 @@ pub(super) struct WalkDomain {
     cosh_vertex: f64,
     sinh_vertex: f64,
     faces: bool,
+    /// A uniform honeycomb's parts other than its vertex ball.
+    seed: Option<SeedParts>,
 }
 
 impl WalkDomain {
@@ -253,6 +262,37 @@ impl WalkDomain {
             cosh_vertex: style.vertices.map_or(1.0, f64::cosh),
             sinh_vertex: style.vertices.map_or(0.0, f64::sinh),
             faces: style.faces,
+            seed: None,
+        })
+    }
+
+    /// The characteristic simplex with the parts of the uniform honeycomb
+    /// of `rings` (`uniform.rs`).
+    ///
+    /// Errors: those of [`SeedParts::new`].
+    pub(super) fn uniform(
+        simplex: &CoxeterSimplex,
+        rings: Rings,
+        style: &HoneycombStyle,
+    ) -> Result<WalkDomain, GeomError> {
+        let walls = simplex.normals().to_vec();
+        let (seed, ball) = SeedParts::new(simplex, rings, style)?;
+        let vertices = ball
+            .map(|at| DomainVertex::new(&walls, at, Vec::new()))
+            .into_iter()
+            .collect();
+        Ok(WalkDomain {
+            face_cells: vec![None; walls.len()],
+            edge_between: edge_table(walls.len(), &[]),
+            walls,
+            products: WallProducts::General,
+            edges: Vec::new(),
+            vertices,
+            sinh2_edge: None,
+            cosh_vertex: style.vertices.map_or(1.0, f64::cosh),
+            sinh_vertex: style.vertices.map_or(0.0, f64::sinh),
+            faces: false,
+            seed: Some(seed),
         })
     }
 
@@ -314,6 +354,7 @@ impl WalkDomain {
             cosh_vertex: style.vertices.map_or(1.0, f64::cosh),
             sinh_vertex: style.vertices.map_or(0.0, f64::sinh),
             faces: style.faces,
+            seed: None,
         })
     }
 
@@ -363,6 +404,7 @@ impl WalkDomain {
             sinh2_edge: None,
             vertices: Vec::new(),
             faces: false,
+            seed: None,
             ..self.clone()
         }
     }
@@ -451,6 +493,9 @@ impl WalkDomain {
         {
             found = Some((ray.v_exit, DomainPart::Face(exit)));
         }
+        if let Some(seed) = &self.seed {
+            seed.first_part(ray, floor, window, lambda2, &mut found);
+        }
         found
     }
 
@@ -484,6 +529,8 @@ impl WalkDomain {
                 Some(cells) => cells,
                 None => &[],
             },
+            // A uniform honeycomb's parts have no cell classes.
+            DomainPart::HalfEdge(_) | DomainPart::Cap | DomainPart::Piece(_) => &[],
         }
     }
 
@@ -501,6 +548,10 @@ impl WalkDomain {
                 let v = self.vertices[i].at;
                 -(v + lorentz::dot(v, x) * x)
             }
+            DomainPart::HalfEdge(_) | DomainPart::Cap | DomainPart::Piece(_) => match &self.seed {
+                Some(seed) => seed.local_normal(part, x),
+                None => x,
+            },
         }
     }
 }

@@ -9,6 +9,8 @@
 //! - `cells`: the cells within a depth, the cells around a part, the
 //!   colouring rule.
 //! - `style`: what is drawn; the parts a hit reports.
+//! - `uniform`: [`Rings`] and the parts of the uniform honeycombs of
+//!   Wythoff's construction inside the simplex.
 //! - `walk`: [`RegularHoneycomb`], the honeycomb as one surface traced by
 //!   walking each ray from cell to cell (or through the simplex);
 //!   `domain`: the cell or simplex it walks and the parts inside it;
@@ -21,6 +23,7 @@ mod kernels;
 mod schlafli;
 mod simplex;
 mod style;
+mod uniform;
 mod walk;
 
 pub use cube435::{
@@ -30,4 +33,5 @@ pub use cube435::{
 pub use schlafli::{Schlafli, SchlafliError};
 pub use simplex::CoxeterSimplex;
 pub use style::{HoneycombPart, HoneycombStyle, decode_honeycomb_part};
+pub use uniform::Rings;
 pub use walk::{DEFAULT_HORIZON, MAX_WALK_STEPS, RegularHoneycomb, WalkStats, WalkStep};

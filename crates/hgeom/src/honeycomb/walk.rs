@@ -106,6 +106,7 @@ use super::kernels::{lorentz_inverse, nearest_exit, reflect, renormalise, times_
 use super::schlafli::Schlafli;
 use super::simplex::CoxeterSimplex;
 use super::style::{HoneycombStyle, encode_part};
+use super::uniform::Rings;
 
 /// The default horizon: the walk stops at this distance from the origin of
 /// the frame (module docs).
@@ -177,6 +178,7 @@ pub struct WalkStep {
 #[derive(Clone, Debug)]
 pub struct RegularHoneycomb {
     symbol: Schlafli,
+    rings: Rings,
     style: HoneycombStyle,
     domain: Arc<WalkDomain>,
     cells: Option<Arc<CellSet>>,
@@ -227,6 +229,7 @@ impl RegularHoneycomb {
         };
         Ok(RegularHoneycomb {
             symbol,
+            rings: Rings::REGULAR,
             style,
             domain: Arc::new(domain),
             cells,
@@ -238,6 +241,62 @@ impl RegularHoneycomb {
             cosh_horizon: DEFAULT_HORIZON.cosh(),
             cosh_reach,
         })
+    }
+
+    /// The uniform honeycomb of the Coxeter group `[p,q,r]` with these
+    /// rings (Wythoff's construction, `uniform.rs`), walked through the
+    /// characteristic simplex in its base placement; node 0 ringed alone is
+    /// [`RegularHoneycomb::new`]. Its edges all have one length, and every
+    /// vertex sees the same arrangement of cells.
+    ///
+    /// Errors: those of [`HoneycombStyle::validate`];
+    /// [`GeomError::UniformWithCells`] for a depth or more than one cell
+    /// class with other rings.
+    pub fn uniform(
+        symbol: Schlafli,
+        rings: Rings,
+        style: HoneycombStyle,
+    ) -> Result<RegularHoneycomb, GeomError> {
+        if rings.is_regular() {
+            return RegularHoneycomb::new(symbol, style);
+        }
+        RegularHoneycomb::wythoff(symbol, rings, style)
+    }
+
+    /// [`RegularHoneycomb::uniform`] by the seed's parts whatever the
+    /// rings, node 0 alone included (which the tests check against the
+    /// regular walk).
+    pub(super) fn wythoff(
+        symbol: Schlafli,
+        rings: Rings,
+        style: HoneycombStyle,
+    ) -> Result<RegularHoneycomb, GeomError> {
+        style.validate()?;
+        if style.depth.is_some() || style.cell_classes > 1 {
+            return Err(GeomError::UniformWithCells);
+        }
+        let simplex = CoxeterSimplex::new(symbol);
+        let domain = WalkDomain::uniform(&simplex, rings, &style)?;
+        Ok(RegularHoneycomb {
+            symbol,
+            rings,
+            style,
+            domain: Arc::new(domain),
+            cells: None,
+            shells: Shells::new(&simplex),
+            placement: Isometry::IDENTITY,
+            to_world: DMat4::IDENTITY,
+            to_local: DMat4::IDENTITY,
+            horizon: DEFAULT_HORIZON,
+            cosh_horizon: DEFAULT_HORIZON.cosh(),
+            cosh_reach: None,
+        })
+    }
+
+    /// The ringed nodes of its Coxeter diagram ([`Rings::REGULAR`] for a
+    /// regular honeycomb).
+    pub fn rings(&self) -> Rings {
+        self.rings
     }
 
     /// The same honeycomb walked only out to `distance` from the origin of

@@ -1,0 +1,747 @@
+//! Uniform honeycombs by Wythoff's construction: the parts inside one
+//! chamber of the Coxeter group `[p,q,r]` for a seed point set by the
+//! ringed nodes of the diagram.
+//!
+//! **The seed.** Node `i` of the diagram is the mirror `m_i` of the
+//! characteristic simplex `C` (opposite its vertex `v_i`,
+//! [`CoxeterSimplex`]). The seed `s` lies on every mirror whose node is not
+//! ringed and at one distance `δ` from every ringed one. With `v̂_i` the
+//! vertex scaled so that `<v̂_i, n_i> = 1` (it is orthogonal to the other
+//! three normals), `s = Σ_{i ringed} v̂_i` has `<s, n_j> = 1` for ringed `j`
+//! and `0` for the others, and is future timelike (a sum of future
+//! vectors), or null when one ideal vertex alone is ringed: then the
+//! honeycomb's vertices are ideal. Normalised, `sinh δ = <s, n_i>`. Ringing
+//! node 0 alone gives the regular honeycomb `{p,q,r}`, node 3 alone its
+//! dual `{r,q,p}`.
+//!
+//! **The half-edges.** The vertices are the orbit of `s`; for each ringed
+//! `i` the edge from `s` to `R_i s` crosses `m_i` at right angles at its
+//! midpoint, the foot `f_i = s - <s,n_i> n_i` (normalised). `f_i` lies in
+//! `C`: for `j != i`, `<f_i, n_j> ∝ <s,n_j> - <s,n_i> <n_i,n_j>`, and both
+//! terms are `>= 0` (`<n_i,n_j> = -cos(π/m_ij) <= 0`). So every edge is two
+//! half-edges, each `g [s, f_i]` inside the chamber `g C`.
+//!
+//! **The parts in one chamber.** Folding a point into `C` moves it no
+//! farther from a point of `C` (`walk.rs`), so for `X` in `C` the nearest
+//! vertex is `s` and the nearest half-edge of each kind is `C`'s own
+//! `[s, f_i]` (fold a nearest point of `g [s, f_i]`: it lands on
+//! `[s, f_i]`, no farther from `X`). The rods about all edges meet `C`
+//! exactly in the capsules of radius `w` about the half-edges `[s, f_i]`:
+//! the tube about the edge's line where the foot lies between `s` and
+//! `f_i`, and the ball of radius `w` about `s` beyond. No cap is needed at
+//! `f_i`: the plane through `f_i` orthogonal to the edge is `m_i`, with `C`
+//! on the side of `s`. The end at `s` is the plane through `s` orthogonal
+//! to the edge, `<X, U_i> = 0` with `U_i` the edge's unit tangent at `s`
+//! towards `f_i`; a tube point counts where `<X, U_i> >= 0`. The first
+//! point of a union of capsules is the least first point of each, and the
+//! shared ball about `s` is one more test (or none: it lies inside a vertex
+//! ball of a radius at least `w`, and at an ideal seed there is none).
+//!
+//! **The faces.** For each pair of mirrors `i < j` with one of them ringed
+//! the dihedral group `<R_i, R_j>` moves `s` round a polygon (none when
+//! `m_ij = 2` and only one is ringed: that "polygon" is an edge). It lies
+//! in the plane `F` through `s` orthogonal to the line `L = m_i ∩ m_j`,
+//! centred on the foot `c` of `s` on `L`, and its piece in `C` is bounded
+//! by `m_i`, `m_j` and the half-edges of the ringed ones among `i`, `j`:
+//! the quadrilateral `c f_i s f_j` when both are ringed, the triangle
+//! `c f_i s` when only `i` is (then `s` and `c` lie on `m_j`). So inside
+//! `C` a point of `F` is on the piece when it is on `c`'s side of the plane
+//! through each such half-edge orthogonal to `F` (normal `B_k`, orthogonal
+//! to `s`, `f_k` and `F`'s normal `P`). Faces are planes of no thickness,
+//! so no other chamber's piece reaches into `C`.
+//!
+//! Ringing node 0 alone gives exactly the regular honeycomb's parts: the
+//! seed `v0`, the half-edge `v0 v1`, the face piece `v2 v1 v0` in `m3`; the
+//! tests check this walk against the regular one for all fifteen symbols,
+//! and genuinely uniform ones against explicit rods, balls and polygons.
+
+use glam::DVec4;
+
+use crate::error::GeomError;
+use crate::lorentz;
+
+use super::domain::{DomainPart, DomainRay};
+use super::kernels::{exp_roots_plain, tube_roots};
+use super::simplex::CoxeterSimplex;
+use super::style::HoneycombStyle;
+
+/// The ringed nodes of the Coxeter diagram `[p,q,r]`: node `i` is the
+/// mirror opposite vertex `v_i` of the characteristic simplex (`v0` a
+/// vertex of `{p,q,r}`, `v3` a cell centre). Ringing node 0 alone gives
+/// `{p,q,r}` itself; `(0, 1)` its truncation, `(1)` its rectification,
+/// `(0, 3)` its runcination, all four its omnitruncation. Written `t0,3`
+/// and so on, after the mathematicians' `t_{0,3}{p,q,r}`.
+///
+/// Invariant: a non-empty subset of `{0, 1, 2, 3}`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Rings(u8);
+
+impl Rings {
+    /// Node 0 alone: the regular honeycomb.
+    pub const REGULAR: Rings = Rings(1);
+
+    /// The rings on these nodes (each 0 to 3, in any order; repeats are
+    /// one ring).
+    ///
+    /// Errors: [`GeomError::BadRings`] for no node or a node beyond 3.
+    pub fn new(nodes: &[u32]) -> Result<Rings, GeomError> {
+        let mut bits = 0u8;
+        for &n in nodes {
+            if n > 3 {
+                return Err(GeomError::BadRings);
+            }
+            bits |= 1 << n;
+        }
+        if bits == 0 {
+            return Err(GeomError::BadRings);
+        }
+        Ok(Rings(bits))
+    }
+
+    /// True if node `i` is ringed.
+    pub fn contains(self, i: usize) -> bool {
+        i < 4 && self.0 & (1 << i) != 0
+    }
+
+    /// The ringed nodes, in increasing order.
+    pub fn nodes(self) -> impl Iterator<Item = usize> {
+        (0..4).filter(move |&i| self.contains(i))
+    }
+
+    /// True for node 0 alone (the regular honeycomb).
+    pub fn is_regular(self) -> bool {
+        self == Rings::REGULAR
+    }
+}
+
+impl std::fmt::Display for Rings {
+    /// `t0,3`: the ringed nodes after a `t`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let nodes: Vec<String> = self.nodes().map(|i| i.to_string()).collect();
+        write!(f, "t{}", nodes.join(","))
+    }
+}
+
+/// How far (as `<X,B>/x0`, about the sinh of a distance) a point may lie
+/// past the end plane of a half-edge or the edge of a face piece and still
+/// count: the rods and balls cover those seams.
+const SEAM_SLACK: f64 = 1e-9;
+
+/// The tube about one half-edge `[s, f_i]`: the orthonormal pair `n1`, `n2`
+/// orthogonal to its line, and its unit tangent `u` at `s` towards `f_i`
+/// (`None` at an ideal seed: the tube runs out to the absolute).
+#[derive(Clone, Debug)]
+struct HalfEdge {
+    n1: DVec4,
+    n2: DVec4,
+    u: Option<DVec4>,
+}
+
+/// One face piece: the normal `p` of its plane, the normals `bounds` of
+/// the planes through its half-edges, positive on the piece's side, and
+/// the wall it lies in, if any (a regular face lies in `m3`): such a piece
+/// is met where the ray leaves through that wall, as the walk computes it,
+/// not where a plane crossing computed apart rounds to.
+#[derive(Clone, Debug)]
+struct FacePiece {
+    p: DVec4,
+    bounds: Vec<DVec4>,
+    wall: Option<usize>,
+}
+
+/// The parts of a uniform honeycomb inside the characteristic simplex
+/// (module docs). The ball about the seed in the vertices' material is the
+/// walk's ordinary vertex ([`super::domain::WalkDomain`]); this holds the
+/// rest.
+#[derive(Clone, Debug)]
+pub(super) struct SeedParts {
+    seed: DVec4,
+    half_edges: Vec<HalfEdge>,
+    /// `sinh²` of the edge radius.
+    sinh2_edge: f64,
+    /// `cosh` of the edge radius, for the ball about the seed that caps
+    /// the half-edges; `None` where it is not tested (no edges, an ideal
+    /// seed, or inside a vertex ball at least as wide).
+    cap_cosh: Option<f64>,
+    pieces: Vec<FacePiece>,
+}
+
+impl SeedParts {
+    /// The seed of `rings` in `simplex` and the parts `style` draws.
+    ///
+    /// Errors: [`GeomError::BadRings`] if the seed is not a point or an
+    /// ideal point of the space (it always is for a hyperbolic symbol).
+    pub(super) fn new(
+        simplex: &CoxeterSimplex,
+        rings: Rings,
+        style: &HoneycombStyle,
+    ) -> Result<(SeedParts, Option<DVec4>), GeomError> {
+        let n = simplex.normals();
+        let v = simplex.vertices();
+        let mut s = DVec4::ZERO;
+        for i in rings.nodes() {
+            s += v[i] / lorentz::dot(v[i], n[i]);
+        }
+        let ss = lorentz::dot(s, s);
+        let ideal = rings.nodes().count() == 1 && simplex.ideal()[rings.nodes().sum::<usize>()];
+        if ideal {
+            // A null vector at time 1, as the simplex keeps ideal vertices.
+            s /= s.w;
+        } else if ss < 0.0 && s.w > 0.0 {
+            s /= (-ss).sqrt();
+        } else {
+            return Err(GeomError::BadRings);
+        }
+        let half_edges: Vec<HalfEdge> = rings
+            .nodes()
+            .map(|i| half_edge(s, ideal, &n, i))
+            .collect::<Option<_>>()
+            .ok_or(GeomError::BadRings)?;
+        let pieces = if style.faces {
+            face_pieces(s, &n, &v, rings).ok_or(GeomError::BadRings)?
+        } else {
+            Vec::new()
+        };
+        let edges = style.edges;
+        let cap_cosh = match (edges, style.vertices) {
+            (Some(w), vertex) if !ideal && vertex.is_none_or(|r| r < w) => Some(w.cosh()),
+            _ => None,
+        };
+        let vertex_ball = (!ideal && style.vertices.is_some()).then_some(s);
+        Ok((
+            SeedParts {
+                seed: s,
+                half_edges: if edges.is_some() {
+                    half_edges
+                } else {
+                    Vec::new()
+                },
+                sinh2_edge: edges.map_or(0.0, |w| w.sinh() * w.sinh()),
+                cap_cosh,
+                pieces,
+            },
+            vertex_ball,
+        ))
+    }
+
+    /// The first of these parts the domain ray meets at
+    /// `floor < v <= window` (in `v = e^{2τ}`), if before `found`'s.
+    pub(super) fn first_part(
+        &self,
+        ray: &DomainRay,
+        floor: f64,
+        window: f64,
+        lambda2: f64,
+        found: &mut Option<(f64, DomainPart)>,
+    ) {
+        let better = |v: f64, found: &Option<(f64, DomainPart)>| {
+            v > floor && v <= window && found.is_none_or(|(best, _)| v < best)
+        };
+        // The point at v, up to the positive factor cosh τ: o + tanh τ d.
+        let at = |v: f64| {
+            let tanh = (v - 1.0) / (v + 1.0);
+            ray.o + tanh * ray.d
+        };
+        let k = self.sinh2_edge * lambda2;
+        for (i, e) in self.half_edges.iter().enumerate() {
+            let o = [lorentz::dot(ray.o, e.n1), lorentz::dot(ray.o, e.n2)];
+            let d = [lorentz::dot(ray.d, e.n1), lorentz::dot(ray.d, e.n2)];
+            let Some((near, far)) = tube_roots(o, d, k) else {
+                continue;
+            };
+            for v in [near, far] {
+                if !better(v, found) {
+                    continue;
+                }
+                let x = at(v);
+                if e.u
+                    .is_none_or(|u| lorentz::dot(x, u) >= -SEAM_SLACK * x.w.abs())
+                {
+                    *found = Some((v, DomainPart::HalfEdge(i)));
+                }
+            }
+        }
+        if let Some(cosh_w) = self.cap_cosh {
+            // -<X(τ),s> = α cosh τ + β sinh τ = cosh w (scaled by λ), in e^τ.
+            let alpha = -lorentz::dot(ray.o, self.seed);
+            let beta = -lorentz::dot(ray.d, self.seed);
+            if let Some((near, far)) =
+                exp_roots_plain(alpha + beta, cosh_w * lambda2.sqrt(), alpha - beta)
+            {
+                let v = if near * near > floor {
+                    near * near
+                } else {
+                    far * far
+                };
+                if better(v, found) {
+                    *found = Some((v, DomainPart::Cap));
+                }
+            }
+        }
+        for (i, piece) in self.pieces.iter().enumerate() {
+            let (tanh, v) = match piece.wall {
+                Some(wall) if ray.exit == Some(wall) => (ray.s_exit, ray.v_exit),
+                Some(_) => continue,
+                None => {
+                    // <X(τ),P> = 0 at tanh τ = -α/β, inside the domain when
+                    // that is in [0, s_exit].
+                    let alpha = lorentz::dot(ray.o, piece.p);
+                    let beta = lorentz::dot(ray.d, piece.p);
+                    let tanh = -alpha / beta;
+                    if !(tanh >= 0.0 && tanh <= ray.s_exit && tanh < 1.0) {
+                        continue;
+                    }
+                    (tanh, (1.0 + tanh) / (1.0 - tanh))
+                }
+            };
+            if !better(v, found) {
+                continue;
+            }
+            let x = ray.o + tanh * ray.d;
+            let slack = SEAM_SLACK * x.w.abs();
+            if piece.bounds.iter().all(|b| lorentz::dot(x, *b) >= -slack) {
+                *found = Some((v, DomainPart::Piece(i)));
+            }
+        }
+    }
+
+    /// The outward normal of one of these parts at `x` (tangent there, not
+    /// unit); a face's is its plane's normal.
+    pub(super) fn local_normal(&self, part: DomainPart, x: DVec4) -> DVec4 {
+        match part {
+            DomainPart::HalfEdge(i) => {
+                let e = &self.half_edges[i];
+                let g = lorentz::dot(x, e.n1) * e.n1 + lorentz::dot(x, e.n2) * e.n2;
+                g + lorentz::dot(g, x) * x
+            }
+            DomainPart::Piece(i) => self.pieces[i].p,
+            _ => -(self.seed + lorentz::dot(self.seed, x) * x),
+        }
+    }
+}
+
+/// Unit spacelike, or `None` for a vector too short to be a direction.
+fn unit(x: DVec4) -> Option<DVec4> {
+    let n = lorentz::dot(x, x);
+    (n > 1e-24).then(|| x / n.sqrt())
+}
+
+/// The half-edge from the seed `s` to its foot on mirror `i`.
+fn half_edge(s: DVec4, ideal: bool, n: &[DVec4; 4], i: usize) -> Option<HalfEdge> {
+    // The line lies in span{s, n_i}; its foot f on m_i is timelike and
+    // Lorentz-orthogonal to n_i, so {f, n_i} is an orthonormal basis of it.
+    let f = s - lorentz::dot(s, n[i]) * n[i];
+    let f = f / (-lorentz::dot(f, f)).sqrt();
+    let off_line = |x: DVec4| x + lorentz::dot(x, f) * f - lorentz::dot(x, n[i]) * n[i];
+    // Two of the other normals, off the line, orthonormalised: the pair
+    // orthogonal to the line (the two most independent of three).
+    let mut rest: Vec<DVec4> = (0..4).filter(|&j| j != i).map(|j| off_line(n[j])).collect();
+    rest.sort_by(|a, b| lorentz::dot(*b, *b).total_cmp(&lorentz::dot(*a, *a)));
+    let n1 = unit(rest[0])?;
+    let n2 = rest[1..]
+        .iter()
+        .filter_map(|x| unit(*x - lorentz::dot(*x, n1) * n1))
+        .next()?;
+    let u = if ideal {
+        None
+    } else {
+        // The tangent at s pointing away from n_i's side: towards m_i.
+        Some(unit(-(n[i] + lorentz::dot(n[i], s) * s))?)
+    };
+    Some(HalfEdge { n1, n2, u })
+}
+
+/// The face pieces in the simplex (module docs).
+fn face_pieces(s: DVec4, n: &[DVec4; 4], v: &[DVec4; 4], rings: Rings) -> Option<Vec<FacePiece>> {
+    let mut pieces = Vec::new();
+    for i in 0..4 {
+        for j in i + 1..4 {
+            let g = lorentz::dot(n[i], n[j]);
+            let (ri, rj) = (rings.contains(i), rings.contains(j));
+            // m_ij = 2 (orthogonal mirrors) with one ring: an edge, no face.
+            if !(ri || rj) || (g.abs() < 1e-12 && ri != rj) {
+                continue;
+            }
+            // The foot c of s on L = m_i ∩ m_j: s minus its part in
+            // span{n_i, n_j}, solved with the Gram matrix [[1, g], [g, 1]].
+            let (si, sj) = (lorentz::dot(s, n[i]), lorentz::dot(s, n[j]));
+            let det = 1.0 - g * g;
+            let alpha = (si - g * sj) / det;
+            let beta = (sj - g * si) / det;
+            let c = s - alpha * n[i] - beta * n[j];
+            // L holds the other two vertices; P is the direction of L at c.
+            let (k, l) = match (0..4).filter(|&x| x != i && x != j).collect::<Vec<_>>()[..] {
+                [k, l] => (k, l),
+                _ => return None,
+            };
+            let mu = -lorentz::dot(c, v[k]) / lorentz::dot(c, v[l]);
+            let p = unit(v[k] + mu * v[l])?;
+            let mut bounds = Vec::new();
+            for ringed in [i, j].into_iter().filter(|&x| rings.contains(x)) {
+                let f = s - lorentz::dot(s, n[ringed]) * n[ringed];
+                let b = lorentz::orthogonal_complement(s, f, p);
+                let b = unit(b)?;
+                bounds.push(if lorentz::dot(c, b) >= 0.0 { b } else { -b });
+            }
+            let wall = (0..4).find(|&w| (lorentz::dot(p, n[w]).abs() - 1.0).abs() < 1e-9);
+            pieces.push(FacePiece {
+                p: wall.map_or(p, |w| n[w]),
+                bounds,
+                wall,
+            });
+        }
+    }
+    Some(pieces)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::honeycomb::{RegularHoneycomb, Schlafli, decode_honeycomb_part};
+    use crate::point::Point;
+    use crate::ray::Ray;
+    use crate::test_rng::Rng;
+
+    fn all_symbols() -> Vec<Schlafli> {
+        Schlafli::ALL
+            .iter()
+            .map(|&(p, q, r)| Schlafli::new(p, q, r).unwrap())
+            .collect()
+    }
+
+    #[test]
+    fn rings_are_some_of_the_four_nodes() {
+        assert_eq!(Rings::new(&[0]).unwrap(), Rings::REGULAR);
+        assert!(Rings::REGULAR.is_regular());
+        let r = Rings::new(&[3, 0, 3]).unwrap();
+        assert_eq!(r.nodes().collect::<Vec<_>>(), vec![0, 3]);
+        assert_eq!(r.to_string(), "t0,3");
+        assert!(!r.is_regular() && r.contains(3) && !r.contains(1) && !r.contains(9));
+        assert_eq!(Rings::new(&[]), Err(GeomError::BadRings));
+        assert_eq!(Rings::new(&[4]), Err(GeomError::BadRings));
+    }
+
+    /// The seed lies on the mirrors of the nodes not ringed and at one
+    /// distance from the others; each foot lies on its mirror and in the
+    /// simplex, every half-edge's tube normals are orthonormal and
+    /// orthogonal to its line, and each face piece's plane holds the seed
+    /// and the feet of its half-edges: for every symbol and all fifteen
+    /// ring sets.
+    #[test]
+    fn seeds_feet_and_pieces_are_where_the_construction_puts_them() {
+        let style = HoneycombStyle {
+            edges: Some(0.05),
+            faces: true,
+            vertices: Some(0.1),
+            ..HoneycombStyle::default()
+        };
+        for symbol in all_symbols() {
+            let simplex = CoxeterSimplex::new(symbol);
+            let n = simplex.normals();
+            for bits in 1u32..16 {
+                let nodes: Vec<u32> = (0..4).filter(|i| bits & (1 << i) != 0).collect();
+                let rings = Rings::new(&nodes).unwrap();
+                let (parts, _) = SeedParts::new(&simplex, rings, &style).unwrap();
+                let s = parts.seed;
+                let dist: Vec<f64> = rings.nodes().map(|i| lorentz::dot(s, n[i])).collect();
+                for j in (0..4).filter(|&j| !rings.contains(j)) {
+                    assert!(lorentz::dot(s, n[j]).abs() < 1e-12, "{symbol} {rings}");
+                }
+                for d in &dist {
+                    assert!(
+                        *d > 0.0 && (d - dist[0]).abs() < 1e-12,
+                        "{symbol} {rings} {dist:?}"
+                    );
+                }
+                for (e, i) in parts.half_edges.iter().zip(rings.nodes()) {
+                    let f = s - lorentz::dot(s, n[i]) * n[i];
+                    assert!(lorentz::dot(f, n[i]).abs() < 1e-12);
+                    for j in 0..4 {
+                        assert!(
+                            lorentz::dot(f, n[j]) > -1e-12,
+                            "{symbol} {rings}: foot outside"
+                        );
+                    }
+                    for (a, b, want) in [(e.n1, e.n1, 1.0), (e.n2, e.n2, 1.0), (e.n1, e.n2, 0.0)] {
+                        assert!((lorentz::dot(a, b) - want).abs() < 1e-12);
+                    }
+                    for x in [s, f, n[i]] {
+                        let scale = x.length();
+                        assert!(lorentz::dot(x, e.n1).abs() < 1e-12 * scale);
+                        assert!(lorentz::dot(x, e.n2).abs() < 1e-12 * scale);
+                    }
+                }
+                for piece in &parts.pieces {
+                    assert!(lorentz::dot(s, piece.p).abs() < 1e-12, "{symbol} {rings}");
+                    for b in &piece.bounds {
+                        assert!(lorentz::dot(s, *b).abs() < 1e-12);
+                        assert!(lorentz::dot(piece.p, *b).abs() < 1e-12);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Node 0 ringed alone, built from the seed's parts, is the regular
+    /// honeycomb: the same nearest hit (arc length and kind) as the regular
+    /// walk for rays from around the base cell, for all fifteen symbols,
+    /// with vertex balls wider and narrower than the rods, and faces.
+    #[test]
+    fn node_zero_alone_is_the_regular_honeycomb() {
+        let mut rng = Rng(0x51ED_2701_9A3C_55E1);
+        let styles = [
+            HoneycombStyle {
+                edges: Some(0.06),
+                faces: true,
+                vertices: Some(0.15),
+                ..HoneycombStyle::default()
+            },
+            HoneycombStyle {
+                edges: Some(0.05),
+                faces: false,
+                vertices: Some(0.03),
+                ..HoneycombStyle::default()
+            },
+            HoneycombStyle {
+                edges: Some(0.02),
+                ..HoneycombStyle::default()
+            },
+        ];
+        for symbol in all_symbols() {
+            for style in styles {
+                // The simplex walk, which the cell walk is checked against
+                // (`domain.rs`): a ray that starts inside a rod leaves the
+                // union of the rods where the simplex walks say, while the
+                // cell walk reports where it leaves one of them.
+                let regular = RegularHoneycomb::new(symbol, style)
+                    .unwrap()
+                    .walked_by_simplex();
+                let seeded = RegularHoneycomb::wythoff(symbol, Rings::REGULAR, style).unwrap();
+                let (mut hits, mut misses) = (0, 0);
+                for _ in 0..300 {
+                    let start =
+                        Point::at_distance_from_origin(rng.direction(), rng.unit() * 1.5).unwrap();
+                    let ray = Ray::from_ball(&start, rng.direction()).unwrap();
+                    let a = regular.intersect(&ray, 1e-9, f64::INFINITY);
+                    let b = seeded.intersect(&ray, 1e-9, f64::INFINITY);
+                    assert_eq!(seeded.blocks(&ray, 1e-9, f64::INFINITY), b.is_some());
+                    match (a, b) {
+                        (None, None) => misses += 1,
+                        (Some(a), Some(b)) => {
+                            hits += 1;
+                            let drift = 3e-15 * (2.0 * a.t).exp();
+                            assert!(
+                                (a.t - b.t).abs() < 1e-9 + drift,
+                                "{symbol} {style:?}: {} {}",
+                                a.t,
+                                b.t
+                            );
+                            assert_eq!(
+                                decode_honeycomb_part(a.part).0,
+                                decode_honeycomb_part(b.part).0,
+                                "{symbol} {style:?} t {}",
+                                a.t
+                            );
+                            // A point moved by δ on a rod of radius w turns
+                            // the normal by δ / w (w >= 0.02 here).
+                            assert!(
+                                (a.normal - b.normal).length() < (1e-6 + 100.0 * drift) * a.point.w,
+                                "{symbol} {style:?}: normals {} {}",
+                                a.normal,
+                                b.normal
+                            );
+                        }
+                        (a, b) => panic!("{symbol} {style:?}: {a:?} against {b:?}"),
+                    }
+                }
+                assert!(
+                    hits > 50,
+                    "{symbol} {style:?}: {hits} hits, {misses} misses"
+                );
+            }
+        }
+    }
+
+    /// The explicit parts of the uniform honeycomb of `rings` near the
+    /// base point: every chamber whose interior point lies within `reach`
+    /// of it gives its vertex ball, the rods of its edges and the polygons
+    /// of its faces, each once.
+    fn explicit_parts(
+        symbol: Schlafli,
+        rings: Rings,
+        style: &HoneycombStyle,
+        reach: f64,
+    ) -> Vec<(
+        crate::honeycomb::HoneycombPart,
+        Box<dyn crate::shape::Shape>,
+    )> {
+        use crate::honeycomb::HoneycombPart;
+        use crate::honeycomb::cells::orbit;
+        use crate::point::Vertex;
+        use crate::{ConvexPolygon, HSphere, Rod};
+        use glam::DMat4;
+        use std::collections::HashSet;
+        let simplex = CoxeterSimplex::new(symbol);
+        let (n, v) = (simplex.normals(), simplex.vertices());
+        let refl = [0, 1, 2, 3].map(|i| simplex.reflection(i));
+        let (parts, _) = SeedParts::new(&simplex, rings, style).unwrap();
+        let s = parts.seed;
+        let inner = {
+            let x = v[0] + v[1] + v[2] + v[3];
+            x / (-lorentz::dot(x, x)).sqrt()
+        };
+        let key = |x: DVec4| {
+            let x = x / x.w;
+            [x.x, x.y, x.z].map(|c| (c * 1e7).round() as i64)
+        };
+        let point = |x: DVec4| Vertex::from(Point::from_hyperboloid(x).unwrap());
+        // The faces of the base chamber's seed, as polygons in order round
+        // their centres (the dihedral orbit of the seed, sorted by angle).
+        let mut base_faces = Vec::new();
+        for i in 0..4 {
+            for j in i + 1..4 {
+                let g = lorentz::dot(n[i], n[j]);
+                let (ri, rj) = (rings.contains(i), rings.contains(j));
+                if !(ri || rj) || (g.abs() < 1e-12 && ri != rj) {
+                    continue;
+                }
+                let ring = orbit(s, &[refl[i], refl[j]]).unwrap();
+                let centre = ring.iter().fold(DVec4::ZERO, |a, x| a + *x);
+                let centre = centre / (-lorentz::dot(centre, centre)).sqrt();
+                let e1 = ring[0] + lorentz::dot(ring[0], centre) * centre;
+                let e1 = e1 / lorentz::dot(e1, e1).sqrt();
+                let normal = lorentz::orthogonal_complement(ring[0], ring[1], ring[2]);
+                let e2 = lorentz::orthogonal_complement(centre, e1, normal);
+                let e2 = e2 / lorentz::dot(e2, e2).sqrt();
+                let mut sorted = ring.clone();
+                sorted.sort_by(|a, b| {
+                    let angle = |x: &DVec4| lorentz::dot(*x, e2).atan2(lorentz::dot(*x, e1));
+                    angle(a).total_cmp(&angle(b))
+                });
+                base_faces.push((centre, sorted));
+            }
+        }
+        let mut seen = HashSet::new();
+        // Breadth first: each chamber's map is a shortest word of
+        // reflections, the least rounding.
+        let mut queue = std::collections::VecDeque::from([DMat4::IDENTITY]);
+        seen.insert(key(inner));
+        let (mut vertices, mut edges, mut faces) = (HashSet::new(), HashSet::new(), HashSet::new());
+        let mut out: Vec<(HoneycombPart, Box<dyn crate::shape::Shape>)> = Vec::new();
+        while let Some(g) = queue.pop_front() {
+            let gs = g * s;
+            if let Some(rho) = style.vertices
+                && vertices.insert(key(gs))
+            {
+                out.push((
+                    HoneycombPart::Vertex,
+                    Box::new(HSphere::new(Point::from_hyperboloid(gs).unwrap(), rho).unwrap()),
+                ));
+            }
+            if let Some(w) = style.edges {
+                for i in rings.nodes() {
+                    let other = g * (refl[i] * s);
+                    let mid = key(gs + other);
+                    if edges.insert(mid) {
+                        out.push((
+                            HoneycombPart::Edge,
+                            Box::new(Rod::new(point(gs), point(other), w).unwrap()),
+                        ));
+                    }
+                }
+            }
+            if style.faces {
+                for (centre, ring) in &base_faces {
+                    if faces.insert(key(g * *centre)) {
+                        let vs = ring.iter().map(|x| point(g * *x)).collect();
+                        out.push((
+                            HoneycombPart::Face,
+                            Box::new(ConvexPolygon::new(vs).unwrap()),
+                        ));
+                    }
+                }
+            }
+            for r in &refl {
+                let h = g * *r;
+                let x = h * inner;
+                if lorentz::distance(x, DVec4::W) < reach && seen.insert(key(x)) {
+                    queue.push_back(h);
+                }
+            }
+        }
+        out
+    }
+
+    /// Uniform honeycombs that are not regular: the walk finds the nearest
+    /// of their explicit parts (balls, rods and polygons of every chamber
+    /// near the base point) for rays from near the base point, for the
+    /// truncation, rectification, cantellation, runcination and
+    /// omnitruncation of `{4,3,5}` and others, with faces.
+    #[test]
+    fn uniform_walks_meet_the_nearest_explicit_part() {
+        use crate::honeycomb::HoneycombPart;
+        let mut rng = Rng(0xC0FF_EE12_3456_789A);
+        let style = HoneycombStyle {
+            edges: Some(0.04),
+            faces: true,
+            vertices: Some(0.07),
+            ..HoneycombStyle::default()
+        };
+        let cases: [((u32, u32, u32), &[u32]); 7] = [
+            ((4, 3, 5), &[0, 1]),
+            ((4, 3, 5), &[1]),
+            ((4, 3, 5), &[0, 2]),
+            ((4, 3, 5), &[0, 3]),
+            ((4, 3, 5), &[0, 1, 2, 3]),
+            ((5, 3, 4), &[1, 2]),
+            ((3, 5, 3), &[0, 1]),
+        ];
+        for ((p, q, r), nodes) in cases {
+            let symbol = Schlafli::new(p, q, r).unwrap();
+            let rings = Rings::new(nodes).unwrap();
+            let walked = RegularHoneycomb::uniform(symbol, rings, style).unwrap();
+            let parts = explicit_parts(symbol, rings, &style, 3.2);
+            let mut hits = 0;
+            for _ in 0..150 {
+                let start =
+                    Point::at_distance_from_origin(rng.direction(), rng.unit() * 0.3).unwrap();
+                // Rays from inside a part leave the union of the parts, not
+                // the part: start outside them all.
+                if parts.iter().any(|(_, s)| {
+                    s.intersect(
+                        &Ray::from_ball(&start, glam::DVec3::Z).unwrap(),
+                        -1e-9,
+                        1e-9,
+                    )
+                    .is_some()
+                }) {
+                    continue;
+                }
+                let ray = Ray::from_ball(&start, rng.direction()).unwrap();
+                let t_max = 1.0;
+                let explicit = parts
+                    .iter()
+                    .filter_map(|(kind, s)| s.intersect(&ray, 1e-9, t_max).map(|h| (h.t, *kind)))
+                    .min_by(|a, b| a.0.total_cmp(&b.0));
+                let walk = walked
+                    .intersect(&ray, 1e-9, t_max)
+                    .map(|h| (h.t, decode_honeycomb_part(h.part).0));
+                match (explicit, walk) {
+                    (None, None) => {}
+                    (Some(a), Some(b)) => {
+                        hits += 1;
+                        // Measured: within 1e-11 (the explicit parts are
+                        // moved by shortest words of reflections).
+                        assert!((a.0 - b.0).abs() < 1e-9, "{symbol} {rings}: {a:?} {b:?}");
+                        if a.1 != b.1 {
+                            // Only where two parts' surfaces meet.
+                            assert!(a.1 != HoneycombPart::Face || (a.0 - b.0).abs() < 1e-12);
+                        }
+                    }
+                    (a, b) => panic!("{symbol} {rings}: explicit {a:?}, walk {b:?}"),
+                }
+            }
+            assert!(hits > 40, "{symbol} {rings}: {hits} hits");
+        }
+    }
+}
