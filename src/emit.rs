@@ -278,6 +278,7 @@ fn object(i: usize, o: &Object) -> Value {
             let style = h.surface.style();
             json!({
                 "symbol": [symbol.p(), symbol.q(), symbol.r()],
+                "rings": h.surface.rings().nodes().collect::<Vec<_>>(),
                 "base_center": point(&h.surface.base_cell_center()),
                 "edges": style.edges,
                 "vertices": style.vertices,
@@ -347,6 +348,7 @@ Objects {
         );
         let h = &v["objects"][8];
         assert_eq!(h["symbol"], json!([5, 3, 4]));
+        assert_eq!(h["rings"], json!([0]));
         assert_eq!(h["edges"], 0.03);
         assert_eq!(h["vertices"], Value::Null);
         assert_eq!(h["depth"], 1);

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Render the thesis gallery (docs/gallery.md) and the gallery of the 15
-# regular honeycombs (docs/honeycombs.md): every scenes/thesis/fig*.hsc and
-# scenes/honeycomb-p-q-r.hsc becomes docs/gallery/<same name>.png, at the
+# regular honeycombs and of some uniform ones (docs/honeycombs.md): every
+# scenes/thesis/fig*.hsc, scenes/honeycomb-p-q-r.hsc and
+# scenes/uniform-*.hsc becomes docs/gallery/<same name>.png, at the
 # resolution the scene file sets (at most 400 pixels wide), with 4 samples
 # per pixel for anti-aliasing.
 #
@@ -22,7 +23,7 @@ if [[ -n "${THREADS:-}" ]]; then threads=(--threads "$THREADS"); fi
 if [[ $# -gt 0 ]]; then
     scenes=("$@")
 else
-    scenes=(scenes/thesis/fig*.hsc scenes/honeycomb-?-?-?.hsc)
+    scenes=(scenes/thesis/fig*.hsc scenes/honeycomb-?-?-?.hsc scenes/uniform-*.hsc)
 fi
 
 start=$(date +%s.%N)

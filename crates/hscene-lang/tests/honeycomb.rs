@@ -145,7 +145,7 @@ fn the_keyword_and_its_options_are_in_the_vocabulary() {
     let words = hscene_lang::vocabulary::object_keywords();
     assert!(words.contains(&"Honeycomb"));
     let options = hscene_lang::vocabulary::object_options();
-    for o in ["faces", "vertices", "depth", "colors"] {
+    for o in ["faces", "vertices", "depth", "colors", "rings"] {
         assert!(options.contains(&o), "{o}");
     }
 }
@@ -201,4 +201,56 @@ fn each_part_is_drawn_in_its_material() {
         }
         assert!(seen.iter().all(|s| *s), "case {case}: parts met {seen:?}");
     }
+}
+
+/// `rings` picks the uniform honeycomb of the symbol's group: node 0 alone
+/// (or no `rings`) is the regular honeycomb, a single number is one node,
+/// and the order of the nodes does not matter.
+#[test]
+fn rings_pick_a_uniform_honeycomb_of_the_group() {
+    use hgeom::Rings;
+    let rings_of = |objects: &str| only_honeycomb(&scene(objects)).surface.rings();
+    assert_eq!(rings_of("Honeycomb {4,3,5}, #edge;"), Rings::REGULAR);
+    assert_eq!(
+        rings_of("Honeycomb {4,3,5}, #edge, rings = (0);"),
+        Rings::REGULAR
+    );
+    assert_eq!(
+        rings_of("Honeycomb {4,3,5}, #edge, rings = 1;"),
+        Rings::new(&[1]).unwrap()
+    );
+    assert_eq!(
+        rings_of("Honeycomb {6,3,3}, #edge, faces = #glass, vertices = 0.04, rings = (3, 0);"),
+        Rings::new(&[0, 3]).unwrap()
+    );
+    // Every ring set of every symbol lowers (the seed is always a point or
+    // an ideal point).
+    for (p, q, r) in Schlafli::ALL {
+        for nodes in ["(0, 1)", "(1, 2)", "(0, 1, 2, 3)", "(2)", "(3)"] {
+            let s = scene(&format!(
+                "Honeycomb {{{p},{q},{r}}}, #edge, faces = #glass, rings = {nodes};"
+            ));
+            assert!(!only_honeycomb(&s).surface.rings().is_regular());
+        }
+    }
+}
+
+/// Balls on the vertices of a uniform honeycomb whose seed is an ideal
+/// vertex of the simplex (ringing `v3` of `{6,3,3}`, whose cells are
+/// horosphere-inscribed, gives the ideal vertices of `{3,3,6}`) are a
+/// warning, as for the regular honeycombs with ideal vertices.
+#[test]
+fn balls_on_ideal_seeds_are_a_warning() {
+    let src = format!(
+        "{MATERIALS}Objects {{ Honeycomb {{6,3,3}}, #edge, vertices = 0.1, rings = (3); }}"
+    );
+    let c = compile(&src);
+    assert!(!c.has_errors());
+    assert!(
+        c.diagnostics
+            .iter()
+            .any(|d| d.severity == Severity::Warning && d.message.contains("t3{6,3,3}")),
+        "{:#?}",
+        c.diagnostics
+    );
 }

@@ -456,9 +456,9 @@ mod tests {
                 for (e, i) in parts.half_edges.iter().zip(rings.nodes()) {
                     let f = s - lorentz::dot(s, n[i]) * n[i];
                     assert!(lorentz::dot(f, n[i]).abs() < 1e-12);
-                    for j in 0..4 {
+                    for nj in n {
                         assert!(
-                            lorentz::dot(f, n[j]) > -1e-12,
+                            lorentz::dot(f, nj) > -1e-12,
                             "{symbol} {rings}: foot outside"
                         );
                     }
@@ -676,7 +676,8 @@ mod tests {
     /// of their explicit parts (balls, rods and polygons of every chamber
     /// near the base point) for rays from near the base point, for the
     /// truncation, rectification, cantellation, runcination and
-    /// omnitruncation of `{4,3,5}` and others, with faces.
+    /// omnitruncation of `{4,3,5}` and others, paracompact ones among them,
+    /// with faces.
     #[test]
     fn uniform_walks_meet_the_nearest_explicit_part() {
         use crate::honeycomb::HoneycombPart;
@@ -687,7 +688,8 @@ mod tests {
             vertices: Some(0.07),
             ..HoneycombStyle::default()
         };
-        let cases: [((u32, u32, u32), &[u32]); 7] = [
+        type Case = ((u32, u32, u32), &'static [u32]);
+        let cases: [Case; 10] = [
             ((4, 3, 5), &[0, 1]),
             ((4, 3, 5), &[1]),
             ((4, 3, 5), &[0, 2]),
@@ -695,6 +697,10 @@ mod tests {
             ((4, 3, 5), &[0, 1, 2, 3]),
             ((5, 3, 4), &[1, 2]),
             ((3, 5, 3), &[0, 1]),
+            // Paracompact: horosphere-inscribed cells, ideal vertices.
+            ((6, 3, 3), &[0, 1]),
+            ((4, 4, 3), &[1]),
+            ((3, 3, 6), &[0, 1]),
         ];
         for ((p, q, r), nodes) in cases {
             let symbol = Schlafli::new(p, q, r).unwrap();

@@ -1,9 +1,10 @@
 //! `Honeycomb {p,q,r}, #M [, edges = w] [, faces = #F] [, vertices = r]
-//! [, depth = N] [, colors = (#A, ...)] [, at = %P];`: the Schläfli symbol
-//! checked (which geometry a symbol that is not one of the 15 belongs to),
-//! the style and the materials of the parts, and hgeom's walking surface.
+//! [, depth = N] [, colors = (#A, ...)] [, rings = (i, ...)] [, at = %P];`:
+//! the Schläfli symbol checked (which geometry a symbol that is not one of
+//! the 15 belongs to), the ringed nodes of a uniform honeycomb, the style
+//! and the materials of the parts, and hgeom's walking surface.
 
-use hgeom::{GeomError, HoneycombStyle, RegularHoneycomb, Schlafli};
+use hgeom::{CoxeterSimplex, GeomError, HoneycombStyle, RegularHoneycomb, Rings, Schlafli};
 
 use super::options::{HoneycombOptions, ObjectOptions};
 use crate::diagnostic::{Code, Diagnostic, Span};
@@ -85,6 +86,50 @@ impl Lowerer<'_> {
         }
     }
 
+    /// `rings = (i, ...)` (or `rings = i`): distinct nodes 0 to 3 of the
+    /// Coxeter diagram.
+    pub(super) fn ring_nodes(&mut self, value: &Value) -> Option<Rings> {
+        const HELP: &str = "write the ringed nodes of the diagram [p,q,r], each 0 to 3: `rings = (0)` is {p,q,r} itself, `(0, 1)` its truncation, `(1)` its rectification, `(0, 3)` its runcination, `(3)` the dual {r,q,p}";
+        let items = match value {
+            Value::Tuple { items, .. } => items.as_slice(),
+            Value::Number { .. } => std::slice::from_ref(value),
+            other => {
+                self.report(
+                    Diagnostic::new(
+                        Code::WrongType,
+                        other.span(),
+                        format!(
+                            "expected ringed nodes like `(0, 1)`, found {}",
+                            other.describe()
+                        ),
+                    )
+                    .with_help(HELP),
+                );
+                return None;
+            }
+        };
+        let mut nodes = Vec::with_capacity(items.len());
+        for item in items {
+            let x = self.number(item)?;
+            // At most 3, so it fits.
+            let node = self.integer_value(x, 0, 3, item.span(), "a ringed node")? as u32;
+            if nodes.contains(&node) {
+                self.report(
+                    Diagnostic::new(
+                        Code::InvalidValue,
+                        item.span(),
+                        format!("node {node} is ringed twice"),
+                    )
+                    .with_help(HELP),
+                );
+                return None;
+            }
+            nodes.push(node);
+        }
+        // Distinct nodes 0 to 3, at least one (a tuple is never empty).
+        Rings::new(&nodes).ok()
+    }
+
     /// The honeycomb's shape: its style from the options (edges of radius
     /// [`DEFAULT_EDGE_RADIUS`] when nothing is asked for), the materials of
     /// its parts, and hgeom's walk. `at` stays in `opts` for the placement.
@@ -100,7 +145,32 @@ impl Lowerer<'_> {
             vertices,
             depth,
             colors,
+            rings,
         } = opts.take_honeycomb();
+        let (rings, rings_span) = match rings {
+            Some((r, span)) => (r, Some(span)),
+            None => (Rings::REGULAR, None),
+        };
+        let name = if rings.is_regular() {
+            symbol.to_string()
+        } else {
+            format!("{rings}{symbol}")
+        };
+        if let Some(span) = rings_span.filter(|_| !rings.is_regular())
+            && (depth.is_some() || colors.is_some())
+        {
+            self.report(
+                Diagnostic::new(
+                    Code::ConflictingOptions,
+                    span,
+                    format!(
+                        "`depth` and `colors` count and colour the cells of a regular honeycomb; {name} has cells of several kinds"
+                    ),
+                )
+                .with_help("remove `depth` and `colors`, or ring node 0 alone (`rings = (0)`, the regular honeycomb)"),
+            );
+            return None;
+        }
         if let Some((d, span)) = depth.filter(|(d, _)| *d > 0 && symbol.has_ideal_cells()) {
             self.report(
                 Diagnostic::new(
@@ -117,13 +187,19 @@ impl Lowerer<'_> {
         let palette = colors.unwrap_or_default();
         let nothing_asked =
             edges.is_none() && faces.is_none() && vertices.is_none() && palette.is_empty();
-        if let Some((_, span)) = vertices.filter(|_| symbol.has_ideal_vertices()) {
+        // The vertices are ideal when one ideal vertex of the simplex alone
+        // is ringed (`hgeom::Rings`).
+        let ideal_vertices = match rings.nodes().collect::<Vec<_>>()[..] {
+            [k] => CoxeterSimplex::new(symbol).ideal()[k],
+            _ => false,
+        };
+        if let Some((_, span)) = vertices.filter(|_| ideal_vertices) {
             self.report(
                 Diagnostic::new(
                     Code::IneffectiveOption,
                     span,
                     format!(
-                        "every vertex of {symbol} is ideal (on the absolute), so `vertices` draws nothing"
+                        "every vertex of {name} is ideal (on the absolute), so `vertices` draws nothing"
                     ),
                 )
                 .with_help("its edges run out to the absolute; remove `vertices`, or draw the edges with `edges = w`"),
@@ -141,7 +217,7 @@ impl Lowerer<'_> {
             // At most MAX_CELL_COLORS, so it fits.
             cell_classes: palette.len().max(1) as u32,
         };
-        match RegularHoneycomb::new(symbol, style) {
+        match RegularHoneycomb::uniform(symbol, rings, style) {
             Ok(surface) => Some(vec![Shape::Honeycomb(Box::new(Honeycomb {
                 surface,
                 materials: PartMaterials { faces, palette },
@@ -156,13 +232,13 @@ impl Lowerer<'_> {
                     GeomError::TooManyCells { limit } => Diagnostic::new(
                         Code::InvalidValue,
                         span,
-                        format!("{symbol} at this depth has more than {limit} cells"),
+                        format!("{name} at this depth has more than {limit} cells"),
                     )
                     .with_help("use a smaller depth, or none: without `depth` the whole honeycomb is drawn by walking, at no cost per cell"),
                     other => Diagnostic::new(
                         Code::ImpossibleFigure,
                         span,
-                        format!("cannot build {symbol}: {other}"),
+                        format!("cannot build {name}: {other}"),
                     )
                     .with_help("edges and vertices must be thinner than the cells (see docs/honeycombs.md)"),
                 };

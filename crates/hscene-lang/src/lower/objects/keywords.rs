@@ -81,7 +81,7 @@ const FIGURE: &[ObjectOption] = &[
 ];
 
 /// The options of a honeycomb: what it draws, how deep, in which colours,
-/// and where its base cell is.
+/// which uniform honeycomb of its group, and where its base cell is.
 const HONEYCOMB: &[ObjectOption] = &[
     ObjectOption::Wireframe,
     ObjectOption::Edges,
@@ -90,6 +90,7 @@ const HONEYCOMB: &[ObjectOption] = &[
     ObjectOption::Vertices,
     ObjectOption::Depth,
     ObjectOption::Colors,
+    ObjectOption::Rings,
 ];
 
 const SIZE: &[Param] = &[Param::Length("the size")];

@@ -1,10 +1,10 @@
 //! The `key = value` options that end an object statement: `wireframe`,
 //! `edges` and `edge_material` (the edges of faceted objects as rods),
 //! `at` (where a figure built at the origin goes), `smooth` (a mesh's
-//! crease angle) and a honeycomb's `faces`, `vertices`, `depth` and
-//! `colors`; and placing the built shapes by them.
+//! crease angle) and a honeycomb's `faces`, `vertices`, `depth`, `colors`
+//! and `rings`; and placing the built shapes by them.
 
-use hgeom::{GeomError, Isometry, Point, Polyhedron, Rod, Vertex};
+use hgeom::{GeomError, Isometry, Point, Polyhedron, Rings, Rod, Vertex};
 
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::{MaterialId, Object, Shape};
@@ -34,6 +34,9 @@ pub(super) enum ObjectOption {
     Depth,
     /// `colors = (#A, #B, ...)`: a honeycomb's cells coloured by class.
     Colors,
+    /// `rings = (0, 1)`: the ringed nodes of a honeycomb's Coxeter diagram
+    /// (a uniform honeycomb by Wythoff's construction).
+    Rings,
 }
 
 /// Every object option, in the order the help lists them.
@@ -47,6 +50,7 @@ const OPTIONS: &[(&str, ObjectOption)] = &[
     ("vertices", ObjectOption::Vertices),
     ("depth", ObjectOption::Depth),
     ("colors", ObjectOption::Colors),
+    ("rings", ObjectOption::Rings),
 ];
 
 /// The deepest `depth` of a honeycomb, as for `Tessellation435` (whose
@@ -75,6 +79,7 @@ pub(super) struct ObjectOptions {
     vertices: Option<(f64, Span)>,
     depth: Option<(u32, Span)>,
     colors: Option<Vec<MaterialId>>,
+    rings: Option<(Rings, Span)>,
 }
 
 /// A honeycomb's own options, taken out of [`ObjectOptions`] (its edges are
@@ -86,6 +91,8 @@ pub(super) struct HoneycombOptions {
     pub(super) vertices: Option<(f64, Span)>,
     pub(super) depth: Option<(u32, Span)>,
     pub(super) colors: Option<Vec<MaterialId>>,
+    /// The ringed nodes and where they were given.
+    pub(super) rings: Option<(Rings, Span)>,
 }
 
 impl ObjectOptions {
@@ -107,6 +114,7 @@ impl ObjectOptions {
             vertices: self.vertices.take(),
             depth: self.depth.take(),
             colors: self.colors.take(),
+            rings: self.rings.take(),
         }
     }
 }
@@ -171,6 +179,10 @@ impl Lowerer<'_> {
                 }
                 ObjectOption::Colors => match self.cell_colors(value) {
                     Some(c) => out.colors = Some(c),
+                    None => ok = false,
+                },
+                ObjectOption::Rings => match self.ring_nodes(value) {
+                    Some(r) => out.rings = Some((r, key.span.to(value.span()))),
                     None => ok = false,
                 },
             }
