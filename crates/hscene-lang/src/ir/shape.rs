@@ -26,6 +26,9 @@ pub type BoxedSurface = Box<dyn Surface + Send + Sync>;
 /// under a bounding hierarchy; the object is met where its nearest part
 /// is. Parts are kept as they are, not boxed one by one: a wireframe of
 /// tens of thousands of rods is shared with the IR, not copied.
+// A tag byte of its own: without it the variant is read from a niche of
+// the faces' `Vec` (several comparisons), once per exact test.
+#[repr(u8)]
 pub enum Surfaces {
     /// One surface.
     Single(BoxedSurface),
