@@ -181,6 +181,22 @@ fn depth_draws_what_tessellation435_draws() {
 /// `(1,1,-1)`, at ball radius `tanh(R/2)` with `cosh R = φ²/√2`.
 #[test]
 fn a_symmetry_applied_to_the_camera_leaves_the_picture_unchanged() {
+    symmetry_leaves_the_picture_unchanged("");
+}
+
+/// The same rotation is in the group `[4,3,5]`, so it is a symmetry of
+/// every uniform honeycomb of the group too: the truncated and the
+/// runcinated `{4,3,5}` look the same from the moved camera.
+#[test]
+fn a_symmetry_of_the_group_leaves_uniform_pictures_unchanged() {
+    symmetry_leaves_the_picture_unchanged(", rings = (0, 1)");
+    symmetry_leaves_the_picture_unchanged(", rings = (0, 3)");
+}
+
+/// The picture of `Honeycomb {4,3,5}` with `options` from a camera and
+/// light turned about an edge of the base cube by multiples of 72°, and by
+/// 36° (not a symmetry).
+fn symmetry_leaves_the_picture_unchanged(options: &str) {
     let dir = tempfile::tempdir().expect("temporary directory");
     let phi_sq = (3.0 + 5f64.sqrt()) / 2.0;
     let circumradius = (phi_sq / std::f64::consts::SQRT_2).acosh();
@@ -192,7 +208,7 @@ fn a_symmetry_applied_to_the_camera_leaves_the_picture_unchanged() {
              {MATERIALS}Points {{ eye = (0.05, -0.1, 0.08); target = (0.3, 0.2, 0.6); \
              up = (0.05, 0.2, 0.08); a = ({k}, {k}, {k}); b = ({k}, {k}, {m}); }}\n\
              Lights {{ lamp: %eye, (4, 4, 4), (3, 3, 3); }}\n\
-             Objects {{ Honeycomb {{4,3,5}}, #edge, edges = 0.03, faces = #glass, vertices = 0.06; }}\n\
+             Objects {{ Honeycomb {{4,3,5}}, #edge, edges = 0.03, faces = #glass, vertices = 0.06{options}; }}\n\
              Transformations {{ edge: hline (%a, %b); {moves} }}\n",
             m = -k
         )
@@ -206,8 +222,11 @@ fn a_symmetry_applied_to_the_camera_leaves_the_picture_unchanged() {
         );
         let (moved, _) = render(dir.path(), name, &base(&moves), 64);
         let share = agreement(&still, &moved, TOLERANCE);
-        eprintln!("rotation {name}: {share} of the pixels agree");
-        assert!(share >= AGREE, "{name}: {share} of the pixels agree");
+        eprintln!("{options}: rotation {name}: {share} of the pixels agree");
+        assert!(
+            share >= AGREE,
+            "{options} {name}: {share} of the pixels agree"
+        );
     }
     // A rotation that is not a symmetry does change the picture.
     let moves = format!(
@@ -216,8 +235,33 @@ fn a_symmetry_applied_to_the_camera_leaves_the_picture_unchanged() {
     );
     let (other, _) = render(dir.path(), "half", &base(&moves), 64);
     let share = agreement(&still, &other, TOLERANCE);
-    eprintln!("half a turn: {share} of the pixels agree");
-    assert!(share < 0.9);
+    eprintln!("{options}: half a turn: {share} of the pixels agree");
+    assert!(share < 0.9, "{options}: {share}");
+}
+
+/// `rings = (0)` is the regular honeycomb, the same picture to the bit;
+/// other rings draw another honeycomb of the same group.
+#[test]
+fn node_zero_ringed_is_the_regular_picture_and_other_rings_are_not() {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let scene = |options: &str| {
+        format!(
+            "Globals {{ from = (0.02, 0.03, 0.01); to = (0.06, 0.09, 0.4); fov = 100; \
+             background = (0, 0, 0); ambient = (0.4, 0.4, 0.4); recursion_depth = 3; }}\n\
+             {MATERIALS}Lights {{ (0.1, 0.2, -0.1), (4, 4, 4), (3, 3, 3); }}\n\
+             Objects {{ Honeycomb {{5,3,4}}, #edge, edges = 0.03, faces = #glass{options}; }}\n"
+        )
+    };
+    let (plain, _) = render(dir.path(), "plain", &scene(""), 64);
+    let (zero, _) = render(dir.path(), "zero", &scene(", rings = (0)"), 64);
+    assert!(plain == zero);
+    let (truncated, _) = render(dir.path(), "truncated", &scene(", rings = (0, 1)"), 64);
+    let lit = truncated
+        .iter()
+        .filter(|px| px.iter().any(|&c| c > 8))
+        .count();
+    assert!(lit > truncated.len() / 10, "{lit} pixels lit");
+    assert!(agreement(&plain, &truncated, TOLERANCE) < 0.9);
 }
 
 /// Shadow rays walk the honeycomb and lose light at every face they cross:
