@@ -334,7 +334,8 @@ impl PreparedScene {
         let mut counted: SmallVec<[u32; 8]> = SmallVec::new();
         self.accel.any(ray, t_min, tanh_t_max, |i| {
             let r = self.surfaces[i as usize];
-            if counted.contains(&r.object) {
+            // Most shadow rays meet only opaque objects: nothing to look up.
+            if !counted.is_empty() && counted.contains(&r.object) {
                 return Step::Continue;
             }
             let o = &self.objects[r.object as usize];
