@@ -351,45 +351,51 @@ fn half_edge(s: DVec4, ideal: bool, n: &[DVec4; 4], i: usize) -> Option<HalfEdge
     Some(HalfEdge { n1, n2, u })
 }
 
+/// The pairs of mirrors `i < j` whose rotations carry the seed round a
+/// face: one of them ringed, and not orthogonal mirrors with only one
+/// ringed (that "polygon" is an edge).
+fn face_pairs(n: &[DVec4; 4], rings: Rings) -> impl Iterator<Item = (usize, usize)> + '_ {
+    (0..4)
+        .flat_map(|i| (i + 1..4).map(move |j| (i, j)))
+        .filter(move |&(i, j)| {
+            let (ri, rj) = (rings.contains(i), rings.contains(j));
+            let orthogonal = lorentz::dot(n[i], n[j]).abs() < 1e-12;
+            (ri || rj) && !(orthogonal && ri != rj)
+        })
+}
+
 /// The face pieces in the simplex (module docs).
 fn face_pieces(s: DVec4, n: &[DVec4; 4], v: &[DVec4; 4], rings: Rings) -> Option<Vec<FacePiece>> {
     let mut pieces = Vec::new();
-    for i in 0..4 {
-        for j in i + 1..4 {
-            let g = lorentz::dot(n[i], n[j]);
-            let (ri, rj) = (rings.contains(i), rings.contains(j));
-            // m_ij = 2 (orthogonal mirrors) with one ring: an edge, no face.
-            if !(ri || rj) || (g.abs() < 1e-12 && ri != rj) {
-                continue;
-            }
-            // The foot c of s on L = m_i ∩ m_j: s minus its part in
-            // span{n_i, n_j}, solved with the Gram matrix [[1, g], [g, 1]].
-            let (si, sj) = (lorentz::dot(s, n[i]), lorentz::dot(s, n[j]));
-            let det = 1.0 - g * g;
-            let alpha = (si - g * sj) / det;
-            let beta = (sj - g * si) / det;
-            let c = s - alpha * n[i] - beta * n[j];
-            // L holds the other two vertices; P is the direction of L at c.
-            let (k, l) = match (0..4).filter(|&x| x != i && x != j).collect::<Vec<_>>()[..] {
-                [k, l] => (k, l),
-                _ => return None,
-            };
-            let mu = -lorentz::dot(c, v[k]) / lorentz::dot(c, v[l]);
-            let p = unit(v[k] + mu * v[l])?;
-            let mut bounds = Vec::new();
-            for ringed in [i, j].into_iter().filter(|&x| rings.contains(x)) {
-                let f = s - lorentz::dot(s, n[ringed]) * n[ringed];
-                let b = lorentz::orthogonal_complement(s, f, p);
-                let b = unit(b)?;
-                bounds.push(if lorentz::dot(c, b) >= 0.0 { b } else { -b });
-            }
-            let wall = (0..4).find(|&w| (lorentz::dot(p, n[w]).abs() - 1.0).abs() < 1e-9);
-            pieces.push(FacePiece {
-                p: wall.map_or(p, |w| n[w]),
-                bounds,
-                wall,
-            });
+    for (i, j) in face_pairs(n, rings) {
+        let g = lorentz::dot(n[i], n[j]);
+        // The foot c of s on L = m_i ∩ m_j: s minus its part in
+        // span{n_i, n_j}, solved with the Gram matrix [[1, g], [g, 1]].
+        let (si, sj) = (lorentz::dot(s, n[i]), lorentz::dot(s, n[j]));
+        let det = 1.0 - g * g;
+        let alpha = (si - g * sj) / det;
+        let beta = (sj - g * si) / det;
+        let c = s - alpha * n[i] - beta * n[j];
+        // L holds the other two vertices; P is the direction of L at c.
+        let (k, l) = match (0..4).filter(|&x| x != i && x != j).collect::<Vec<_>>()[..] {
+            [k, l] => (k, l),
+            _ => return None,
+        };
+        let mu = -lorentz::dot(c, v[k]) / lorentz::dot(c, v[l]);
+        let p = unit(v[k] + mu * v[l])?;
+        let mut bounds = Vec::new();
+        for ringed in [i, j].into_iter().filter(|&x| rings.contains(x)) {
+            let f = s - lorentz::dot(s, n[ringed]) * n[ringed];
+            let b = lorentz::orthogonal_complement(s, f, p);
+            let b = unit(b)?;
+            bounds.push(if lorentz::dot(c, b) >= 0.0 { b } else { -b });
         }
+        let wall = (0..4).find(|&w| (lorentz::dot(p, n[w]).abs() - 1.0).abs() < 1e-9);
+        pieces.push(FacePiece {
+            p: wall.map_or(p, |w| n[w]),
+            bounds,
+            wall,
+        });
     }
     Some(pieces)
 }
@@ -598,28 +604,21 @@ mod tests {
         // The faces of the base chamber's seed, as polygons in order round
         // their centres (the dihedral orbit of the seed, sorted by angle).
         let mut base_faces = Vec::new();
-        for i in 0..4 {
-            for j in i + 1..4 {
-                let g = lorentz::dot(n[i], n[j]);
-                let (ri, rj) = (rings.contains(i), rings.contains(j));
-                if !(ri || rj) || (g.abs() < 1e-12 && ri != rj) {
-                    continue;
-                }
-                let ring = orbit(s, &[refl[i], refl[j]]).unwrap();
-                let centre = ring.iter().fold(DVec4::ZERO, |a, x| a + *x);
-                let centre = centre / (-lorentz::dot(centre, centre)).sqrt();
-                let e1 = ring[0] + lorentz::dot(ring[0], centre) * centre;
-                let e1 = e1 / lorentz::dot(e1, e1).sqrt();
-                let normal = lorentz::orthogonal_complement(ring[0], ring[1], ring[2]);
-                let e2 = lorentz::orthogonal_complement(centre, e1, normal);
-                let e2 = e2 / lorentz::dot(e2, e2).sqrt();
-                let mut sorted = ring.clone();
-                sorted.sort_by(|a, b| {
-                    let angle = |x: &DVec4| lorentz::dot(*x, e2).atan2(lorentz::dot(*x, e1));
-                    angle(a).total_cmp(&angle(b))
-                });
-                base_faces.push((centre, sorted));
-            }
+        for (i, j) in face_pairs(&n, rings) {
+            let ring = orbit(s, &[refl[i], refl[j]]).unwrap();
+            let centre = ring.iter().fold(DVec4::ZERO, |a, x| a + *x);
+            let centre = centre / (-lorentz::dot(centre, centre)).sqrt();
+            let e1 = ring[0] + lorentz::dot(ring[0], centre) * centre;
+            let e1 = e1 / lorentz::dot(e1, e1).sqrt();
+            let normal = lorentz::orthogonal_complement(ring[0], ring[1], ring[2]);
+            let e2 = lorentz::orthogonal_complement(centre, e1, normal);
+            let e2 = e2 / lorentz::dot(e2, e2).sqrt();
+            let mut sorted = ring.clone();
+            sorted.sort_by(|a, b| {
+                let angle = |x: &DVec4| lorentz::dot(*x, e2).atan2(lorentz::dot(*x, e1));
+                angle(a).total_cmp(&angle(b))
+            });
+            base_faces.push((centre, sorted));
         }
         let mut seen = HashSet::new();
         // Breadth first: each chamber's map is a shortest word of

@@ -227,20 +227,41 @@ impl RegularHoneycomb {
             }
             _ => None,
         };
-        Ok(RegularHoneycomb {
+        Ok(RegularHoneycomb::in_base_placement(
             symbol,
-            rings: Rings::REGULAR,
+            Rings::REGULAR,
+            style,
+            &simplex,
+            domain,
+            cells,
+            cosh_reach,
+        ))
+    }
+
+    /// The honeycomb in its base placement, walked to the default horizon.
+    fn in_base_placement(
+        symbol: Schlafli,
+        rings: Rings,
+        style: HoneycombStyle,
+        simplex: &CoxeterSimplex,
+        domain: WalkDomain,
+        cells: Option<Arc<CellSet>>,
+        cosh_reach: Option<f64>,
+    ) -> RegularHoneycomb {
+        RegularHoneycomb {
+            symbol,
+            rings,
             style,
             domain: Arc::new(domain),
             cells,
-            shells: Shells::new(&simplex),
+            shells: Shells::new(simplex),
             placement: Isometry::IDENTITY,
             to_world: DMat4::IDENTITY,
             to_local: DMat4::IDENTITY,
             horizon: DEFAULT_HORIZON,
             cosh_horizon: DEFAULT_HORIZON.cosh(),
             cosh_reach,
-        })
+        }
     }
 
     /// The uniform honeycomb of the Coxeter group `[p,q,r]` with these
@@ -277,20 +298,9 @@ impl RegularHoneycomb {
         }
         let simplex = CoxeterSimplex::new(symbol);
         let domain = WalkDomain::uniform(&simplex, rings, &style)?;
-        Ok(RegularHoneycomb {
-            symbol,
-            rings,
-            style,
-            domain: Arc::new(domain),
-            cells: None,
-            shells: Shells::new(&simplex),
-            placement: Isometry::IDENTITY,
-            to_world: DMat4::IDENTITY,
-            to_local: DMat4::IDENTITY,
-            horizon: DEFAULT_HORIZON,
-            cosh_horizon: DEFAULT_HORIZON.cosh(),
-            cosh_reach: None,
-        })
+        Ok(RegularHoneycomb::in_base_placement(
+            symbol, rings, style, &simplex, domain, None, None,
+        ))
     }
 
     /// The ringed nodes of its Coxeter diagram ([`Rings::REGULAR`] for a
