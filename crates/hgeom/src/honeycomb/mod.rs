@@ -14,9 +14,11 @@
 //! - `walk`: [`RegularHoneycomb`], the honeycomb as one surface traced by
 //!   walking each ray from cell to cell (or through the simplex);
 //!   `domain`: the cell or simplex it walks and the parts inside it;
-//!   `kernels`: the arithmetic of one step.
+//!   `kernels`: the arithmetic of one step; `crossings`: the walls crossed,
+//!   folded into the domain matrix only when it is needed.
 
 mod cells;
+mod crossings;
 mod cube435;
 mod domain;
 mod kernels;

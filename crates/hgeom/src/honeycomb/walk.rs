@@ -101,8 +101,9 @@ use crate::ray::{Hit, Ray};
 use crate::roots::exp_roots_lazy;
 
 use super::cells::{CellSet, Shells};
+use super::crossings::{Crossings, Pending};
 use super::domain::{DomainPart, DomainRay, MAX_WALLS, WalkDomain};
-use super::kernels::{lorentz_inverse, nearest_exit, reflect, renormalise, times_reflection};
+use super::kernels::{lorentz_inverse, nearest_exit, reflect, renormalise};
 use super::schlafli::Schlafli;
 use super::simplex::CoxeterSimplex;
 use super::style::{HoneycombStyle, encode_part};
@@ -690,62 +691,5 @@ impl RegularHoneycomb {
             shading: normal,
             part: encode_part(part.kind(), class),
         }
-    }
-}
-
-/// Walls crossed but not yet folded into the domain matrix.
-/// What a walk does with the walls it crosses.
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum Crossings {
-    /// Folds each into the domain matrix at once (the drawn cells are asked
-    /// for at every step).
-    Eager,
-    /// Keeps them, to fold in batches or at a hit.
-    Deferred,
-    /// Drops them: the matrix is never read (an any-hit walk).
-    Unused,
-}
-
-struct Pending {
-    walls: [u8; Pending::CAPACITY],
-    len: usize,
-    crossings: Crossings,
-}
-
-impl Pending {
-    const CAPACITY: usize = 16;
-
-    fn new(crossings: Crossings) -> Pending {
-        Pending {
-            walls: [0; Pending::CAPACITY],
-            len: 0,
-            crossings,
-        }
-    }
-
-    /// The walk crossed `wall`: `m` becomes (or will become) `m R_wall`.
-    fn cross(&mut self, wall: usize, m: &mut DMat4, walls: &[DVec4]) {
-        match self.crossings {
-            Crossings::Eager => *m = times_reflection(m, walls[wall]),
-            Crossings::Deferred => self.push(wall, m, walls),
-            Crossings::Unused => {}
-        }
-    }
-
-    fn push(&mut self, wall: usize, m: &mut DMat4, walls: &[DVec4]) {
-        if self.len == Self::CAPACITY {
-            self.fold_into(m, walls);
-        }
-        // Walls number at most MAX_WALLS (20): a u8 holds the index.
-        self.walls[self.len] = wall as u8;
-        self.len += 1;
-    }
-
-    /// `m` times the pending reflections, in the order crossed.
-    fn fold_into(&mut self, m: &mut DMat4, walls: &[DVec4]) {
-        for &w in &self.walls[..self.len] {
-            *m = times_reflection(m, walls[usize::from(w)]);
-        }
-        self.len = 0;
     }
 }
