@@ -358,13 +358,18 @@ impl WalkDomain {
         })
     }
 
+    /// True for a uniform honeycomb's domain (with seed parts).
+    pub(super) fn is_seeded(&self) -> bool {
+        self.seed.is_some()
+    }
+
     /// The walls (inward unit normals).
     pub(super) fn walls(&self) -> &[DVec4] {
         &self.walls
     }
 
     /// `a[i] = <o, walls[i]>` and `b[i] = <d, walls[i]>`.
-    #[inline]
+    #[inline(always)]
     pub(super) fn products(
         &self,
         o: DVec4,
@@ -412,8 +417,9 @@ impl WalkDomain {
     /// The first part met in this domain at `floor < v <= window`, in
     /// `v = e^{2τ}` from the ray's start here; `present` says whether a
     /// part with these cells is drawn.
+    /// `SEEDED`: whether to test a uniform honeycomb's seed parts.
     #[inline(always)]
-    pub(super) fn first_part(
+    pub(super) fn first_part<const SEEDED: bool>(
         &self,
         ray: &DomainRay,
         floor: f64,
@@ -493,7 +499,7 @@ impl WalkDomain {
         {
             found = Some((ray.v_exit, DomainPart::Face(exit)));
         }
-        if let Some(seed) = &self.seed {
+        if SEEDED && let Some(seed) = &self.seed {
             seed.first_part(ray, floor, window, lambda2, &mut found);
         }
         found

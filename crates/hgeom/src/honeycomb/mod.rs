@@ -15,7 +15,8 @@
 //!   walking each ray from cell to cell (or through the simplex);
 //!   `domain`: the cell or simplex it walks and the parts inside it;
 //!   `kernels`: the arithmetic of one step; `crossings`: the walls crossed,
-//!   folded into the domain matrix only when it is needed.
+//!   folded into the domain matrix only when it is needed; `walk_record`:
+//!   what a walk reports besides its hit.
 
 mod cells;
 mod crossings;
@@ -27,6 +28,7 @@ mod simplex;
 mod style;
 mod uniform;
 mod walk;
+mod walk_record;
 
 pub use cube435::{
     CUBE_435_DIHEDRAL, HoneycombCell, MAX_TESSELLATION_CELLS, SAME_CELL_DISTANCE, cube_435,
@@ -36,4 +38,5 @@ pub use schlafli::{Schlafli, SchlafliError};
 pub use simplex::CoxeterSimplex;
 pub use style::{HoneycombPart, HoneycombStyle, decode_honeycomb_part};
 pub use uniform::Rings;
-pub use walk::{DEFAULT_HORIZON, MAX_WALK_STEPS, RegularHoneycomb, WalkStats, WalkStep};
+pub use walk::{DEFAULT_HORIZON, MAX_WALK_STEPS, RegularHoneycomb};
+pub use walk_record::{WalkStats, WalkStep};
