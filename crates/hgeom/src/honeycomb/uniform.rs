@@ -80,6 +80,10 @@ impl Rings {
     /// Node 0 alone: the regular honeycomb.
     pub const REGULAR: Rings = Rings(1);
 
+    /// Node 3 alone: the dual regular honeycomb `{r,q,p}`, with a vertex
+    /// where `{p,q,r}` has a cell centre.
+    pub const DUAL: Rings = Rings(1 << 3);
+
     /// The rings on these nodes (each 0 to 3, in any order; repeats are
     /// one ring).
     ///
@@ -126,6 +130,11 @@ impl std::fmt::Display for Rings {
 /// past the end plane of a half-edge or the edge of a face piece and still
 /// count: the rods and balls cover those seams.
 const SEAM_SLACK: f64 = 1e-9;
+
+/// How far past the exit (in `tanh τ`) a face piece's plane crossing may
+/// round and still be taken as the exit point: far above the rounding of
+/// `-α/β` and of the exit's own quotient, far below any feature.
+const SEAM_ROUNDING: f64 = 1e-12;
 
 /// The tube about one half-edge `[s, f_i]`: the orthonormal pair `n1`, `n2`
 /// orthogonal to its line, and its unit tangent `u` at `s` towards `f_i`
@@ -288,10 +297,16 @@ impl SeedParts {
                     let alpha = lorentz::dot(ray.o, piece.p);
                     let beta = lorentz::dot(ray.d, piece.p);
                     let tanh = -alpha / beta;
-                    if !(tanh >= 0.0 && tanh <= ray.s_exit && tanh < 1.0) {
+                    // A crossing on the piece's seam in the exit wall may
+                    // round past the exit; it is the exit point, or the
+                    // ray would slip through the seam in both chambers.
+                    if tanh > ray.s_exit && tanh <= ray.s_exit + SEAM_ROUNDING {
+                        (ray.s_exit, ray.v_exit)
+                    } else if tanh >= 0.0 && tanh <= ray.s_exit && tanh < 1.0 {
+                        (tanh, (1.0 + tanh) / (1.0 - tanh))
+                    } else {
                         continue;
                     }
-                    (tanh, (1.0 + tanh) / (1.0 - tanh))
                 }
             };
             if !better(v, found) {
@@ -333,15 +348,21 @@ fn half_edge(s: DVec4, ideal: bool, n: &[DVec4; 4], i: usize) -> Option<HalfEdge
     let f = s - lorentz::dot(s, n[i]) * n[i];
     let f = f / (-lorentz::dot(f, f)).sqrt();
     let off_line = |x: DVec4| x + lorentz::dot(x, f) * f - lorentz::dot(x, n[i]) * n[i];
-    // Two of the other normals, off the line, orthonormalised: the pair
-    // orthogonal to the line (the two most independent of three).
-    let mut rest: Vec<DVec4> = (0..4).filter(|&j| j != i).map(|j| off_line(n[j])).collect();
-    rest.sort_by(|a, b| lorentz::dot(*b, *b).total_cmp(&lorentz::dot(*a, *a)));
-    let n1 = unit(rest[0])?;
-    let n2 = rest[1..]
+    // The other normals, off the line, span the plane orthogonal to it:
+    // the longest of them, then the longest of the rest once it is taken
+    // out (the two most independent of the three).
+    let rest: Vec<DVec4> = (0..4).filter(|&j| j != i).map(|j| off_line(n[j])).collect();
+    let longest = |xs: &[DVec4]| {
+        xs.iter()
+            .copied()
+            .max_by(|a, b| lorentz::dot(*a, *a).total_cmp(&lorentz::dot(*b, *b)))
+    };
+    let n1 = unit(longest(&rest)?)?;
+    let residuals: Vec<DVec4> = rest
         .iter()
-        .filter_map(|x| unit(*x - lorentz::dot(*x, n1) * n1))
-        .next()?;
+        .map(|x| *x - lorentz::dot(*x, n1) * n1)
+        .collect();
+    let n2 = unit(longest(&residuals)?)?;
     let u = if ideal {
         None
     } else {
@@ -390,7 +411,9 @@ fn face_pieces(s: DVec4, n: &[DVec4; 4], v: &[DVec4; 4], rings: Rings) -> Option
             let b = unit(b)?;
             bounds.push(if lorentz::dot(c, b) >= 0.0 { b } else { -b });
         }
-        let wall = (0..4).find(|&w| (lorentz::dot(p, n[w]).abs() - 1.0).abs() < 1e-9);
+        // The plane is a wall's when its normal is that wall's, up to sign
+        // (|<p,n>| = 1 alone also holds for planes meeting at the absolute).
+        let wall = (0..4).find(|&w| (p - n[w]).length().min((p + n[w]).length()) < 1e-9);
         pieces.push(FacePiece {
             p: wall.map_or(p, |w| n[w]),
             bounds,

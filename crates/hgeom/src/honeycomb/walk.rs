@@ -312,8 +312,9 @@ impl RegularHoneycomb {
 
     /// The walls the walk reflects the ray in ([`WalkStep::wall`] indexes
     /// them), inward unit normals in the honeycomb's frame before placement:
-    /// the faces of the base cell when the cells are finite, else the four
-    /// mirrors of the characteristic simplex ([`CoxeterSimplex::normals`]).
+    /// the faces of the base cell when the cells are finite, else (and for
+    /// every uniform honeycomb other than the regular one) the four mirrors
+    /// of the characteristic simplex ([`CoxeterSimplex::normals`]).
     pub fn walls(&self) -> Vec<DVec4> {
         self.domain.walls().to_vec()
     }

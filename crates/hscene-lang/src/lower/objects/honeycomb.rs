@@ -159,15 +159,28 @@ impl Lowerer<'_> {
         if let Some(span) = rings_span.filter(|_| !rings.is_regular())
             && (depth.is_some() || colors.is_some())
         {
+            // Node 3 alone is the dual, a regular honeycomb of its own.
+            let (p, q, r) = (symbol.p(), symbol.q(), symbol.r());
+            let (why, help) = if rings == Rings::DUAL {
+                (
+                    format!(
+                        "{name} is the regular {{{r},{q},{p}}}, with a vertex where a cell of {symbol} is centred"
+                    ),
+                    format!("write `Honeycomb {{{r},{q},{p}}}` to count and colour its cells"),
+                )
+            } else {
+                (
+                    format!("{name} has cells of several kinds"),
+                    "remove `depth` and `colors`, or ring node 0 alone (`rings = (0)`, the regular honeycomb)".to_string(),
+                )
+            };
             self.report(
                 Diagnostic::new(
                     Code::ConflictingOptions,
                     span,
-                    format!(
-                        "`depth` and `colors` count and colour the cells of a regular honeycomb; {name} has cells of several kinds"
-                    ),
+                    format!("`depth` and `colors` are for regular honeycombs; {why}"),
                 )
-                .with_help("remove `depth` and `colors`, or ring node 0 alone (`rings = (0)`, the regular honeycomb)"),
+                .with_help(help),
             );
             return None;
         }
