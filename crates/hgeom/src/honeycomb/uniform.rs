@@ -116,6 +116,16 @@ impl Rings {
     pub fn is_regular(self) -> bool {
         self == Rings::REGULAR
     }
+
+    /// True if the uniform honeycomb of these rings in `simplex` has ideal
+    /// vertices: one ideal vertex of the simplex alone is ringed.
+    pub fn seed_is_ideal(self, simplex: &CoxeterSimplex) -> bool {
+        let mut nodes = self.nodes();
+        match (nodes.next(), nodes.next()) {
+            (Some(k), None) => simplex.ideal()[k],
+            _ => false,
+        }
+    }
 }
 
 impl std::fmt::Display for Rings {
@@ -192,7 +202,7 @@ impl SeedParts {
             s += v[i] / lorentz::dot(v[i], n[i]);
         }
         let ss = lorentz::dot(s, s);
-        let ideal = rings.nodes().count() == 1 && simplex.ideal()[rings.nodes().sum::<usize>()];
+        let ideal = rings.seed_is_ideal(simplex);
         if ideal {
             // A null vector at time 1, as the simplex keeps ideal vertices.
             s /= s.w;

@@ -200,12 +200,7 @@ impl Lowerer<'_> {
         let palette = colors.unwrap_or_default();
         let nothing_asked =
             edges.is_none() && faces.is_none() && vertices.is_none() && palette.is_empty();
-        // The vertices are ideal when one ideal vertex of the simplex alone
-        // is ringed (`hgeom::Rings`).
-        let ideal_vertices = match rings.nodes().collect::<Vec<_>>()[..] {
-            [k] => CoxeterSimplex::new(symbol).ideal()[k],
-            _ => false,
-        };
+        let ideal_vertices = rings.seed_is_ideal(&CoxeterSimplex::new(symbol));
         if let Some((_, span)) = vertices.filter(|_| ideal_vertices) {
             self.report(
                 Diagnostic::new(
