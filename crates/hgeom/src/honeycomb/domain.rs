@@ -500,7 +500,14 @@ impl WalkDomain {
             found = Some((ray.v_exit, DomainPart::Face(exit)));
         }
         if SEEDED && let Some(seed) = &self.seed {
-            seed.first_part(ray, floor, window, lambda2, &mut found);
+            let sigma2 = seed.sinh2_edge() * lambda2;
+            // No edges, no caps: nothing to cull.
+            let near = if sigma2 > 0.0 {
+                self.walls_within(ray, wall_limit2(ray, sigma2))
+            } else {
+                0
+            };
+            seed.first_part(ray, floor, window, lambda2, near, &mut found);
         }
         found
     }

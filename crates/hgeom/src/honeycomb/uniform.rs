@@ -149,11 +149,17 @@ const SEAM_ROUNDING: f64 = 1e-12;
 /// The tube about one half-edge `[s, f_i]`: the orthonormal pair `n1`, `n2`
 /// orthogonal to its line, and its unit tangent `u` at `s` towards `f_i`
 /// (`None` at an ideal seed: the tube runs out to the absolute).
+///
+/// `walls`: the bits of the mirrors holding the whole line (the unringed
+/// mirrors orthogonal to `m_i`): a point within the edge radius of the
+/// line is within it of each of them, so a ray that does not come that
+/// near all of them in the chamber cannot meet the tube there.
 #[derive(Clone, Debug)]
 struct HalfEdge {
     n1: DVec4,
     n2: DVec4,
     u: Option<DVec4>,
+    walls: u32,
 }
 
 /// One face piece: the normal `p` of its plane, the normals `bounds` of
@@ -182,6 +188,9 @@ pub(super) struct SeedParts {
     /// the half-edges; `None` where it is not tested (no edges, an ideal
     /// seed, or inside a vertex ball at least as wide).
     cap_cosh: Option<f64>,
+    /// The bits of the mirrors through the seed (the unringed ones): the
+    /// cap's points are within the edge radius of each.
+    cap_walls: u32,
     pieces: Vec<FacePiece>,
 }
 
@@ -237,20 +246,29 @@ impl SeedParts {
                 },
                 sinh2_edge: edges.map_or(0.0, |w| w.sinh() * w.sinh()),
                 cap_cosh,
+                cap_walls: mirrors_through(s, &n),
                 pieces,
             },
             vertex_ball,
         ))
     }
 
+    /// `sinh²` of the edge radius (0 without edges).
+    pub(super) fn sinh2_edge(&self) -> f64 {
+        self.sinh2_edge
+    }
+
     /// The first of these parts the domain ray meets at
-    /// `floor < v <= window` (in `v = e^{2τ}`), if before `found`'s.
+    /// `floor < v <= window` (in `v = e^{2τ}`), if before `found`'s; `near`
+    /// holds the bits of the walls the ray comes within the edge radius of
+    /// in the chamber ([`Self::sinh2_edge`]).
     pub(super) fn first_part(
         &self,
         ray: &DomainRay,
         floor: f64,
         window: f64,
         lambda2: f64,
+        near: u32,
         found: &mut Option<(f64, DomainPart)>,
     ) {
         let better = |v: f64, found: &Option<(f64, DomainPart)>| {
@@ -263,6 +281,9 @@ impl SeedParts {
         };
         let k = self.sinh2_edge * lambda2;
         for (i, e) in self.half_edges.iter().enumerate() {
+            if near & e.walls != e.walls {
+                continue;
+            }
             let o = [lorentz::dot(ray.o, e.n1), lorentz::dot(ray.o, e.n2)];
             let d = [lorentz::dot(ray.d, e.n1), lorentz::dot(ray.d, e.n2)];
             let Some((near, far)) = tube_roots(o, d, k) else {
@@ -280,7 +301,9 @@ impl SeedParts {
                 }
             }
         }
-        if let Some(cosh_w) = self.cap_cosh {
+        if let Some(cosh_w) = self.cap_cosh
+            && near & self.cap_walls == self.cap_walls
+        {
             // -<X(τ),s> = α cosh τ + β sinh τ = cosh w (scaled by λ), in e^τ.
             let alpha = -lorentz::dot(ray.o, self.seed);
             let beta = -lorentz::dot(ray.d, self.seed);
@@ -351,6 +374,15 @@ fn unit(x: DVec4) -> Option<DVec4> {
     (n > 1e-24).then(|| x / n.sqrt())
 }
 
+/// The bits of the mirrors through the point or ideal point `x`.
+fn mirrors_through(x: DVec4, n: &[DVec4; 4]) -> u32 {
+    // At time 1, so that the test does not depend on the scale.
+    let x = x / x.w;
+    (0..4)
+        .filter(|&j| lorentz::dot(x, n[j]).abs() < 1e-9)
+        .fold(0, |bits, j| bits | (1 << j))
+}
+
 /// The half-edge from the seed `s` to its foot on mirror `i`.
 fn half_edge(s: DVec4, ideal: bool, n: &[DVec4; 4], i: usize) -> Option<HalfEdge> {
     // The line lies in span{s, n_i}; its foot f on m_i is timelike and
@@ -379,7 +411,12 @@ fn half_edge(s: DVec4, ideal: bool, n: &[DVec4; 4], i: usize) -> Option<HalfEdge
         // The tangent at s pointing away from n_i's side: towards m_i.
         Some(unit(-(n[i] + lorentz::dot(n[i], s) * s))?)
     };
-    Some(HalfEdge { n1, n2, u })
+    Some(HalfEdge {
+        n1,
+        n2,
+        u,
+        walls: mirrors_through(s, n) & mirrors_through(f, n),
+    })
 }
 
 /// The pairs of mirrors `i < j` whose rotations carry the seed round a
@@ -463,9 +500,10 @@ mod tests {
     /// The seed lies on the mirrors of the nodes not ringed and at one
     /// distance from the others; each foot lies on its mirror and in the
     /// simplex, every half-edge's tube normals are orthonormal and
-    /// orthogonal to its line, and each face piece's plane holds the seed
-    /// and the feet of its half-edges: for every symbol and all fifteen
-    /// ring sets.
+    /// orthogonal to its line, the walls that cull a tube or the cap are
+    /// the mirrors that hold it, and each face piece's plane holds the
+    /// seed and the feet of its half-edges: for every symbol and all
+    /// fifteen ring sets.
     #[test]
     fn seeds_feet_and_pieces_are_where_the_construction_puts_them() {
         let style = HoneycombStyle {
@@ -509,7 +547,17 @@ mod tests {
                         assert!(lorentz::dot(x, e.n1).abs() < 1e-12 * scale);
                         assert!(lorentz::dot(x, e.n2).abs() < 1e-12 * scale);
                     }
+                    // The walls that cull the tube: the unringed mirrors
+                    // orthogonal to m_i, which hold its whole line.
+                    for j in 0..4 {
+                        let holds = !rings.contains(j) && lorentz::dot(n[i], n[j]).abs() < 1e-12;
+                        assert_eq!(e.walls & (1 << j) != 0, holds, "{symbol} {rings} {i} {j}");
+                    }
                 }
+                let unringed = (0..4)
+                    .filter(|&j| !rings.contains(j))
+                    .fold(0, |b, j| b | (1 << j));
+                assert_eq!(parts.cap_walls, unringed, "{symbol} {rings}");
                 for piece in &parts.pieces {
                     assert!(lorentz::dot(s, piece.p).abs() < 1e-12, "{symbol} {rings}");
                     for b in &piece.bounds {
