@@ -500,14 +500,14 @@ impl WalkDomain {
             found = Some((ray.v_exit, DomainPart::Face(exit)));
         }
         if SEEDED && let Some(seed) = &self.seed {
-            let sigma2 = seed.sinh2_edge() * lambda2;
-            // No edges, no caps: nothing to cull.
-            let near = if sigma2 > 0.0 {
-                self.walls_within(ray, wall_limit2(ray, sigma2))
+            // Only the walls of some tube or of the cap are asked for:
+            // a part no wall culls is always tested.
+            let near_walls = if seed.culling_walls() != 0 {
+                self.walls_within(ray, wall_limit2(ray, seed.sinh2_edge() * lambda2))
             } else {
                 0
             };
-            seed.first_part(ray, floor, window, lambda2, near, &mut found);
+            seed.first_part(ray, floor, window, lambda2, near_walls, &mut found);
         }
         found
     }
