@@ -616,12 +616,74 @@ fn too_many() -> GeomError {
     }
 }
 
+/// Two walks of the same honeycomb through different walls, `first` and
+/// `second`, on 300 rays from within 1.5 of the base point: each ray hits
+/// in both or in neither (and `blocks` says so), and more than `min_hits`
+/// hit. Where both hit, the same arc length within their drift (they
+/// drift apart like the walk from the exact ray, `walk.rs`, "Accuracy"),
+/// the same kind of part (and class, if `class_too`), and normals turned
+/// by no more than the drift moves a point on a rod of radius at least
+/// 0.01 (`δ / w`).
+#[cfg(test)]
+pub(super) fn assert_walks_agree(
+    first: &super::RegularHoneycomb,
+    second: &super::RegularHoneycomb,
+    rng: &mut crate::test_rng::Rng,
+    class_too: bool,
+    min_hits: u32,
+    what: &str,
+) {
+    use super::decode_honeycomb_part;
+    use crate::point::Point;
+    use crate::ray::Ray;
+    let (mut hits, mut misses) = (0, 0);
+    for _ in 0..300 {
+        let start = Point::at_distance_from_origin(rng.direction(), rng.unit() * 1.5).unwrap();
+        let ray = Ray::from_ball(&start, rng.direction()).unwrap();
+        let a = first.intersect(&ray, 1e-9, f64::INFINITY);
+        let b = second.intersect(&ray, 1e-9, f64::INFINITY);
+        assert_eq!(
+            first.blocks(&ray, 1e-9, f64::INFINITY),
+            a.is_some(),
+            "{what}"
+        );
+        assert_eq!(
+            second.blocks(&ray, 1e-9, f64::INFINITY),
+            b.is_some(),
+            "{what}"
+        );
+        let (a, b) = match (a, b) {
+            (None, None) => {
+                misses += 1;
+                continue;
+            }
+            (Some(a), Some(b)) => (a, b),
+            (a, b) => panic!("{what}: {a:?} against {b:?}"),
+        };
+        hits += 1;
+        let drift = 3e-15 * (2.0 * a.t).exp();
+        assert!((a.t - b.t).abs() < 1e-9 + drift, "{what}: {} {}", a.t, b.t);
+        let (pa, pb) = (decode_honeycomb_part(a.part), decode_honeycomb_part(b.part));
+        if class_too {
+            assert_eq!(pa, pb, "{what} t {}", a.t);
+        } else {
+            assert_eq!(pa.0, pb.0, "{what} t {}", a.t);
+        }
+        assert!(
+            (a.normal - b.normal).length() < (1e-6 + 100.0 * drift) * a.point.w,
+            "{what} {pa:?} t {}: normals {} {}",
+            a.t,
+            a.normal,
+            b.normal
+        );
+    }
+    assert!(hits > min_hits, "{what}: {hits} hits, {misses} misses");
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::honeycomb::{RegularHoneycomb, Schlafli, decode_honeycomb_part};
-    use crate::point::Point;
-    use crate::ray::Ray;
+    use crate::honeycomb::{RegularHoneycomb, Schlafli};
     use crate::test_rng::Rng;
 
     /// `may_near_both` never drops a pair that some point of the line
@@ -729,54 +791,13 @@ mod tests {
             for style in styles {
                 let cells = RegularHoneycomb::new(symbol, style).unwrap();
                 let simplex = cells.clone().walked_by_simplex();
-                let (mut hits, mut misses) = (0, 0);
-                for _ in 0..300 {
-                    let start =
-                        Point::at_distance_from_origin(rng.direction(), rng.unit() * 1.5).unwrap();
-                    let ray = Ray::from_ball(&start, rng.direction()).unwrap();
-                    let a = cells.intersect(&ray, 1e-9, f64::INFINITY);
-                    let b = simplex.intersect(&ray, 1e-9, f64::INFINITY);
-                    assert_eq!(
-                        cells.blocks(&ray, 1e-9, f64::INFINITY),
-                        a.is_some(),
-                        "{symbol}"
-                    );
-                    match (a, b) {
-                        (None, None) => misses += 1,
-                        (Some(a), Some(b)) => {
-                            hits += 1;
-                            // Two walks through different walls drift apart like the
-                            // walk from the exact ray (`walk.rs`, "Accuracy").
-                            let drift = 3e-15 * (2.0 * a.t).exp();
-                            assert!(
-                                (a.t - b.t).abs() < 1e-9 + drift,
-                                "{symbol} {style:?}: {} {}",
-                                a.t,
-                                b.t
-                            );
-                            assert_eq!(
-                                decode_honeycomb_part(a.part),
-                                decode_honeycomb_part(b.part),
-                                "{symbol} {style:?} t {}",
-                                a.t
-                            );
-                            // A point moved by δ on a rod of radius w turns
-                            // the normal by δ / w (w >= 0.01 here).
-                            assert!(
-                                (a.normal - b.normal).length() < (1e-6 + 100.0 * drift) * a.point.w,
-                                "{symbol} {style:?} {:?} t {} {:?} {:?}",
-                                decode_honeycomb_part(a.part),
-                                a.t,
-                                a.normal,
-                                b.normal
-                            );
-                        }
-                        (a, b) => panic!("{symbol} {style:?}: {a:?} against {b:?}"),
-                    }
-                }
-                assert!(
-                    hits > 30,
-                    "{symbol} {style:?}: {hits} hits, {misses} misses"
+                assert_walks_agree(
+                    &cells,
+                    &simplex,
+                    &mut rng,
+                    true,
+                    30,
+                    &format!("{symbol} {style:?}"),
                 );
             }
         }

@@ -491,6 +491,7 @@ fn face_pieces(s: DVec4, n: &[DVec4; 4], v: &[DVec4; 4], rings: Rings) -> Option
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::honeycomb::domain::assert_walks_agree;
     use crate::honeycomb::{RegularHoneycomb, Schlafli, decode_honeycomb_part};
     use crate::point::Point;
     use crate::ray::Ray;
@@ -622,46 +623,13 @@ mod tests {
                     .unwrap()
                     .walked_by_simplex();
                 let seeded = RegularHoneycomb::wythoff(symbol, Rings::REGULAR, style).unwrap();
-                let (mut hits, mut misses) = (0, 0);
-                for _ in 0..300 {
-                    let start =
-                        Point::at_distance_from_origin(rng.direction(), rng.unit() * 1.5).unwrap();
-                    let ray = Ray::from_ball(&start, rng.direction()).unwrap();
-                    let a = regular.intersect(&ray, 1e-9, f64::INFINITY);
-                    let b = seeded.intersect(&ray, 1e-9, f64::INFINITY);
-                    assert_eq!(seeded.blocks(&ray, 1e-9, f64::INFINITY), b.is_some());
-                    match (a, b) {
-                        (None, None) => misses += 1,
-                        (Some(a), Some(b)) => {
-                            hits += 1;
-                            let drift = 3e-15 * (2.0 * a.t).exp();
-                            assert!(
-                                (a.t - b.t).abs() < 1e-9 + drift,
-                                "{symbol} {style:?}: {} {}",
-                                a.t,
-                                b.t
-                            );
-                            assert_eq!(
-                                decode_honeycomb_part(a.part).0,
-                                decode_honeycomb_part(b.part).0,
-                                "{symbol} {style:?} t {}",
-                                a.t
-                            );
-                            // A point moved by δ on a rod of radius w turns
-                            // the normal by δ / w (w >= 0.02 here).
-                            assert!(
-                                (a.normal - b.normal).length() < (1e-6 + 100.0 * drift) * a.point.w,
-                                "{symbol} {style:?}: normals {} {}",
-                                a.normal,
-                                b.normal
-                            );
-                        }
-                        (a, b) => panic!("{symbol} {style:?}: {a:?} against {b:?}"),
-                    }
-                }
-                assert!(
-                    hits > 50,
-                    "{symbol} {style:?}: {hits} hits, {misses} misses"
+                assert_walks_agree(
+                    &regular,
+                    &seeded,
+                    &mut rng,
+                    false,
+                    50,
+                    &format!("{symbol} {style:?}"),
                 );
             }
         }
