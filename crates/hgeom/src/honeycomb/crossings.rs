@@ -1,8 +1,5 @@
-//! The walls a walk crosses, kept until the domain matrix is needed: a
-//! depth-limited honeycomb asks at every step which cells are drawn, but
-//! otherwise only a primary hit needs the matrix (for its normal and
-//! class), so the walls are folded into it in batches or at the hit, and a
-//! miss or a shadow ray never builds it.
+//! The walls a walk crosses, kept until the domain matrix is needed (when
+//! it is needed: `walk_in` in `walk.rs`).
 
 use glam::{DMat4, DVec4};
 

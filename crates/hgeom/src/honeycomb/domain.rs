@@ -45,7 +45,7 @@ use crate::klein_box::plain_min;
 use crate::lorentz;
 
 use super::cells::{orbit, orbit_maps};
-use super::kernels::{exp_roots_plain, tube_roots};
+use super::kernels::{ball_first_v, ball_normal, tube_normal, tube_roots, walls_through};
 use super::simplex::{CoxeterSimplex, reflection_matrix};
 use super::style::{HoneycombPart, HoneycombStyle};
 use super::uniform::{Rings, SeedParts};
@@ -121,14 +121,9 @@ struct DomainVertex {
 
 impl DomainVertex {
     fn new(walls: &[DVec4], at: DVec4, cells: Vec<DVec4>) -> DomainVertex {
-        let on = walls
-            .iter()
-            .enumerate()
-            .filter(|(_, n)| lorentz::dot(at, **n).abs() < 1e-9)
-            .fold(0, |bits, (i, _)| bits | (1 << i));
         DomainVertex {
             at,
-            walls: on,
+            walls: walls_through(at, walls),
             cells,
         }
     }
@@ -479,11 +474,7 @@ impl WalkDomain {
                 if near & vertex.walls != vertex.walls {
                     continue;
                 }
-                // -<X(τ),v> = α cosh τ + β sinh τ = cosh ρ, in u = e^τ.
-                let alpha = -lorentz::dot(ray.o, vertex.at);
-                let beta = -lorentz::dot(ray.d, vertex.at);
-                if let Some((near, far)) = exp_roots_plain(alpha + beta, k, alpha - beta)
-                    && let v = first_root((near * near, far * far))
+                if let Some(v) = ball_first_v(ray.o, ray.d, vertex.at, k, floor)
                     && in_window(v, &found)
                     && present(&vertex.cells)
                 {
@@ -554,13 +545,9 @@ impl WalkDomain {
             DomainPart::Face(i) => self.walls[i],
             DomainPart::Edge(i) => {
                 let (n1, n2) = self.edges[i].normals(&self.walls);
-                let g = lorentz::dot(x, n1) * n1 + lorentz::dot(x, n2) * n2;
-                g + lorentz::dot(g, x) * x
+                tube_normal(n1, n2, x)
             }
-            DomainPart::Vertex(i) => {
-                let v = self.vertices[i].at;
-                -(v + lorentz::dot(v, x) * x)
-            }
+            DomainPart::Vertex(i) => ball_normal(self.vertices[i].at, x),
             DomainPart::HalfEdge(_) | DomainPart::Cap | DomainPart::Piece(_) => match &self.seed {
                 Some(seed) => seed.local_normal(part, x),
                 None => x,

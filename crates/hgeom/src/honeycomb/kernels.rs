@@ -70,6 +70,44 @@ pub(super) fn tube_roots(o: [f64; 2], v: [f64; 2], sinh2: f64) -> Option<(f64, f
     exp_roots_plain(a, k, c)
 }
 
+/// The first crossing beyond `floor`, as `v = e^{2τ}`, of the domain ray
+/// `(o, d)` into the ball `-<X,c> = k` (`k` the ball's `cosh` radius
+/// scaled by the ray's `λ`): `-<X(τ),c> = α cosh τ + β sinh τ` is a
+/// quadratic in `e^τ`. `None` if the ray's line misses the ball.
+#[inline]
+pub(super) fn ball_first_v(o: DVec4, d: DVec4, c: DVec4, k: f64, floor: f64) -> Option<f64> {
+    let alpha = -lorentz::dot(o, c);
+    let beta = -lorentz::dot(d, c);
+    let (near, far) = exp_roots_plain(alpha + beta, k, alpha - beta)?;
+    let (near, far) = (near * near, far * far);
+    Some(if near > floor { near } else { far })
+}
+
+/// The outward normal at `x` of the ball about `c` (tangent, not unit).
+pub(super) fn ball_normal(c: DVec4, x: DVec4) -> DVec4 {
+    -(c + lorentz::dot(c, x) * x)
+}
+
+/// The outward normal at `x` of the tube about the line orthogonal to the
+/// orthonormal pair `n1`, `n2`: the gradient of `<X,n1>² + <X,n2>²` made
+/// tangent at `x` (not unit).
+pub(super) fn tube_normal(n1: DVec4, n2: DVec4, x: DVec4) -> DVec4 {
+    let g = lorentz::dot(x, n1) * n1 + lorentz::dot(x, n2) * n2;
+    g + lorentz::dot(g, x) * x
+}
+
+/// The bits of the walls through the point or ideal point `x` (timelike or
+/// null, future), tested at time 1 so that the tolerance does not depend
+/// on `x`'s scale.
+pub(super) fn walls_through(x: DVec4, walls: &[DVec4]) -> u32 {
+    let x = x / x.w;
+    walls
+        .iter()
+        .enumerate()
+        .filter(|(_, n)| lorentz::dot(x, **n).abs() < 1e-9)
+        .fold(0, |bits, (i, _)| bits | (1 << i))
+}
+
 /// The roots `u_near <= u_far` of `alpha u² - 2 k u + beta = 0` for
 /// `alpha, beta >= 0`, `k > 0`: [`exp_roots`] without the logarithms.
 #[inline]

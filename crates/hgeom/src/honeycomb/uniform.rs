@@ -61,7 +61,7 @@ use crate::error::GeomError;
 use crate::lorentz;
 
 use super::domain::{DomainPart, DomainRay};
-use super::kernels::{exp_roots_plain, tube_roots};
+use super::kernels::{ball_first_v, ball_normal, tube_normal, tube_roots, walls_through};
 use super::simplex::CoxeterSimplex;
 use super::style::HoneycombStyle;
 
@@ -243,7 +243,7 @@ impl SeedParts {
         } else {
             Vec::new()
         };
-        let cap_walls = mirrors_through(s, &n);
+        let cap_walls = walls_through(s, &n);
         let culling_walls = half_edges
             .iter()
             .fold(if cap_cosh.is_some() { cap_walls } else { 0 }, |bits, e| {
@@ -321,22 +321,10 @@ impl SeedParts {
         }
         if let Some(cosh_w) = self.cap_cosh
             && near_walls & self.cap_walls == self.cap_walls
+            && let Some(v) = ball_first_v(ray.o, ray.d, self.seed, cosh_w * lambda2.sqrt(), floor)
+            && better(v, found)
         {
-            // -<X(τ),s> = α cosh τ + β sinh τ = cosh w (scaled by λ), in e^τ.
-            let alpha = -lorentz::dot(ray.o, self.seed);
-            let beta = -lorentz::dot(ray.d, self.seed);
-            if let Some((near, far)) =
-                exp_roots_plain(alpha + beta, cosh_w * lambda2.sqrt(), alpha - beta)
-            {
-                let v = if near * near > floor {
-                    near * near
-                } else {
-                    far * far
-                };
-                if better(v, found) {
-                    *found = Some((v, DomainPart::Cap));
-                }
-            }
+            *found = Some((v, DomainPart::Cap));
         }
         for (i, piece) in self.pieces.iter().enumerate() {
             let (tanh, v) = match piece.wall {
@@ -377,11 +365,11 @@ impl SeedParts {
         match part {
             DomainPart::HalfEdge(i) => {
                 let e = &self.half_edges[i];
-                let g = lorentz::dot(x, e.n1) * e.n1 + lorentz::dot(x, e.n2) * e.n2;
-                g + lorentz::dot(g, x) * x
+                tube_normal(e.n1, e.n2, x)
             }
             DomainPart::Piece(i) => self.pieces[i].p,
-            _ => -(self.seed + lorentz::dot(self.seed, x) * x),
+            // The cap, the one other part this holds.
+            _ => ball_normal(self.seed, x),
         }
     }
 }
@@ -390,15 +378,6 @@ impl SeedParts {
 fn unit(x: DVec4) -> Option<DVec4> {
     let n = lorentz::dot(x, x);
     (n > 1e-24).then(|| x / n.sqrt())
-}
-
-/// The bits of the mirrors through the point or ideal point `x`.
-fn mirrors_through(x: DVec4, n: &[DVec4; 4]) -> u32 {
-    // At time 1, so that the test does not depend on the scale.
-    let x = x / x.w;
-    (0..4)
-        .filter(|&j| lorentz::dot(x, n[j]).abs() < 1e-9)
-        .fold(0, |bits, j| bits | (1 << j))
 }
 
 /// The half-edge from the seed `s` to its foot on mirror `i`.
@@ -433,7 +412,7 @@ fn half_edge(s: DVec4, ideal: bool, n: &[DVec4; 4], i: usize) -> Option<HalfEdge
         n1,
         n2,
         u,
-        walls: mirrors_through(s, n) & mirrors_through(f, n),
+        walls: walls_through(s, n) & walls_through(f, n),
     })
 }
 
