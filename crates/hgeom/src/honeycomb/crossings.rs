@@ -36,6 +36,7 @@ impl Pending {
     }
 
     /// The walk crossed `wall`: `m` becomes (or will become) `m R_wall`.
+    #[inline(always)]
     pub(super) fn cross(&mut self, wall: usize, m: &mut DMat4, walls: &[DVec4]) {
         match self.crossings {
             Crossings::Eager => *m = times_reflection(m, walls[wall]),

@@ -513,13 +513,14 @@ impl WalkDomain {
     fn walls_within(&self, ray: &DomainRay, limit2: f64) -> u32 {
         let (a, b) = (ray.a, ray.b);
         let n = a.len().min(b.len());
+        let (a, b) = (&a[..n], &b[..n]);
         let mut bits = 0;
-        for i in (0..n).rev() {
+        for (i, (a, b)) in a.iter().zip(b).enumerate() {
             // m <= 0 or m² <= limit², in one comparison (`plain_min`:
             // `f64::min`'s NaN rule costs a third of the loop, and a NaN
             // product fails the comparison either way).
-            let m = plain_min(a[i] + b[i] * ray.s_exit, a[i]);
-            bits = (bits << 1) | u32::from(m * m.abs() <= limit2);
+            let m = plain_min(a + b * ray.s_exit, *a);
+            bits |= u32::from(m * m.abs() <= limit2) << i;
         }
         bits
     }
