@@ -28,10 +28,13 @@
 //! of cells crossed per ray is the cost the walk pays instead of the number
 //! of cells in the scene. Rays per second are the rays traced over
 //! hscene's CPU time: the image's primary rays, plus with the light off
-//! the eye one shadow ray per primary hit. The drift is the walk's accuracy: the hyperbolic distance between
-//! the f64 walk's local ray origin (`RegularHoneycomb::walk_steps`) and a
-//! 320-bit walk's through the same faces after `N` cells, the worst over
-//! rays from the base cell's centre in 64 directions.
+//! the eye one shadow ray per primary hit. The drift is the walk's
+//! accuracy: the hyperbolic distance between the f64 walk's local ray
+//! origin (`RegularHoneycomb::walk_steps`) and a 320-bit walk's through the
+//! same faces after `N` cells, and the difference of their arc lengths
+//! along the original ray (the arc length is what places a hit: the hit
+//! point is the original ray's point there), the worst over rays from the
+//! base cell's centre in 64 directions.
 
 use std::fmt::Write as _;
 use std::process::ExitCode;
@@ -157,7 +160,7 @@ fn walks(h: &RegularHoneycomb, probe: &Probe) -> Walks {
 /// one cell per step) with the same f64 normals, so the difference is the
 /// walk's own rounding: the exit point (`tanh τ = -<O,n>/<D,n>`), the
 /// re-basing and the reflection, step after step.
-fn drift_of(h: &RegularHoneycomb, dir: DVec3, steps: &[u32]) -> Vec<f64> {
+fn drift_of(h: &RegularHoneycomb, dir: DVec3, steps: &[u32]) -> Vec<(f64, f64)> {
     let last = steps.iter().copied().max().unwrap_or(0) as usize;
     let ray = Ray::from_origin_unchecked(dir.normalize());
     let walk = h.walk_steps(&ray, last);
@@ -170,9 +173,11 @@ fn drift_of(h: &RegularHoneycomb, dir: DVec3, steps: &[u32]) -> Vec<f64> {
     o = o.scale(&(one.clone() / (-ldot(&o, &o)).sqrt()));
     d = d.scale(&(one.clone() / ldot(&d, &d).sqrt()));
     let mut out = Vec::new();
+    let mut arc = R::f(0.0);
     for (k, step) in walk.iter().enumerate() {
         let m = &n[step.wall];
         let s = -(ldot(&o, m) / ldot(&d, m));
+        arc = arc + ((one.clone() + &s) / (one.clone() - &s)).ln() * R::f(0.5);
         let c = one.clone() / (one.clone() - &s * &s).sqrt();
         let sh = &s * &c;
         let at = o.scale(&c).add(&d.scale(&sh));
@@ -182,7 +187,8 @@ fn drift_of(h: &RegularHoneycomb, dir: DVec3, steps: &[u32]) -> Vec<f64> {
         o = reflect(&at);
         d = reflect(&along);
         if steps.contains(&((k + 1) as u32)) {
-            out.push(distance_h(&o, &V4::from_f64(step.origin)).to_f64());
+            let place = distance_h(&o, &V4::from_f64(step.origin)).to_f64();
+            out.push((place, (arc.clone() - R::f(step.t)).abs().to_f64()));
         }
     }
     out
@@ -191,7 +197,7 @@ fn drift_of(h: &RegularHoneycomb, dir: DVec3, steps: &[u32]) -> Vec<f64> {
 /// The worst drift after each of [`DRIFT_STEPS`] reflections, over rays
 /// from the base cell's centre in directions spread over the sphere (rays
 /// that leave by the horizon before a step count are left out of it).
-fn drift() -> Vec<(u32, f64, usize)> {
+fn drift() -> Vec<Drift> {
     let Ok(symbol) = hgeom::Schlafli::new(4, 3, 5) else {
         return Vec::new();
     };
@@ -206,22 +212,38 @@ fn drift() -> Vec<(u32, f64, usize)> {
         return Vec::new();
     };
     let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
-    let mut worst = vec![(0.0f64, 0usize); DRIFT_STEPS.len()];
+    let mut worst = vec![(0.0f64, 0.0f64, 0usize); DRIFT_STEPS.len()];
     for i in 0..DRIFT_RAYS {
         let z = 1.0 - 2.0 * (f64::from(i) + 0.5) / f64::from(DRIFT_RAYS);
         let rho = (1.0 - z * z).sqrt();
         let a = golden * f64::from(i);
         let dir = DVec3::new(rho * a.cos(), rho * a.sin(), z);
-        for (k, d) in drift_of(&h, dir, &DRIFT_STEPS).into_iter().enumerate() {
-            worst[k].0 = worst[k].0.max(d);
-            worst[k].1 += 1;
+        for (k, (place, arc)) in drift_of(&h, dir, &DRIFT_STEPS).into_iter().enumerate() {
+            worst[k].0 = worst[k].0.max(place);
+            worst[k].1 = worst[k].1.max(arc);
+            worst[k].2 += 1;
         }
     }
     DRIFT_STEPS
         .iter()
         .zip(worst)
-        .map(|(&n, (d, rays))| (n, d, rays))
+        .map(|(&steps, (place, arc, rays))| Drift {
+            steps,
+            place,
+            arc,
+            rays,
+        })
         .collect()
+}
+
+/// The worst drift after `steps` reflections: of the walk's local ray
+/// origin (hyperbolic distance) and of its arc length along the original
+/// ray (which places a hit), over the `rays` still walking.
+struct Drift {
+    steps: u32,
+    place: f64,
+    arc: f64,
+    rays: usize,
 }
 
 struct Report {
@@ -231,7 +253,7 @@ struct Report {
     hscene_off_eye: Measured,
     povray: Option<Measured>,
     walks: Walks,
-    drift: Vec<(u32, f64, usize)>,
+    drift: Vec<Drift>,
 }
 
 impl Report {
@@ -274,7 +296,7 @@ impl Report {
             "mean_cells_per_ray": self.mean(self.walks.cells),
             "max_cells_per_ray": self.walks.max_cells,
             "hit_share": self.walks.hits as f64 / self.walks.rays.max(1) as f64,
-            "drift": self.drift.iter().map(|(n, d, rays)| serde_json::json!({"steps": n, "max": d, "rays": rays})).collect::<Vec<_>>(),
+            "drift": self.drift.iter().map(|d| serde_json::json!({"steps": d.steps, "max": d.place, "max_arc": d.arc, "rays": d.rays})).collect::<Vec<_>>(),
         })
         .to_string()
     }
@@ -326,10 +348,11 @@ impl Report {
             self.walks.max_cells,
             100.0 * self.walks.hits as f64 / self.walks.rays.max(1) as f64
         );
-        for (n, d, rays) in &self.drift {
+        for d in &self.drift {
             let _ = writeln!(
                 s,
-                "  drift after {n:3} cells (face reflections): {d:.1e} (max over the {rays} of {DRIFT_RAYS} rays still walking)"
+                "  drift after {:3} cells (face reflections): {:.1e}, arc length {:.1e} (max over the {} of {DRIFT_RAYS} rays still walking)",
+                d.steps, d.place, d.arc, d.rays
             );
         }
         s
