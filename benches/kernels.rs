@@ -5,16 +5,17 @@
 //! prints each kernel's error next to its ns per call.
 //!
 //! Every input is a fixed literal (points well inside the ball, valid
-//! radii, the repository's own Appendix A scene), so the `unwrap`s and
-//! `expect`s below cannot fail; a benchmark has no user input to refuse.
+//! radii, the repository's own Appendix A scene). Building the fixtures
+//! returns errors all the same: a fixture that could not be built is
+//! reported and its benchmarks skipped.
 
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_main};
 use hgeom::glam::DVec3;
 use hgeom::{
-    ConvexPolygon, HCylinder, HLine, HPlane, HSphere, Horosphere, IdealPoint, Isometry, Platonic,
-    Point, Polyhedron, Ray, Rod, TriangleMesh,
+    ConvexPolygon, GeomError, HCylinder, HLine, HPlane, HSphere, Horosphere, IdealPoint, Isometry,
+    Platonic, Point, Polyhedron, Ray, Rod, TriangleMesh,
 };
 
 fn rays(n: usize) -> Vec<Ray> {
@@ -36,60 +37,58 @@ fn bench_kernel(c: &mut Criterion, name: &str, rs: &[Ray], hit: impl Fn(&Ray) ->
     c.bench_function(name, |b| b.iter(|| count_hits(rs, &hit)));
 }
 
+/// Reports a fixture that could not be built (its benchmarks are skipped).
+fn skipped(what: &str, err: &dyn std::fmt::Display) {
+    eprintln!("{what}: fixture not built ({err}); skipped");
+}
+
 fn kernels(c: &mut Criterion) {
+    if let Err(e) = kernel_benches(c) {
+        skipped("kernels", &e);
+    }
+}
+
+fn kernel_benches(c: &mut Criterion) -> Result<(), GeomError> {
     let rs = rays(1024);
-    // Cannot fail: literal points inside the ball.
-    let p = |x: f64, y: f64, z: f64| Point::from_coords(DVec3::new(x, y, z)).unwrap();
-    // Cannot fail: a literal centre and a positive radius.
-    let sphere = HSphere::new(p(0.02, -0.01, 0.2), 0.1).unwrap();
+    let p = |x: f64, y: f64, z: f64| Point::from_coords(DVec3::new(x, y, z));
+    let sphere = HSphere::new(p(0.02, -0.01, 0.2)?, 0.1)?;
     bench_kernel(c, "sphere_intersect_x1024", &rs, |r| {
         sphere.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
-    // Cannot fail: a Platonic solid of a positive literal circumradius.
-    let dodeca = Polyhedron::platonic(Platonic::Dodecahedron, 0.5).unwrap();
+    let dodeca = Polyhedron::platonic(Platonic::Dodecahedron, 0.5)?;
     bench_kernel(c, "dodecahedron_intersect_x1024", &rs, |r| {
         dodeca.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
-    let (a, b, q) = (p(-0.2, 0.05, 0.3), p(0.2, -0.05, 0.3), p(0.0, 0.2, 0.3));
-    // Cannot fail: three distinct, non-collinear literal points.
-    let plane = HPlane::through(&a.into(), &b.into(), &q.into()).unwrap();
+    let (a, b, q) = (p(-0.2, 0.05, 0.3)?, p(0.2, -0.05, 0.3)?, p(0.0, 0.2, 0.3)?);
+    let plane = HPlane::through(&a.into(), &b.into(), &q.into())?;
     bench_kernel(c, "plane_intersect_x1024", &rs, |r| {
         plane.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
-    // Cannot fail: three distinct, non-collinear literal points.
-    let polygon = ConvexPolygon::new(vec![a.into(), b.into(), q.into()]).unwrap();
+    let polygon = ConvexPolygon::new(vec![a.into(), b.into(), q.into()])?;
     bench_kernel(c, "triangle_intersect_x1024", &rs, |r| {
         polygon.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
-    // Cannot fail: two distinct literal points and a positive radius.
-    let cylinder = HCylinder::new(HLine::through(&a.into(), &b.into()).unwrap(), 0.05).unwrap();
+    let cylinder = HCylinder::new(HLine::through(&a.into(), &b.into())?, 0.05)?;
     bench_kernel(c, "cylinder_intersect_x1024", &rs, |r| {
         cylinder.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
-    // Cannot fail: two distinct literal points and a positive radius.
-    let rod = Rod::new(a.into(), b.into(), 0.05).unwrap();
+    let rod = Rod::new(a.into(), b.into(), 0.05)?;
     bench_kernel(c, "rod_intersect_x1024", &rs, |r| {
         rod.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
-    let horosphere = Horosphere::new(
-        // Cannot fail: a literal non-zero direction.
-        IdealPoint::from_direction(DVec3::Z).unwrap(),
-        &p(0.0, 0.0, 0.3),
-    )
-    // Cannot fail: a literal ideal point and a literal point inside the ball.
-    .unwrap();
+    let horosphere = Horosphere::new(IdealPoint::from_direction(DVec3::Z)?, &p(0.0, 0.0, 0.3)?)?;
     bench_kernel(c, "horosphere_intersect_x1024", &rs, |r| {
         horosphere.intersect(r, 1e-9, f64::INFINITY).is_some()
     });
+    Ok(())
 }
 
 /// A latitude-longitude sphere of hyperbolic radius `radius` about the
 /// origin: `rings` circles of `segments` vertices between the poles,
 /// `2 segments rings` triangles, wound outward.
-fn sphere_mesh(rings: u32, segments: u32, radius: f64) -> TriangleMesh {
-    // Cannot fail: a moderate literal radius and the unit directions of a sphere grid.
-    let at = |d: DVec3| Point::at_distance_from_origin(d, radius).unwrap();
-    let mut vertices = vec![at(DVec3::Z), at(-DVec3::Z)];
+fn sphere_mesh(rings: u32, segments: u32, radius: f64) -> Result<TriangleMesh, GeomError> {
+    let at = |d: DVec3| Point::at_distance_from_origin(d, radius);
+    let mut vertices = vec![at(DVec3::Z)?, at(-DVec3::Z)?];
     for i in 1..=rings {
         let theta = std::f64::consts::PI * f64::from(i) / f64::from(rings + 1);
         for j in 0..segments {
@@ -99,7 +98,7 @@ fn sphere_mesh(rings: u32, segments: u32, radius: f64) -> TriangleMesh {
                 theta.sin() * phi.sin(),
                 theta.cos(),
             );
-            vertices.push(at(d));
+            vertices.push(at(d)?);
         }
     }
     let ring = |i: u32, j: u32| 2 + (i - 1) * segments + j % segments;
@@ -114,20 +113,23 @@ fn sphere_mesh(rings: u32, segments: u32, radius: f64) -> TriangleMesh {
             triangles.push([a, d, b]);
         }
     }
-    // Cannot fail: the grid's triangles are non-degenerate and index its vertices.
-    TriangleMesh::new(vertices, triangles).expect("a valid sphere mesh")
+    TriangleMesh::new(vertices, triangles)
 }
 
 /// A 2016-triangle sphere-like mesh: the BVH against testing every
 /// triangle, for rays from the origin inside it (every ray hits) and for the
 /// mesh moved 2 away (most rays hit; the others are culled by the boxes).
 fn mesh(c: &mut Criterion) {
+    if let Err(e) = mesh_benches(c) {
+        skipped("mesh", &e);
+    }
+}
+
+fn mesh_benches(c: &mut Criterion) -> Result<(), GeomError> {
     let rs = rays(1024);
-    let sphere = sphere_mesh(24, 42, 1.0);
+    let sphere = sphere_mesh(24, 42, 1.0)?;
     assert_eq!(sphere.triangle_count(), 2016);
-    let away =
-        // Cannot fail: distance 2 along +z is a ball point.
-        Isometry::transvection_from_origin(Point::at_distance_from_origin(DVec3::Z, 2.0).unwrap());
+    let away = Isometry::transvection_from_origin(Point::at_distance_from_origin(DVec3::Z, 2.0)?);
     let far = sphere.transformed(&away);
     let mut group = c.benchmark_group("mesh");
     group.bench_function("bvh_x1024", |b| {
@@ -156,20 +158,21 @@ fn mesh(c: &mut Criterion) {
         })
     });
     group.bench_function("build_2016", |b| {
-        b.iter(|| sphere_mesh(24, 42, black_box(1.0)).triangle_count())
+        b.iter(|| sphere_mesh(24, 42, black_box(1.0)).map(|m| m.triangle_count()))
     });
     group.bench_function("transformed", |b| {
         b.iter(|| sphere.transformed(black_box(&away)).triangle_count())
     });
     group.finish();
+    Ok(())
 }
 
 fn appendix_render(c: &mut Criterion) {
     let source = include_str!("../scenes/thesis-appendix-a.hsc");
-    let scene = hscene_lang::compile(source)
-        .scene
-        // Cannot fail: the appendix scene is part of the repository and compiles (tested).
-        .expect("appendix compiles");
+    let Some(scene) = hscene_lang::compile(source).scene else {
+        skipped("render", &"the appendix scene does not compile");
+        return;
+    };
     let options = hrender::RenderOptions {
         resolution: hscene_lang::ir::Resolution::new(64, 64),
         ..Default::default()
