@@ -3,9 +3,10 @@
 //! stream, runs hgeom in f64, and measures the error against the 320-bit
 //! [`reference`](crate::reference).
 //!
-//! The `expect`s below cannot fail: each builds a point from a direction
+//! The points the families build cannot fail: each comes from a direction
 //! and a distance the family itself chose well inside the ball (or a corner
-//! at 0.3 of the radius); there is no user input here.
+//! at 0.3 of the radius); there is no user input here, and
+//! [`fixture`](crate::fixture) says so where it is built.
 
 use hgeom::glam::{self, DVec3};
 use hgeom::{
@@ -38,7 +39,10 @@ fn cube_direction(rng: &mut SplitMix64) -> DVec3 {
 fn point_in(rng: &mut SplitMix64, lo: f64, hi: f64) -> Point {
     let d = rng.range(lo, hi);
     // Cannot fail: the cases draw distances of at most ~20, well inside f64's range for a ball point.
-    Point::at_distance_from_origin(cube_direction(rng), d).expect("finite distance")
+    crate::fixture(
+        Point::at_distance_from_origin(cube_direction(rng), d),
+        "finite distance",
+    )
 }
 
 /// A random isometry with translation part at distance up to `max_d`.
@@ -235,7 +239,7 @@ pub fn walk_step(rng: &mut SplitMix64, current: &Point, cap: f64) -> Isometry {
         let home = -current.coords().normalize();
         let len = rng.range(1.0, 2.0);
         // Cannot fail: a step of 1 to 2 from the origin is a ball point.
-        let p = Point::at_distance_from_origin(home, len).expect("short step");
+        let p = crate::fixture(Point::at_distance_from_origin(home, len), "short step");
         Isometry::transvection_from_origin(p)
     } else {
         random_isometry(rng, 2.0)
@@ -382,7 +386,8 @@ pub fn polygon_hits(rng: &mut SplitMix64, n: usize) -> Family {
                 .iter()
                 .map(|&(x, y)| {
                     // Cannot fail: corners of the unit square times 0.3 lie inside the ball.
-                    let corner = Point::from_coords(DVec3::new(x, y, 0.0) * 0.3).expect("inside");
+                    let corner =
+                        crate::fixture(Point::from_coords(DVec3::new(x, y, 0.0) * 0.3), "inside");
                     off.apply(&corner).into()
                 })
                 .collect();

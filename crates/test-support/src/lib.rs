@@ -24,3 +24,20 @@ pub mod scenes;
 
 pub use icosphere::icosphere;
 pub use rng::SplitMix64;
+
+/// The value a fixture builder built from its caller's constants.
+///
+/// This crate builds only what tests, examples and benchmarks ask for
+/// from their own literals and seeded streams; none of it sees user input.
+/// A fixture that cannot be built is therefore a bug in its caller, and
+/// the test must stop there rather than measure something else.
+///
+/// # Panics
+///
+/// If `built` is an error, with the fixture's name and the error.
+pub fn fixture<T, E: std::fmt::Debug>(built: Result<T, E>, what: &str) -> T {
+    match built {
+        Ok(value) => value,
+        Err(e) => panic!("test fixture {what} could not be built: {e:?}"),
+    }
+}

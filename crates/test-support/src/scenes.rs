@@ -2,7 +2,8 @@
 //!
 //! Scenes are built directly from the IR types, so the tests do not depend on
 //! the concrete syntax of the scene language. Every builder panics on
-//! invalid geometry: its inputs are the tests' own constants.
+//! invalid geometry, through [`fixture`](crate::fixture): its inputs are
+//! the tests' own constants.
 
 use hgeom::glam::{DMat3, DVec3};
 use hgeom::{
@@ -18,8 +19,8 @@ use crate::SplitMix64;
 
 /// Renders with `options`, checking that no pixel failed or is non-finite.
 pub fn draw_with(scene: &Scene, options: &hrender::RenderOptions) -> hrender::Image {
-    // Panics on purpose: these are test fixtures, and a fixture that does not render must stop the test with the renderer's error.
-    let out = hrender::render(scene, options, &|_| {}).expect("render");
+    // A fixture that does not render stops the test with the renderer's error.
+    let out = crate::fixture(hrender::render(scene, options, &|_| {}), "render");
     assert_eq!(out.stats.numeric_failures, 0);
     assert!(out.image.pixels().iter().flatten().all(|c| c.is_finite()));
     out.image
@@ -44,19 +45,22 @@ pub fn agreement(a: &hrender::Image, b: &hrender::Image, tol: f32) -> f64 {
 /// An h-point from ball coordinates.
 pub fn p(x: f64, y: f64, z: f64) -> Point {
     // Cannot fail: callers pass literal coordinates inside the ball; a wrong literal is a bug in the test.
-    Point::from_coords(DVec3::new(x, y, z)).expect("test point inside the ball")
+    crate::fixture(
+        Point::from_coords(DVec3::new(x, y, z)),
+        "test point inside the ball",
+    )
 }
 
 /// An h-point at hyperbolic distance `d` from the origin in direction `dir`.
 pub fn at(dir: DVec3, d: f64) -> Point {
     // Cannot fail: callers pass literal, moderate distances and non-zero directions.
-    Point::at_distance_from_origin(dir, d).expect("test point")
+    crate::fixture(Point::at_distance_from_origin(dir, d), "test point")
 }
 
 /// An ideal point in direction `dir`.
 pub fn ideal(dir: DVec3) -> IdealPoint {
     // Cannot fail: callers pass literal non-zero directions.
-    IdealPoint::from_direction(dir).expect("test ideal point")
+    crate::fixture(IdealPoint::from_direction(dir), "test ideal point")
 }
 
 /// A Phong material with the same colour for ambient and diffuse.
@@ -87,7 +91,10 @@ pub fn settings(net: Net, size: u32, window: f64) -> Settings {
     Settings {
         recursion_depth: 1,
         // Cannot fail: test images are at least 1x1.
-        resolution: Resolution::new(size, size).expect("test resolution"),
+        resolution: crate::fixture(
+            Resolution::new(size, size).ok_or("zero size"),
+            "test resolution",
+        ),
         window: Window {
             width: window,
             height: window,
@@ -185,7 +192,10 @@ pub fn scene(
         .map(|o| Object {
             shape: o.shape,
             // Cannot fail: the fixture lists index their own material list.
-            material: MaterialId::of(&materials, o.material).expect("test material index"),
+            material: crate::fixture(
+                MaterialId::of(&materials, o.material).ok_or("no such material"),
+                "test material index",
+            ),
             name: None,
             placement: o.placement,
         })
@@ -205,28 +215,28 @@ pub fn scene(
 /// An h-sphere of centre `c` and hyperbolic radius `r`.
 pub fn sphere(c: Point, r: f64) -> Shape {
     // Cannot fail: callers pass positive literal radii.
-    Shape::Sphere(HSphere::new(c, r).expect("test sphere"))
+    Shape::Sphere(crate::fixture(HSphere::new(c, r), "test sphere"))
 }
 
 /// A rod of hyperbolic radius `r` from `a` to `b`.
 pub fn rod(a: Point, b: Point, r: f64) -> Shape {
     // Cannot fail: callers pass distinct literal end points and a positive radius.
-    Shape::Rod(Rod::new(a.into(), b.into(), r).expect("test rod"))
+    Shape::Rod(crate::fixture(Rod::new(a.into(), b.into(), r), "test rod"))
 }
 
 /// The h-cylinder of hyperbolic radius `r` about the h-line through `a` and
 /// `b`.
 pub fn cylinder(a: Point, b: Point, r: f64) -> Shape {
     // Cannot fail: callers pass two distinct literal points.
-    let line = HLine::through(&a.into(), &b.into()).expect("test line");
+    let line = crate::fixture(HLine::through(&a.into(), &b.into()), "test line");
     // Cannot fail: callers pass a positive literal radius.
-    Shape::Cylinder(HCylinder::new(line, r).expect("test cylinder"))
+    Shape::Cylinder(crate::fixture(HCylinder::new(line, r), "test cylinder"))
 }
 
 /// The convex polygon with vertices `vs`, in order.
 pub fn polygon(vs: Vec<Vertex>) -> Shape {
     // Cannot fail: callers pass literal convex polygons.
-    Shape::Polygon(ConvexPolygon::new(vs).expect("test polygon"))
+    Shape::Polygon(crate::fixture(ConvexPolygon::new(vs), "test polygon"))
 }
 
 /// The mixed scene of the invariance tests: spheres, a polygon, a rod and a
@@ -272,7 +282,7 @@ pub fn mixed_scene(net: Net, size: u32, window: f64) -> Scene {
 pub fn moved(scene: &Scene, iso: &Isometry) -> Scene {
     let mut s = scene.clone();
     // Cannot fail: every fixture scene sets an explicit up point.
-    let up = s.camera.up.expect("tests use an explicit up point");
+    let up = crate::fixture(s.camera.up.ok_or("no up point"), "the camera's up point");
     s.camera.eye = iso.apply(&s.camera.eye);
     s.camera.target = iso.apply(&s.camera.target);
     s.camera.up = Some(iso.apply(&up));
@@ -320,7 +330,7 @@ pub fn many_rods_scene(n: usize, size: u32) -> Scene {
         let a = to_origin.apply(&at(rng.direction(), rng.range(0.05, 0.25)));
         let b = to_origin.apply(&at(rng.direction(), rng.range(0.05, 0.25)));
         // Cannot fail: the two ends are drawn 0.05 to 0.25 from a point, in random directions: distinct to rounding far above f64's.
-        let r = Rod::new(a.into(), b.into(), 0.008).expect("random rod");
+        let r = crate::fixture(Rod::new(a.into(), b.into(), 0.008), "random rod");
         if i < n {
             objects.push(obj(Shape::Rod(r), 0));
         } else {
@@ -331,7 +341,10 @@ pub fn many_rods_scene(n: usize, size: u32) -> Scene {
     // A wall behind everything, to catch the shadows: the h-plane
     // orthogonal to the z axis at distance 2.3.
     // Cannot fail: two distinct points on the z axis.
-    let wall = HPlane::orthogonal_at(&at(DVec3::Z, 2.3), &at(DVec3::Z, 2.4)).expect("wall");
+    let wall = crate::fixture(
+        HPlane::orthogonal_at(&at(DVec3::Z, 2.3), &at(DVec3::Z, 2.4)),
+        "wall",
+    );
     objects.push(obj(Shape::Plane(wall), 2));
     let lights = vec![
         light(at(DVec3::new(0.3, 1.0, 0.2), 0.8), 40.0),
@@ -349,25 +362,31 @@ pub fn many_rods_scene(n: usize, size: u32) -> Scene {
 /// A dodecahedron, a wireframe cube and a horosphere: the kinds the other
 /// builders do not cover.
 pub fn solids_scene(net: Net, size: u32, window: f64) -> Scene {
-    let dodeca = Polyhedron::platonic(Platonic::Dodecahedron, 0.3)
-        // Cannot fail: a Platonic solid of a positive literal circumradius.
-        .expect("dodecahedron")
-        .transformed(&Isometry::transvection_from_origin(p(-0.15, 0.0, 0.3)));
-    let cube = Polyhedron::platonic(Platonic::Cube, 0.25)
-        // Cannot fail: a Platonic solid of a positive literal circumradius.
-        .expect("cube")
+    // Cannot fail: a Platonic solid of a positive literal circumradius.
+    let dodeca = crate::fixture(
+        Polyhedron::platonic(Platonic::Dodecahedron, 0.3),
+        "dodecahedron",
+    )
+    .transformed(&Isometry::transvection_from_origin(p(-0.15, 0.0, 0.3)));
+    // Cannot fail: a Platonic solid of a positive literal circumradius.
+    let cube = crate::fixture(Polyhedron::platonic(Platonic::Cube, 0.25), "cube")
         .transformed(&Isometry::transvection_from_origin(p(0.15, 0.05, 0.3)));
     let mut edges = Vec::new();
     for f in cube.faces() {
         let vs = f.vertices();
         for i in 0..vs.len() {
             // Cannot fail: consecutive vertices of a valid face are distinct.
-            edges.push(Rod::new(vs[i], vs[(i + 1) % vs.len()], 0.01).expect("edge"));
+            edges.push(crate::fixture(
+                Rod::new(vs[i], vs[(i + 1) % vs.len()], 0.01),
+                "edge",
+            ));
         }
     }
-    let horo = Horosphere::new(ideal(DVec3::new(0.0, -1.0, 0.3)), &p(0.0, -0.25, 0.35))
-        // Cannot fail: a literal ideal point and a literal point inside the ball.
-        .expect("horosphere");
+    // Cannot fail: a literal ideal point and a literal point inside the ball.
+    let horo = crate::fixture(
+        Horosphere::new(ideal(DVec3::new(0.0, -1.0, 0.3)), &p(0.0, -0.25, 0.35)),
+        "horosphere",
+    );
     let objects = vec![
         obj(Shape::Polyhedron(dodeca), 0),
         obj(Shape::Wireframe(edges.into()), 1),
@@ -391,7 +410,7 @@ pub fn solids_scene(net: Net, size: u32, window: f64) -> Scene {
 pub fn many_cells_scene(n: usize, size: u32) -> Scene {
     let mut objects = Vec::new();
     // Cannot fail: a Platonic solid of a positive literal circumradius.
-    let cube = Polyhedron::platonic(Platonic::Cube, 0.08).expect("cube");
+    let cube = crate::fixture(Polyhedron::platonic(Platonic::Cube, 0.08), "cube");
     let step = 0.16;
     for i in 0..n {
         for j in 0..n {
@@ -443,7 +462,7 @@ impl ThenSign for Point {
     fn then_sign(self, s: f64) -> Point {
         if s < 0.0 {
             // Cannot fail: the mirror image of a ball point is a ball point.
-            Point::from_coords(-self.coords()).expect("mirror image")
+            crate::fixture(Point::from_coords(-self.coords()), "mirror image")
         } else {
             self
         }
