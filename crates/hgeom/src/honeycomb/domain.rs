@@ -511,11 +511,8 @@ impl WalkDomain {
     /// `a + b tanh τ <= σ` somewhere on `0 <= tanh τ <= s_exit`, where that
     /// linear function is least at an end.
     fn walls_within(&self, ray: &DomainRay, limit2: f64) -> u32 {
-        let (a, b) = (ray.a, ray.b);
-        let n = a.len().min(b.len());
-        let (a, b) = (&a[..n], &b[..n]);
         let mut bits = 0;
-        for (i, (a, b)) in a.iter().zip(b).enumerate() {
+        for (i, (a, b)) in ray.a.iter().zip(ray.b).enumerate() {
             // m <= 0 or m² <= limit², in one comparison (`plain_min`:
             // `f64::min`'s NaN rule costs a third of the loop, and a NaN
             // product fails the comparison either way).
