@@ -427,7 +427,9 @@ fn render_frame(
             EncodingArg::Linear => Encoding::Linear,
         },
     };
-    if let Err(e) = hrender::write_image_with(&rendered.image, output, depth, display) {
+    // The CLI parser bounds the level to 0..=9.
+    let png = hrender::PngLevel::new(args.png_level).unwrap_or_default();
+    if let Err(e) = hrender::write_image_with(&rendered.image, output, depth, display, png) {
         eprintln!("error: {e}");
         return ExitCode::from(EXIT_USAGE_OR_IO);
     }

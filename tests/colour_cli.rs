@@ -201,3 +201,35 @@ fn an_almost_black_image_is_reported() {
     let stderr = String::from_utf8_lossy(&assert.get_output().stderr).into_owned();
     assert!(!stderr.contains("almost black"), "{stderr}");
 }
+
+/// `--png-level` changes only the compressed bytes: levels 0 (stored), 3
+/// (the default) and 9 hold the same samples, in files no larger as the
+/// level rises; a level past 9 is a usage error, before any rendering.
+#[test]
+fn png_level_changes_the_bytes_not_the_samples() {
+    let dir = tempfile::tempdir().unwrap();
+    let stored = render(dir.path(), "l0.png", &["--png-level", "0"]);
+    let default = render(dir.path(), "l3.png", &[]);
+    let smallest = render(dir.path(), "l9.png", &["--png-level", "9"]);
+    let three = render(dir.path(), "l3b.png", &["--png-level", "3"]);
+    assert_eq!(fs::read(&default).unwrap(), fs::read(&three).unwrap());
+    let samples = |p: &Path| image::open(p).unwrap().into_rgb8().into_raw();
+    assert_eq!(samples(&stored), samples(&default));
+    assert_eq!(samples(&smallest), samples(&default));
+    let size = |p: &Path| fs::metadata(p).unwrap().len();
+    assert!(size(&stored) > size(&default), "level 0 stores the rows");
+    assert!(size(&smallest) <= size(&default));
+    hscene()
+        .args([
+            "render",
+            "scenes/thesis-appendix-a.hsc",
+            "--png-level",
+            "10",
+        ])
+        .arg("-o")
+        .arg(dir.path().join("bad.png"))
+        .assert()
+        .code(2)
+        .stderr(predicates::str::contains("--png-level"));
+    assert!(!dir.path().join("bad.png").exists());
+}

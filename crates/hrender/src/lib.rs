@@ -46,7 +46,7 @@ pub use error::RenderError;
 pub use exposure::{AUTO_KEY, DARK_LEVEL, MAX_EXPOSURE, auto_exposure, is_almost_black, luminance};
 pub use image::Image;
 pub use nets::{PixelNet, Sample};
-pub use output::{ImageFormat, SampleDepth, check_depth, write_image, write_image_with};
+pub use output::{ImageFormat, PngLevel, SampleDepth, check_depth, write_image, write_image_with};
 pub use output_check::{Overwrite, check_output};
 pub use ray_budget::{MAX_SECONDARY_RAYS, RayBudget};
 pub use sampling::{SampleStream, Sampler};

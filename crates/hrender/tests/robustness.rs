@@ -6,8 +6,8 @@ use hgeom::{
     ConvexPolygon, HPlane, Horosphere, Isometry, Platonic, Point, Polyhedron, Rod, Vertex,
 };
 use hrender::{
-    DisplayTransform, Encoding, Image, RenderOptions, Rendered, SampleDepth, ToneMap, render,
-    write_image, write_image_with,
+    DisplayTransform, Encoding, Image, PngLevel, RenderOptions, Rendered, SampleDepth, ToneMap,
+    render, write_image, write_image_with,
 };
 use hscene_lang::ir::{Net, Rgb, Scene, Shape};
 use hscene_test_support::SplitMix64;
@@ -486,12 +486,19 @@ fn output_depths_round_trip() {
         encoding: Encoding::Linear,
     };
     let png16 = dir.path().join("a.png");
-    write_image_with(&img, &png16, SampleDepth::Sixteen, linear).unwrap();
+    write_image_with(
+        &img,
+        &png16,
+        SampleDepth::Sixteen,
+        linear,
+        PngLevel::DEFAULT,
+    )
+    .unwrap();
     let decoded = image::open(&png16).unwrap().into_rgb16();
     assert_eq!(decoded.get_pixel(0, 0).0, [16384, 32768, 65535]);
     assert_eq!(decoded.get_pixel(1, 0).0, [0, 65535, 8192]);
     let png8 = dir.path().join("b.png");
-    write_image_with(&img, &png8, SampleDepth::Eight, linear).unwrap();
+    write_image_with(&img, &png8, SampleDepth::Eight, linear, PngLevel::DEFAULT).unwrap();
     let decoded = image::open(&png8).unwrap().into_rgb8();
     assert_eq!(decoded.get_pixel(0, 0).0, [64, 128, 255]);
     let tif = dir.path().join("c.tif");
