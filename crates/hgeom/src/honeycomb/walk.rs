@@ -570,8 +570,12 @@ impl RegularHoneycomb {
                 domain.first_part::<SEEDED>(&here, floor, v_exit.min(span), |c| self.present(c, &m))
             {
                 let t = arc(u_acc * v);
-                pending.fold_into(&mut m, walls);
-                return Some(self.hit(ray, t, &here, v, &m, part, any));
+                // The normal needs one vector moved by the crossings; the
+                // class of the cells (several classes) needs the matrix.
+                if !any && self.style.cell_classes > 1 {
+                    pending.fold_into(&mut m, walls);
+                }
+                return Some(self.hit(ray, t, &here, v, (&m, &pending), part, any));
             }
             let exit = exit.filter(|_| v_exit < span)?;
             // The exit point and tangent, both scaled by cosh τ: the walk
@@ -645,7 +649,9 @@ impl RegularHoneycomb {
     }
 
     /// The hit on `part` at `v = e^{2τ}` from the start of the domain ray
-    /// `c` (`t` along the original ray); a shadow ray's class is 0.
+    /// `c` (`t` along the original ray); a shadow ray's class is 0. The
+    /// domain matrix is `m` with the `pending` reflections folded in (none
+    /// are pending when the class needs it).
     #[allow(clippy::too_many_arguments)]
     fn hit(
         &self,
@@ -653,7 +659,7 @@ impl RegularHoneycomb {
         t: f64,
         c: &DomainRay,
         v: f64,
-        m: &DMat4,
+        (m, pending): (&DMat4, &Pending),
         part: DomainPart,
         shadow: bool,
     ) -> Hit {
@@ -664,7 +670,8 @@ impl RegularHoneycomb {
         let x = (0.5 * (e + 1.0 / e)) * o + (0.5 * (e - 1.0 / e)) * d;
         let local_normal = self.domain.local_normal(part, x);
         let point = ray.at(t);
-        let mut normal = self.to_world * (*m * local_normal);
+        let walls = self.domain.walls();
+        let mut normal = self.to_world * (*m * pending.unfold(local_normal, walls));
         normal += lorentz::dot(normal, point) * point;
         let len = lorentz::norm(normal);
         if len > 0.0 && len.is_finite() {
