@@ -224,51 +224,49 @@ impl RenderJob<'_> {
         }
     }
 
-    /// Columns `columns` of row `j`: every pixel's samples, box-filtered
-    /// and exposed.
+    /// Columns `columns` of row `j` into `out` (one pixel per column):
+    /// every pixel's samples, box-filtered and exposed. Returns the number
+    /// of pixels with a numeric failure.
     fn row(
         &self,
         j: u32,
         columns: std::ops::Range<u32>,
+        out: &mut [[f32; 3]],
         stats: &mut TraceStats,
-    ) -> (Vec<[f32; 3]>, u64) {
+    ) -> u64 {
         let (w, h) = (f64::from(self.width), f64::from(self.height));
         let mut nodes = NodeCache::default();
         let mut failed_pixels = 0;
-        let pixels = columns
-            .map(|i| {
-                let mut sum = Color::default();
-                let mut failed = false;
-                for k in 0..self.sampler.count() {
-                    let (ox, oy) = self.sampler.offset(i, j, k);
-                    let sx = (f64::from(i) + ox) / w - 0.5;
-                    let sy = 0.5 - (f64::from(j) + oy) / h;
-                    let (c, f) = match self.net {
-                        Net::EquidistantInterpolated => {
-                            self.interpolated(sx, sy, &mut nodes, stats)
-                        }
-                        _ => {
-                            let mut stream = self.sampler.stream(i, j, k);
-                            self.shade(self.pixel_net.sample(sx, sy), &mut stream, stats)
-                        }
-                    };
-                    sum += c;
-                    failed |= f;
-                }
-                let c = sum * (self.scale / f64::from(self.sampler.count()));
-                let px = c.0.map(|v| v as f32);
-                // Exposure or f32 conversion can overflow a finite radiance.
-                let px = if px.iter().all(|v| v.is_finite()) {
-                    px
-                } else {
-                    failed = true;
-                    [0.0; 3]
+        for (i, pixel) in columns.zip(out) {
+            let mut sum = Color::default();
+            let mut failed = false;
+            for k in 0..self.sampler.count() {
+                let (ox, oy) = self.sampler.offset(i, j, k);
+                let sx = (f64::from(i) + ox) / w - 0.5;
+                let sy = 0.5 - (f64::from(j) + oy) / h;
+                let (c, f) = match self.net {
+                    Net::EquidistantInterpolated => self.interpolated(sx, sy, &mut nodes, stats),
+                    _ => {
+                        let mut stream = self.sampler.stream(i, j, k);
+                        self.shade(self.pixel_net.sample(sx, sy), &mut stream, stats)
+                    }
                 };
-                failed_pixels += u64::from(failed);
+                sum += c;
+                failed |= f;
+            }
+            let c = sum * (self.scale / f64::from(self.sampler.count()));
+            let px = c.0.map(|v| v as f32);
+            // Exposure or f32 conversion can overflow a finite radiance.
+            let px = if px.iter().all(|v| v.is_finite()) {
                 px
-            })
-            .collect();
-        (pixels, failed_pixels)
+            } else {
+                failed = true;
+                [0.0; 3]
+            };
+            failed_pixels += u64::from(failed);
+            *pixel = px;
+        }
+        failed_pixels
     }
 
     /// Net 4: the screen shows the great disk as net 2 does, and each
@@ -440,25 +438,28 @@ fn render_in_pool(
 
     let done = std::sync::atomic::AtomicU32::new(0);
     let columns = region.x..region.x + region.width;
-    let rows: Vec<(Vec<[f32; 3]>, u64, TraceStats)> = (region.y..region.y + region.height)
-        .into_par_iter()
-        .map(|j| {
+    // Each row is traced straight into its place in the image: no row of
+    // its own to allocate, and no copy of the whole image after.
+    let mut pixels = vec![[0.0f32; 3]; region.width as usize * region.height as usize];
+    let (failed, traced) = pixels
+        .par_chunks_mut(region.width as usize)
+        .zip(region.y..region.y + region.height)
+        .map(|(out, j)| {
             let mut stats = TraceStats::default();
-            let (row, failed) = job.row(j, columns.clone(), &mut stats);
+            let failed = job.row(j, columns.clone(), out, &mut stats);
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(n);
-            (row, failed, stats)
+            (failed, stats)
         })
-        .collect();
-
-    let mut stats = RenderStats::default();
-    let mut pixels = Vec::with_capacity(region.width as usize * region.height as usize);
-    for (row, failed, s) in rows {
-        pixels.extend(row);
-        stats.rays += s.rays;
-        stats.cut_trees += s.cut_trees;
-        stats.numeric_failures += failed;
-    }
+        .reduce(
+            || (0, TraceStats::default()),
+            |(fa, sa), (fb, sb)| (fa + fb, sa.merge(sb)),
+        );
+    let stats = RenderStats {
+        rays: traced.rays,
+        cut_trees: traced.cut_trees,
+        numeric_failures: failed,
+    };
     Ok(Rendered {
         image: Image::from_pixels(region.width, region.height, pixels),
         stats,
