@@ -105,14 +105,15 @@ fn honeycomb_in(scene: &Scene, probe: &Probe) -> Option<RegularHoneycomb> {
     }
 }
 
-/// The horizon the renderer walks the honeycomb to at `resolution`: where
-/// its cells shrink below the angle between neighbouring pixels.
+/// The honeycomb walked as the renderer walks it at `resolution`: to where
+/// its cells shrink below the smallest angle between neighbouring pixels,
+/// and each primary ray to where they shrink below its own pixel.
 fn render_horizon(
     h: &RegularHoneycomb,
     scene: &Scene,
     probe: &Probe,
     resolution: u32,
-) -> Result<f64, String> {
+) -> Result<RegularHoneycomb, String> {
     let res = Resolution::new(resolution, resolution).ok_or("an empty picture")?;
     let window = match scene.settings.fov {
         None => scene.settings.window,
@@ -122,9 +123,18 @@ fn render_horizon(
         }
     };
     let net = PixelNet::new(Net::Euclidean, window, probe.camera.view_distance);
-    let angle =
-        hrender::pixel_angle(&net, resolution, resolution).ok_or("no pixel sees the scene")?;
-    Ok(h.horizon_for_pixel(angle))
+    let footprint =
+        hrender::pixel_footprint(&net, resolution, resolution).ok_or("no pixel sees the scene")?;
+    let mut walked = h
+        .clone()
+        .with_horizon(h.horizon_for_pixel(footprint.smallest))
+        .map_err(|e| e.to_string())?;
+    if let Some((axis, angle)) = footprint.plane {
+        walked = walked
+            .with_view_horizon(axis, angle)
+            .map_err(|e| e.to_string())?;
+    }
+    Ok(walked)
 }
 
 /// Walk counts over the probe's primary rays.
@@ -370,8 +380,7 @@ fn run(resolution: u32, threads: Option<usize>, runs: usize) -> Result<Report, S
     })?;
     let probe = Probe::new(&scene, GRID)?;
     let honeycomb = honeycomb_in(&scene, &probe).ok_or("the scene's object is not a honeycomb")?;
-    let horizon = render_horizon(&honeycomb, &scene, &probe, resolution)?;
-    let honeycomb = honeycomb.with_horizon(horizon).map_err(|e| e.to_string())?;
+    let honeycomb = render_horizon(&honeycomb, &scene, &probe, resolution)?;
     let walks = walks(&honeycomb, &probe);
 
     let dir = tempfile::tempdir().map_err(|e| e.to_string())?;

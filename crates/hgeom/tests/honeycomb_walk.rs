@@ -524,3 +524,51 @@ fn honeycombs_can_be_shared_between_threads() {
     let h: Box<dyn Shape + Send + Sync> = Box::new(honeycomb(3, 5, 3, everything(1)));
     assert!(h.bound().is_none() && h.is_representable());
 }
+
+/// With a view horizon a ray from the origin stops where the cells fall
+/// below its own pixel: along the axis at `horizon_for_pixel(a)`, at 50°
+/// from it farther (the pixel there is `cos² 50°` as wide), and never past
+/// the honeycomb's horizon: its walk is the walk to that horizon cut at its
+/// own. A ray from elsewhere keeps the honeycomb's horizon.
+#[test]
+fn a_view_horizon_stops_rays_from_the_eye_by_their_pixel() {
+    let far = honeycomb(4, 3, 5, HoneycombStyle::default())
+        .with_horizon(8.0)
+        .unwrap();
+    let a = 4e-3;
+    let near = far.clone().with_view_horizon(DVec3::Z, a).unwrap();
+    let walls_and_t = |h: &RegularHoneycomb, ray: &Ray| -> Vec<(usize, f64)> {
+        h.walk_steps(ray, 400)
+            .iter()
+            .map(|s| (s.wall, s.t))
+            .collect()
+    };
+    let th = 50f64.to_radians();
+    for (dir, want) in [
+        (DVec3::Z, far.horizon_for_pixel(a)),
+        (
+            DVec3::new(th.sin(), 0.0, th.cos()),
+            far.horizon_for_pixel(a * th.cos() * th.cos()),
+        ),
+    ] {
+        assert!(want < 8.0, "{want}");
+        let ray = Ray::from_origin_unchecked(dir);
+        let cut: Vec<(usize, f64)> = walls_and_t(&far, &ray)
+            .into_iter()
+            .filter(|&(_, t)| t <= want)
+            .collect();
+        let walked = walls_and_t(&near, &ray);
+        assert!(walked.len() >= 4, "{dir}: {walked:?}");
+        assert_eq!(walked, cut, "{dir}");
+        if dir == DVec3::Z {
+            // Along the axis the view horizon is well inside the
+            // honeycomb's: the far walk goes on.
+            assert!(walls_and_t(&far, &ray).len() > walked.len() + 1);
+        }
+    }
+    let start = Point::from_coords(DVec3::new(0.05, 0.0, 0.0)).unwrap();
+    let aside = Ray::from_ball_unchecked(&start, DVec3::Z);
+    assert_eq!(walls_and_t(&near, &aside), walls_and_t(&far, &aside));
+    assert!(far.clone().with_view_horizon(DVec3::ZERO, a).is_err());
+    assert!(far.with_view_horizon(DVec3::Z, -1.0).is_err());
+}

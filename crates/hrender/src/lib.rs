@@ -45,7 +45,7 @@ pub use display::{DisplayTransform, Encoding, ToneMap, srgb_decode, srgb_encode}
 pub use error::RenderError;
 pub use exposure::{AUTO_KEY, DARK_LEVEL, MAX_EXPOSURE, auto_exposure, is_almost_black, luminance};
 pub use image::Image;
-pub use nets::{PixelNet, Sample};
+pub use nets::{PixelNet, Sample, pixel_footprint};
 pub use output::{ImageFormat, PngLevel, SampleDepth, check_depth, write_image, write_image_with};
 pub use output_check::{Overwrite, check_output};
 pub use ray_budget::{MAX_SECONDARY_RAYS, RayBudget};
@@ -357,32 +357,6 @@ fn view_window(
     })
 }
 
-/// The smallest angle at the eye between the primary rays of two
-/// neighbouring pixels, over the middle and the corners of the picture
-/// (nets other than 0 spread their pixels unevenly); `None` if no two
-/// neighbours both see the scene. Honeycombs are walked to where their
-/// cells shrink below this angle (`ir::Shape::for_pixel_angle`).
-pub fn pixel_angle(net: &PixelNet, width: u32, height: u32) -> Option<f64> {
-    let (dx, dy) = (1.0 / f64::from(width), 1.0 / f64::from(height));
-    let spots = [
-        (0.0, 0.0),
-        (-0.5 + dx, -0.5 + dy),
-        (0.5 - 2.0 * dx, 0.5 - 2.0 * dy),
-    ];
-    spots
-        .iter()
-        .flat_map(|&(x, y)| {
-            let here = net.sample(x, y);
-            [(x + dx, y), (x, y + dy)].map(move |(u, v)| match (here, net.sample(u, v)) {
-                (Sample::Ray(a), Sample::Ray(b)) => Some(a.angle_between(b)),
-                _ => None,
-            })
-        })
-        .flatten()
-        .filter(|a| *a > 0.0 && a.is_finite())
-        .min_by(f64::total_cmp)
-}
-
 /// Net-3 nodes already traced for the current row, by lattice index.
 #[derive(Default)]
 struct NodeCache(HashMap<(i64, i64), (Color, bool)>);
@@ -399,8 +373,8 @@ fn render_in_pool(
     let (width, height) = (resolution.width(), resolution.height());
     let window = view_window(scene, net, resolution, camera.view_distance)?;
     let pixel_net = PixelNet::new(net, window, camera.view_distance);
-    let prepared = match pixel_angle(&pixel_net, width, height) {
-        Some(angle) => PreparedScene::for_picture(scene, &camera, angle)?,
+    let prepared = match pixel_footprint(&pixel_net, width, height) {
+        Some(footprint) => PreparedScene::for_picture(scene, &camera, &footprint)?,
         None => PreparedScene::for_camera(scene, &camera)?,
     };
     let region = region.unwrap_or(Region {

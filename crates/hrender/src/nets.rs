@@ -4,6 +4,7 @@
 use hgeom::glam::DVec3;
 use hgeom::mobius::add_raw;
 use hscene_lang::ir::{Net, Window};
+use hscene_lang::view::PixelFootprint;
 
 /// Where a sample of the screen looks.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -31,6 +32,11 @@ impl PixelNet {
             window,
             view_distance,
         }
+    }
+
+    /// Which net it is.
+    pub fn net(&self) -> Net {
+        self.net
     }
 
     /// The primary ray for screen position `(sx, sy)`, both in `[-1/2, 1/2]`
@@ -100,6 +106,49 @@ impl PixelNet {
             Sample::Outside
         }
     }
+}
+
+/// How the picture's pixels sample the directions at the eye: the
+/// smallest angle between the primary rays of two neighbouring pixels, over
+/// the middle and the corners of the picture (nets other than 0 spread
+/// their pixels unevenly), and for net 0 (a flat image plane on the +z
+/// axis) a lower bound of that angle at the middle, from which each ray's
+/// own follows (`hscene_lang::view::PixelFootprint`). `None` if no two
+/// neighbours both see the scene. Honeycombs are walked to where their
+/// cells shrink below a pixel (`ir::Shape::for_footprint`).
+pub fn pixel_footprint(net: &PixelNet, width: u32, height: u32) -> Option<PixelFootprint> {
+    let (dx, dy) = (1.0 / f64::from(width), 1.0 / f64::from(height));
+    let angles_at = |x: f64, y: f64| {
+        let here = net.sample(x, y);
+        [(x + dx, y), (x, y + dy)].map(move |(u, v)| match (here, net.sample(u, v)) {
+            (Sample::Ray(a), Sample::Ray(b)) => Some(a.angle_between(b)),
+            _ => None,
+        })
+    };
+    let usable = |a: &f64| *a > 0.0 && a.is_finite();
+    let smallest = [
+        (0.0, 0.0),
+        (-0.5 + dx, -0.5 + dy),
+        (0.5 - 2.0 * dx, 0.5 - 2.0 * dy),
+    ]
+    .iter()
+    .flat_map(|&(x, y)| angles_at(x, y))
+    .flatten()
+    .filter(usable)
+    .min_by(f64::total_cmp)?;
+    // The bound `a cos² θ` holds for the angle's rate of change at the
+    // ray's own direction; across one pixel it moves by about the pixel
+    // angle times tan θ, a few thousandths: 1 % below is a lower bound.
+    let plane = match net.net() {
+        Net::Euclidean => angles_at(0.0, 0.0)
+            .into_iter()
+            .flatten()
+            .filter(usable)
+            .min_by(f64::total_cmp)
+            .map(|middle| (DVec3::Z, 0.99 * middle)),
+        _ => None,
+    };
+    Some(PixelFootprint { smallest, plane })
 }
 
 #[cfg(test)]
@@ -189,5 +238,78 @@ mod tests {
         );
         assert_eq!(n.sample(0.5, 0.5), Sample::Outside);
         assert!(matches!(n.sample(0.1, 0.1), Sample::Ray(_)));
+    }
+
+    /// On net 0 the bound `a cos² θ` of the footprint's plane holds for
+    /// the angle between every pixel's ray and its neighbours' (the exact
+    /// angles, on a grid over a wide and a narrow picture, square and
+    /// oblong pixels), and the smallest angle is no larger than the
+    /// corner's; other nets have no plane.
+    #[test]
+    fn footprint_bounds_every_pixel_of_a_flat_picture() {
+        for (window, (w, h)) in [
+            (
+                Window {
+                    width: 1.6,
+                    height: 1.6,
+                },
+                (1000, 1000),
+            ),
+            (
+                Window {
+                    width: 1.2,
+                    height: 0.5,
+                },
+                (320, 240),
+            ),
+            (
+                Window {
+                    width: 0.1,
+                    height: 0.1,
+                },
+                (64, 64),
+            ),
+        ] {
+            let net = PixelNet::new(Net::Euclidean, window, 0.45);
+            let fp = pixel_footprint(&net, w, h).unwrap();
+            let (axis, a) = fp.plane.unwrap();
+            assert_eq!(axis, DVec3::Z);
+            let (dx, dy) = (1.0 / f64::from(w), 1.0 / f64::from(h));
+            let mut checked = 0;
+            for gi in 0..=20 {
+                for gj in 0..=20 {
+                    let x = -0.5 + f64::from(gi) / 20.0 * (1.0 - 2.0 * dx);
+                    let y = -0.5 + f64::from(gj) / 20.0 * (1.0 - 2.0 * dy);
+                    let Sample::Ray(u) = net.sample(x, y) else {
+                        continue;
+                    };
+                    for (p, q) in [(x + dx, y), (x, y + dy)] {
+                        let Sample::Ray(v) = net.sample(p, q) else {
+                            continue;
+                        };
+                        let angle = u.angle_between(v);
+                        let cos = u.dot(axis);
+                        assert!(
+                            angle >= a * cos * cos,
+                            "{x} {y}: {angle} < {}",
+                            a * cos * cos
+                        );
+                        checked += 1;
+                    }
+                }
+            }
+            assert!(checked > 400, "{checked}");
+            // The smallest angle is no larger than the middle's.
+            assert!(fp.smallest <= a / 0.99);
+        }
+        let disk = PixelNet::new(
+            Net::GreatDisk,
+            Window {
+                width: 1.6,
+                height: 1.6,
+            },
+            0.45,
+        );
+        assert_eq!(pixel_footprint(&disk, 100, 100).unwrap().plane, None);
     }
 }

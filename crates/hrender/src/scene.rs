@@ -8,6 +8,7 @@ use hgeom::Shape as Surface;
 use hgeom::glam::{DVec3, DVec4};
 use hgeom::{Hit, Isometry, KleinBox, Point, Ray};
 use hscene_lang::ir::{self, Fog, Material, PartMaterials, Rgb, Scene, Surfaces};
+use hscene_lang::view::PixelFootprint;
 
 use rayon::prelude::*;
 use smallvec::SmallVec;
@@ -68,8 +69,12 @@ impl PreparedObject {
     }
 
     /// The shape moved by each of `stages` in turn, as surfaces; drawn for
-    /// pixels of `pixel_angle` radians if given.
-    fn surfaces_of(shape: &ir::Shape, stages: &[Isometry], pixel_angle: Option<f64>) -> Surfaces {
+    /// pixels of `footprint` if given.
+    fn surfaces_of(
+        shape: &ir::Shape,
+        stages: &[Isometry],
+        footprint: Option<&PixelFootprint>,
+    ) -> Surfaces {
         // A camera at the origin has identity stages, and moving by the
         // identity only copies (every cached quantity is recomputed from
         // the same inputs by the same formulas): tens of thousands of rods
@@ -79,7 +84,7 @@ impl PreparedObject {
             moved = Some(moved.as_ref().unwrap_or(shape).transformed(iso));
         }
         if let Some(nearer) =
-            pixel_angle.and_then(|a| moved.as_ref().unwrap_or(shape).for_pixel_angle(a))
+            footprint.and_then(|f| moved.as_ref().unwrap_or(shape).for_footprint(f))
         {
             moved = Some(nearer);
         }
@@ -182,22 +187,22 @@ impl PreparedScene {
         PreparedScene::staged(scene, &camera.stages, None)
     }
 
-    /// [`PreparedScene::for_camera`] for a picture whose pixels subtend
-    /// `pixel_angle` radians at the eye: detail that no pixel can resolve
-    /// is not traced ([`ir::Shape::for_pixel_angle`]).
+    /// [`PreparedScene::for_camera`] for a picture whose pixels sample the
+    /// directions at the eye as `footprint` says: detail that no pixel can
+    /// resolve is not traced ([`ir::Shape::for_footprint`]).
     pub fn for_picture(
         scene: &Scene,
         camera: &CanonicalCamera,
-        pixel_angle: f64,
+        footprint: &PixelFootprint,
     ) -> Result<PreparedScene, RenderError> {
-        PreparedScene::staged(scene, &camera.stages, Some(pixel_angle))
+        PreparedScene::staged(scene, &camera.stages, Some(footprint))
     }
 
     /// Move everything by each of `stages` in turn (at least one).
     fn staged(
         scene: &Scene,
         stages: &[Isometry],
-        pixel_angle: Option<f64>,
+        footprint: Option<&PixelFootprint>,
     ) -> Result<PreparedScene, RenderError> {
         // Objects are moved on every thread; the first failing one, in
         // scene order, is the one reported.
@@ -227,7 +232,7 @@ impl PreparedScene {
                         scene.materials.len()
                     )));
                 }
-                let surfaces = PreparedObject::surfaces_of(&o.shape, stages, pixel_angle);
+                let surfaces = PreparedObject::surfaces_of(&o.shape, stages, footprint);
                 if !surfaces.iter().all(|s| s.is_traceable()) {
                     return Err(RenderError::OutOfRange {
                         what: format!("object {}", index + 1),

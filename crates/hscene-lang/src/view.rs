@@ -15,6 +15,21 @@ use hgeom::glam::{DMat3, DVec3};
 
 use crate::ir::{Camera, Net, Resolution, Window};
 
+/// How finely a picture samples the directions at the eye (the origin of
+/// the canonical frame): what decides how far a honeycomb is walked
+/// ([`crate::ir::Shape::for_footprint`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PixelFootprint {
+    /// The smallest angle between the primary rays of two neighbouring
+    /// pixels anywhere in the picture, in radians.
+    pub smallest: f64,
+    /// For a flat image plane (net 0): its axis (+z in the canonical
+    /// frame) and a lower bound of the angle between neighbouring pixels'
+    /// rays at its middle, `a`; a ray at `θ` from the axis has neighbours
+    /// at least `a cos² θ` away.
+    pub plane: Option<(DVec3, f64)>,
+}
+
 /// The camera's canonical frame: the isometry that takes the eye to the
 /// origin, the view direction to +z and up to +y, and the view-plane
 /// distance there.

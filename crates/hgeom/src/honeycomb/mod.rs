@@ -16,7 +16,8 @@
 //!   `domain`: the cell or simplex it walks and the parts inside it;
 //!   `kernels`: the arithmetic of one step; `crossings`: the walls crossed,
 //!   folded into the domain matrix only when it is needed; `walk_record`:
-//!   what a walk reports besides its hit.
+//!   what a walk reports besides its hit; `view_horizon`: where a ray
+//!   from the eye stops, by the width of its pixel.
 
 mod cells;
 mod crossings;
@@ -27,6 +28,7 @@ mod schlafli;
 mod simplex;
 mod style;
 mod uniform;
+mod view_horizon;
 mod walk;
 mod walk_record;
 

@@ -63,7 +63,9 @@
 //! the background shows. At distance 12 a cell of size 1 subtends
 //! `1/sinh 12 ≈ 1.2e-5` rad, a hundredth of a pixel of a 1000-pixel image
 //! with a 90° field; [`RegularHoneycomb::horizon_for_pixel`] gives the
-//! distance where a cell's features fall below a given pixel. Up the cusp
+//! distance where a cell's features fall below a given pixel, and
+//! [`RegularHoneycomb::with_view_horizon`] stops each ray from the eye
+//! where they fall below its own pixel of a flat picture. Up the cusp
 //! of an ideal vertex the rods widen (in the upper half-space with the
 //! vertex at infinity they are cones about vertical lines) until they fill
 //! it, so rays towards ideal vertices end on rods; a ray into the cusp of an
@@ -91,7 +93,7 @@
 
 use std::sync::Arc;
 
-use glam::{DMat4, DVec4};
+use glam::{DMat4, DVec3, DVec4};
 
 use crate::error::GeomError;
 use crate::isometry::Isometry;
@@ -108,6 +110,7 @@ use super::schlafli::Schlafli;
 use super::simplex::CoxeterSimplex;
 use super::style::{HoneycombStyle, encode_part};
 use super::uniform::Rings;
+use super::view_horizon::ViewHorizon;
 use super::walk_record::{WalkStats, WalkStep};
 
 /// The default horizon: the walk stops at this distance from the origin of
@@ -157,6 +160,9 @@ pub struct RegularHoneycomb {
     to_local: DMat4,
     horizon: f64,
     cosh_horizon: f64,
+    /// For rays from the origin, a nearer horizon by their direction
+    /// ([`RegularHoneycomb::with_view_horizon`]).
+    view: Option<ViewHorizon>,
     /// `cosh` of the radius of a ball about the base point holding every
     /// part of a depth-limited honeycomb with finite cells and vertices.
     cosh_reach: Option<f64>,
@@ -229,6 +235,7 @@ impl RegularHoneycomb {
             to_local: DMat4::IDENTITY,
             horizon: DEFAULT_HORIZON,
             cosh_horizon: DEFAULT_HORIZON.cosh(),
+            view: None,
             cosh_reach,
         }
     }
@@ -302,12 +309,40 @@ impl RegularHoneycomb {
     /// `t` has circumference `2π sinh t`, so a feature of size `s` at
     /// distance `t` subtends `s / sinh t`, and `t = asinh(s / pixel_angle)`,
     /// with `s` twice the distance from an edge's midpoint to a face centre
-    /// (the width of a face across its middle: 1.06 for `{4,3,5}`). Thin
+    /// (the width of a face across its middle: 1.25 for `{4,3,5}`). Thin
     /// rods vanish sooner; this is where the cells themselves do. At most 36.
     pub fn horizon_for_pixel(&self, pixel_angle: f64) -> f64 {
+        (self.feature_size() / pixel_angle)
+            .asinh()
+            .clamp(f64::MIN_POSITIVE, 36.0)
+    }
+
+    /// The same honeycomb with, for rays from the origin of its frame (the
+    /// eye), the horizon of their own pixel on a flat image plane: a ray at
+    /// `θ` from `axis` stops at [`RegularHoneycomb::horizon_for_pixel`] of
+    /// `pixel_angle cos² θ`, a lower bound of the angle between its pixel's
+    /// ray and its neighbours' when the pixels at the middle are
+    /// `pixel_angle` apart (module `view_horizon`), and never beyond
+    /// [`RegularHoneycomb::horizon`]. Other rays (shadows, reflections)
+    /// keep that horizon.
+    ///
+    /// Errors: [`GeomError::BadDirection`] for an axis that is zero or not
+    /// finite; [`GeomError::BadAngle`] for a pixel angle that is not
+    /// positive and finite.
+    pub fn with_view_horizon(
+        mut self,
+        axis: DVec3,
+        pixel_angle: f64,
+    ) -> Result<RegularHoneycomb, GeomError> {
+        self.view = Some(ViewHorizon::new(axis, self.feature_size(), pixel_angle)?);
+        Ok(self)
+    }
+
+    /// Twice the distance from an edge's midpoint to a face centre: the
+    /// width of a face across its middle (1.25 for `{4,3,5}`).
+    fn feature_size(&self) -> f64 {
         let v = CoxeterSimplex::new(self.symbol).vertices();
-        let size = 2.0 * lorentz::distance(v[1], v[2]);
-        (size / pixel_angle).asinh().clamp(f64::MIN_POSITIVE, 36.0)
+        2.0 * lorentz::distance(v[1], v[2])
     }
 
     /// The walls the walk reflects the ray in ([`WalkStep::wall`] indexes
@@ -452,7 +487,11 @@ impl RegularHoneycomb {
             hi = hi.min(u_out);
             Some(())
         };
-        clip(DVec4::W, self.cosh_horizon)?;
+        let cosh_horizon = match &self.view {
+            Some(view) => view.cosh_for(ray, self.cosh_horizon),
+            None => self.cosh_horizon,
+        };
+        clip(DVec4::W, cosh_horizon)?;
         if let Some(k) = self.cosh_reach {
             clip(self.to_world.col(3), k)?;
         }

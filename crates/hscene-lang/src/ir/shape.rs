@@ -13,6 +13,7 @@ use std::sync::Arc;
 use hgeom::glam::{DVec3, DVec4};
 
 use super::honeycomb::{Honeycomb, PartMaterials};
+use crate::view::PixelFootprint;
 use hgeom::{
     ConvexPolygon, HCylinder, HPlane, HSphere, Horosphere, Isometry, Point, Polyhedron, Rod,
     Shape as Surface, TriangleMesh, Vertex, lorentz, nearest_to_origin,
@@ -227,23 +228,30 @@ impl Shape {
         }
     }
 
-    /// The shape as drawn in a picture whose pixels subtend `pixel_angle`
-    /// radians at the eye, the origin of the frame it is in: a honeycomb is
-    /// walked no farther than where its cells shrink below a pixel
-    /// (`RegularHoneycomb::horizon_for_pixel`; beyond, the background
-    /// shows, docs/honeycombs.md); every other shape is unchanged, and
-    /// `None` says so (without a copy).
-    pub fn for_pixel_angle(&self, pixel_angle: f64) -> Option<Shape> {
+    /// The shape as drawn in a picture whose pixels sample the directions
+    /// at the eye, the origin of the frame it is in, as `footprint` says:
+    /// a honeycomb is walked no farther than where its cells shrink below
+    /// the smallest pixel (`RegularHoneycomb::horizon_for_pixel`), and on a
+    /// flat image plane each ray from the eye no farther than where they
+    /// shrink below its own pixel (`RegularHoneycomb::with_view_horizon`);
+    /// beyond, the background shows (docs/honeycombs.md). Every other
+    /// shape is unchanged, and `None` says so (without a copy).
+    pub fn for_footprint(&self, footprint: &PixelFootprint) -> Option<Shape> {
         let Shape::Honeycomb(h) = self else {
             return None;
         };
-        let horizon = h.surface.horizon_for_pixel(pixel_angle);
-        if horizon >= h.surface.horizon() {
+        let mut surface = h.surface.clone();
+        let horizon = surface.horizon_for_pixel(footprint.smallest);
+        if horizon < surface.horizon() {
+            surface = surface.with_horizon(horizon).ok()?;
+        }
+        if let Some((axis, angle)) = footprint.plane {
+            surface = surface.with_view_horizon(axis, angle).ok()?;
+        } else if horizon >= h.surface.horizon() {
             return None;
         }
-        let nearer = h.surface.clone().with_horizon(horizon).ok()?;
         let mut h = h.clone();
-        h.surface = nearer;
+        h.surface = surface;
         Some(Shape::Honeycomb(h))
     }
 
