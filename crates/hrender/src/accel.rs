@@ -117,8 +117,44 @@ impl Accel {
         }
         let (lo, hi) = chord.arc(t_min, limit);
         let c32 = Chord32::new(&chord);
-        let lo = c32.lambda_below(lo);
-        let mut hi = c32.lambda_above(hi);
+        let arc = Arc {
+            chord: &chord,
+            c32: &c32,
+            lo: c32.lambda_below(lo),
+            hi: c32.lambda_above(hi),
+            t_min,
+            limit,
+        };
+        // One copy of the traversal per octant of the chord's direction.
+        match c32.octant() {
+            0 => self.nearest_in::<0>(arc, best, test),
+            1 => self.nearest_in::<1>(arc, best, test),
+            2 => self.nearest_in::<2>(arc, best, test),
+            3 => self.nearest_in::<3>(arc, best, test),
+            4 => self.nearest_in::<4>(arc, best, test),
+            5 => self.nearest_in::<5>(arc, best, test),
+            6 => self.nearest_in::<6>(arc, best, test),
+            _ => self.nearest_in::<7>(arc, best, test),
+        }
+    }
+
+    /// [`Accel::nearest`]'s traversal for a chord in `OCTANT`, from the
+    /// hit `best` found in the direct list.
+    #[inline(always)]
+    fn nearest_in<const OCTANT: usize>(
+        &self,
+        arc: Arc<'_>,
+        mut best: Option<(Hit, u32)>,
+        mut test: impl FnMut(u32, f64, f64) -> Option<Hit>,
+    ) -> Option<(Hit, u32)> {
+        let Arc {
+            chord,
+            c32,
+            lo,
+            mut hi,
+            t_min,
+            mut limit,
+        } = arc;
         let mut stack = Stack::with((0u32, lo));
         let mut last = u32::MAX;
         while let Some((mut n, enter)) = stack.pop() {
@@ -130,7 +166,7 @@ impl Accel {
             // wait on the stack, the farthest lowest.
             loop {
                 let node = &self.nodes[n as usize];
-                let (leaves, inner, entries) = node.entries(&c32, lo, hi);
+                let (leaves, inner, entries) = node.entries::<OCTANT>(c32, lo, hi);
                 for k in lanes(leaves) {
                     if entries[k] > hi {
                         continue;
@@ -216,12 +252,33 @@ impl Accel {
         let (lo, hi) = chord.arc_to_tanh(t_min, tanh_t_max);
         let c32 = Chord32::new(&chord);
         let (lo, hi) = (c32.lambda_below(lo), c32.lambda_above(hi));
+        match c32.octant() {
+            0 => self.any_in::<0>(&c32, lo, hi, visit),
+            1 => self.any_in::<1>(&c32, lo, hi, visit),
+            2 => self.any_in::<2>(&c32, lo, hi, visit),
+            3 => self.any_in::<3>(&c32, lo, hi, visit),
+            4 => self.any_in::<4>(&c32, lo, hi, visit),
+            5 => self.any_in::<5>(&c32, lo, hi, visit),
+            6 => self.any_in::<6>(&c32, lo, hi, visit),
+            _ => self.any_in::<7>(&c32, lo, hi, visit),
+        }
+    }
+
+    /// [`Accel::any`]'s traversal for a chord in `OCTANT` over `[lo, hi]`.
+    #[inline(always)]
+    fn any_in<const OCTANT: usize>(
+        &self,
+        c32: &Chord32,
+        lo: f32,
+        hi: f32,
+        mut visit: impl FnMut(u32) -> Step,
+    ) {
         let mut stack = Stack::with(0u32);
         let mut last = u32::MAX;
         while let Some(mut n) = stack.pop() {
             loop {
                 let node = &self.nodes[n as usize];
-                let (leaves, inner, _) = node.entries(&c32, lo, hi);
+                let (leaves, inner, _) = node.entries::<OCTANT>(c32, lo, hi);
                 for k in lanes(leaves) {
                     for &i in node.items(k, &self.items) {
                         if i == last {
@@ -244,6 +301,18 @@ impl Accel {
             }
         }
     }
+}
+
+/// A ray's chord and the part of it a nearest-hit search covers: `lo` to
+/// `hi` in the `f32` chord's units, `t_min` to `limit` in arc length.
+#[derive(Clone, Copy)]
+struct Arc<'a> {
+    chord: &'a KleinRay,
+    c32: &'a Chord32,
+    lo: f32,
+    hi: f32,
+    t_min: f64,
+    limit: f64,
 }
 
 /// The lanes whose bits are set in `mask`, lowest first.

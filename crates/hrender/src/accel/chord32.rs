@@ -122,6 +122,13 @@ impl Chord32 {
         }
     }
 
+    /// Which corner of a box the chord meets first, as three bits (bit
+    /// `i` set when it runs towards `-x_i`): 0 to 7.
+    #[inline]
+    pub fn octant(&self) -> usize {
+        self.near[0] | (self.near[1] << 1) | (self.near[2] << 2)
+    }
+
     /// The chord's `λ` (of [`KleinRay`]) in this chord's units, at most
     /// `lambda` (`-inf` if that is NaN): for the start of an arc.
     #[inline]

@@ -40,13 +40,21 @@ pub(super) struct WideNode {
 impl WideNode {
     /// Which children's boxes the chord enters within `[lo, hi]`, the
     /// leaves and the inner nodes apart (bit `k` for child `k`), and lower
-    /// bounds of where it enters each.
+    /// bounds of where it enters each. `OCTANT` is the chord's
+    /// [`Chord32::octant`]: which corner of a box it meets first is then
+    /// known when this is compiled, and each corner is read at a fixed
+    /// offset (instead of offsets recomputed at every node).
     #[inline(always)]
-    pub fn entries(&self, c: &Chord32, lo: f32, hi: f32) -> (u32, u32, [f32; WIDTH]) {
+    pub fn entries<const OCTANT: usize>(
+        &self,
+        c: &Chord32,
+        lo: f32,
+        hi: f32,
+    ) -> (u32, u32, [f32; WIDTH]) {
+        let near = [OCTANT & 1, (OCTANT >> 1) & 1, (OCTANT >> 2) & 1];
         let mut enter = Vec4::splat(lo);
         let mut leave = Vec4::splat(hi);
-        for axis in 0..3 {
-            let near = c.near[axis];
+        for (axis, near) in near.into_iter().enumerate() {
             enter = enter.max(c.enter(axis, self.corner[near][axis]));
             leave = leave.min(c.leave(axis, self.corner[1 - near][axis]));
         }
@@ -149,6 +157,22 @@ mod tests {
     use hgeom::glam::DVec3;
     use hgeom::{KleinRay, Ray};
 
+    /// [`WideNode::entries`] for the chord's own octant, over the whole
+    /// chord.
+    fn entries_any(node: &WideNode, c: &Chord32) -> (u32, u32, [f32; WIDTH]) {
+        let (lo, hi) = (f32::NEG_INFINITY, f32::INFINITY);
+        match c.octant() {
+            0 => node.entries::<0>(c, lo, hi),
+            1 => node.entries::<1>(c, lo, hi),
+            2 => node.entries::<2>(c, lo, hi),
+            3 => node.entries::<3>(c, lo, hi),
+            4 => node.entries::<4>(c, lo, hi),
+            5 => node.entries::<5>(c, lo, hi),
+            6 => node.entries::<6>(c, lo, hi),
+            _ => node.entries::<7>(c, lo, hi),
+        }
+    }
+
     /// A leaf root: one child and three absent lanes. Chords through the
     /// box along every axis, in both directions, enter the child's lane and
     /// never an absent one (their empty boxes give no NaN for either sign
@@ -169,8 +193,7 @@ mod tests {
                 dir[axis] = sign;
                 let ray = Ray::from_origin_unchecked(dir);
                 let c = Chord32::new(&KleinRay::new(&ray));
-                let (leaves, inner, entries) =
-                    nodes[0].entries(&c, f32::NEG_INFINITY, f32::INFINITY);
+                let (leaves, inner, entries) = entries_any(&nodes[0], &c);
                 assert_eq!((leaves, inner), (1, 0), "axis {axis}, sign {sign}");
                 assert!(entries[0] <= 0.0, "{}", entries[0]);
                 // From a start beside the box, parallel to it: no lane.
@@ -179,7 +202,7 @@ mod tests {
                 let start = hgeom::Point::from_coords(beside).unwrap();
                 let ray = Ray::from_ball_unchecked(&start, dir);
                 let c = Chord32::new(&KleinRay::new(&ray));
-                let (leaves, inner, _) = nodes[0].entries(&c, f32::NEG_INFINITY, f32::INFINITY);
+                let (leaves, inner, _) = entries_any(&nodes[0], &c);
                 assert_eq!((leaves, inner), (0, 0), "axis {axis}, sign {sign}, beside");
             }
         }
