@@ -15,6 +15,48 @@
 //! leaves: every box test is conservative, and the exact `f64` intersection
 //! decides.
 
+/// `$body` with `$o` a constant: the chord octant `$octant` (0 to 7), so
+/// that a traversal generic over it is compiled once per octant
+/// (`WideNode::entries`) and chosen once per ray.
+macro_rules! by_octant {
+    ($octant:expr, $o:ident => $body:expr) => {
+        match $octant {
+            0 => {
+                const $o: usize = 0;
+                $body
+            }
+            1 => {
+                const $o: usize = 1;
+                $body
+            }
+            2 => {
+                const $o: usize = 2;
+                $body
+            }
+            3 => {
+                const $o: usize = 3;
+                $body
+            }
+            4 => {
+                const $o: usize = 4;
+                $body
+            }
+            5 => {
+                const $o: usize = 5;
+                $body
+            }
+            6 => {
+                const $o: usize = 6;
+                $body
+            }
+            _ => {
+                const $o: usize = 7;
+                $body
+            }
+        }
+    };
+}
+
 mod build;
 mod chord32;
 mod stack;
@@ -126,16 +168,7 @@ impl Accel {
             limit,
         };
         // One copy of the traversal per octant of the chord's direction.
-        match c32.octant() {
-            0 => self.nearest_in::<0>(arc, best, test),
-            1 => self.nearest_in::<1>(arc, best, test),
-            2 => self.nearest_in::<2>(arc, best, test),
-            3 => self.nearest_in::<3>(arc, best, test),
-            4 => self.nearest_in::<4>(arc, best, test),
-            5 => self.nearest_in::<5>(arc, best, test),
-            6 => self.nearest_in::<6>(arc, best, test),
-            _ => self.nearest_in::<7>(arc, best, test),
-        }
+        by_octant!(c32.octant(), O => self.nearest_in::<O>(arc, best, test))
     }
 
     /// [`Accel::nearest`]'s traversal for a chord in `OCTANT`, from the
@@ -252,16 +285,7 @@ impl Accel {
         let (lo, hi) = chord.arc_to_tanh(t_min, tanh_t_max);
         let c32 = Chord32::new(&chord);
         let (lo, hi) = (c32.lambda_below(lo), c32.lambda_above(hi));
-        match c32.octant() {
-            0 => self.any_in::<0>(&c32, lo, hi, visit),
-            1 => self.any_in::<1>(&c32, lo, hi, visit),
-            2 => self.any_in::<2>(&c32, lo, hi, visit),
-            3 => self.any_in::<3>(&c32, lo, hi, visit),
-            4 => self.any_in::<4>(&c32, lo, hi, visit),
-            5 => self.any_in::<5>(&c32, lo, hi, visit),
-            6 => self.any_in::<6>(&c32, lo, hi, visit),
-            _ => self.any_in::<7>(&c32, lo, hi, visit),
-        }
+        by_octant!(c32.octant(), O => self.any_in::<O>(&c32, lo, hi, visit))
     }
 
     /// [`Accel::any`]'s traversal for a chord in `OCTANT` over `[lo, hi]`.

@@ -161,16 +161,7 @@ mod tests {
     /// chord.
     fn entries_any(node: &WideNode, c: &Chord32) -> (u32, u32, [f32; WIDTH]) {
         let (lo, hi) = (f32::NEG_INFINITY, f32::INFINITY);
-        match c.octant() {
-            0 => node.entries::<0>(c, lo, hi),
-            1 => node.entries::<1>(c, lo, hi),
-            2 => node.entries::<2>(c, lo, hi),
-            3 => node.entries::<3>(c, lo, hi),
-            4 => node.entries::<4>(c, lo, hi),
-            5 => node.entries::<5>(c, lo, hi),
-            6 => node.entries::<6>(c, lo, hi),
-            _ => node.entries::<7>(c, lo, hi),
-        }
+        by_octant!(c.octant(), O => node.entries::<O>(c, lo, hi))
     }
 
     /// A leaf root: one child and three absent lanes. Chords through the
