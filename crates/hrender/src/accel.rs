@@ -159,7 +159,7 @@ impl Accel {
         }
         let (lo, hi) = chord.arc(t_min, limit);
         let c32 = Chord32::new(&chord);
-        let arc = Arc {
+        let search = Search {
             chord: &chord,
             c32: &c32,
             lo: c32.lambda_below(lo),
@@ -168,7 +168,7 @@ impl Accel {
             limit,
         };
         // One copy of the traversal per octant of the chord's direction.
-        by_octant!(c32.octant(), O => self.nearest_in::<O>(arc, best, test))
+        by_octant!(c32.octant(), O => self.nearest_in::<O>(search, best, test))
     }
 
     /// [`Accel::nearest`]'s traversal for a chord in `OCTANT`, from the
@@ -176,18 +176,18 @@ impl Accel {
     #[inline(always)]
     fn nearest_in<const OCTANT: usize>(
         &self,
-        arc: Arc<'_>,
+        search: Search<'_>,
         mut best: Option<(Hit, u32)>,
         mut test: impl FnMut(u32, f64, f64) -> Option<Hit>,
     ) -> Option<(Hit, u32)> {
-        let Arc {
+        let Search {
             chord,
             c32,
             lo,
             mut hi,
             t_min,
             mut limit,
-        } = arc;
+        } = search;
         let mut stack = Stack::with((0u32, lo));
         let mut last = u32::MAX;
         while let Some((mut n, enter)) = stack.pop() {
@@ -330,7 +330,7 @@ impl Accel {
 /// A ray's chord and the part of it a nearest-hit search covers: `lo` to
 /// `hi` in the `f32` chord's units, `t_min` to `limit` in arc length.
 #[derive(Clone, Copy)]
-struct Arc<'a> {
+struct Search<'a> {
     chord: &'a KleinRay,
     c32: &'a Chord32,
     lo: f32,
