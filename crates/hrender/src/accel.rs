@@ -20,35 +20,14 @@
 /// (`WideNode::entries`) and chosen once per ray.
 macro_rules! by_octant {
     ($octant:expr, $o:ident => $body:expr) => {
+        by_octant!(@arms $octant, $o, $body, 0 1 2 3 4 5 6)
+    };
+    (@arms $octant:expr, $o:ident, $body:expr, $($n:literal)*) => {
         match $octant {
-            0 => {
-                const $o: usize = 0;
+            $($n => {
+                const $o: usize = $n;
                 $body
-            }
-            1 => {
-                const $o: usize = 1;
-                $body
-            }
-            2 => {
-                const $o: usize = 2;
-                $body
-            }
-            3 => {
-                const $o: usize = 3;
-                $body
-            }
-            4 => {
-                const $o: usize = 4;
-                $body
-            }
-            5 => {
-                const $o: usize = 5;
-                $body
-            }
-            6 => {
-                const $o: usize = 6;
-                $body
-            }
+            })*
             _ => {
                 const $o: usize = 7;
                 $body

@@ -1,7 +1,10 @@
-//! Reproducible random meshes for the unit tests of the mesh modules.
+//! Reproducible random meshes for the unit tests of the mesh modules
+//! (compiled for tests only). Their points and meshes come from the tests'
+//! own constants and seeded streams, never from input: a fixture that
+//! cannot be built stops the test through `hscene_test_support::fixture`.
 
 use glam::DVec3;
-use hscene_test_support::SplitMix64;
+use hscene_test_support::{SplitMix64, fixture};
 
 use super::TriangleMesh;
 use crate::isometry::Isometry;
@@ -11,11 +14,14 @@ use crate::point::Point;
 /// a uniform distance.
 pub(super) fn random_point(rng: &mut SplitMix64, max: f64) -> Point {
     let d = rng.direction();
-    Point::at_distance_from_origin(d, rng.range(0.0, max)).unwrap()
+    fixture(
+        Point::at_distance_from_origin(d, rng.range(0.0, max)),
+        "a random point",
+    )
 }
 
 pub(super) fn p(x: f64, y: f64, z: f64) -> Point {
-    Point::from_coords(DVec3::new(x, y, z)).unwrap()
+    fixture(Point::from_coords(DVec3::new(x, y, z)), "a ball point")
 }
 
 /// Triangles scattered through a ball of radius `reach`, each with
@@ -27,13 +33,12 @@ pub(super) fn soup(rng: &mut SplitMix64, count: usize, reach: f64, size: f64) ->
         let c = random_point(rng, reach);
         for _ in 0..3 {
             let dir = rng.direction();
-            vertices.push(
-                Isometry::transvection_from_origin(c).apply(
-                    &Point::at_distance_from_origin(dir, rng.range(0.1, 1.0) * size).unwrap(),
-                ),
-            );
+            vertices.push(Isometry::transvection_from_origin(c).apply(&fixture(
+                Point::at_distance_from_origin(dir, rng.range(0.1, 1.0) * size),
+                "a triangle vertex",
+            )));
         }
         triangles.push([3 * i, 3 * i + 1, 3 * i + 2]);
     }
-    TriangleMesh::new(vertices, triangles).unwrap()
+    fixture(TriangleMesh::new(vertices, triangles), "a triangle soup")
 }
