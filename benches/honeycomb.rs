@@ -125,16 +125,9 @@ fn render_horizon(
     let net = PixelNet::new(Net::Euclidean, window, probe.camera.view_distance);
     let footprint =
         hrender::pixel_footprint(&net, resolution, resolution).ok_or("no pixel sees the scene")?;
-    let mut walked = h
-        .clone()
-        .with_horizon(h.horizon_for_pixel(footprint.smallest))
-        .map_err(|e| e.to_string())?;
-    if let Some((axis, angle)) = footprint.plane {
-        walked = walked
-            .with_view_horizon(axis, angle)
-            .map_err(|e| e.to_string())?;
-    }
-    Ok(walked)
+    h.clone()
+        .for_pixels(footprint.smallest, footprint.plane)
+        .map_err(|e| e.to_string())
 }
 
 /// Walk counts over the probe's primary rays.

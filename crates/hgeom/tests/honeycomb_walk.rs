@@ -569,6 +569,22 @@ fn a_view_horizon_stops_rays_from_the_eye_by_their_pixel() {
     let start = Point::from_coords(DVec3::new(0.05, 0.0, 0.0)).unwrap();
     let aside = Ray::from_ball_unchecked(&start, DVec3::Z);
     assert_eq!(walls_and_t(&near, &aside), walls_and_t(&far, &aside));
+    // `for_pixels` is both: the smallest pixel's horizon where it is
+    // nearer (a pixel of `a` here), the view horizon on a plane.
+    let axis_ray = Ray::from_origin_unchecked(DVec3::Z);
+    let drawn = far
+        .clone()
+        .for_pixels(a / 100.0, Some((DVec3::Z, a)))
+        .unwrap();
+    assert_eq!(drawn.horizon(), far.horizon());
+    assert_eq!(
+        walls_and_t(&drawn, &axis_ray),
+        walls_and_t(&near, &axis_ray)
+    );
+    let flat = far.clone().for_pixels(a, None).unwrap();
+    assert_eq!(flat.horizon(), far.horizon_for_pixel(a));
+    // Along the axis the view horizon is that same distance.
+    assert_eq!(walls_and_t(&flat, &axis_ray), walls_and_t(&near, &axis_ray));
     assert!(far.clone().with_view_horizon(DVec3::ZERO, a).is_err());
     assert!(far.with_view_horizon(DVec3::Z, -1.0).is_err());
 }

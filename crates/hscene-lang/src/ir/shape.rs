@@ -240,16 +240,16 @@ impl Shape {
         let Shape::Honeycomb(h) = self else {
             return None;
         };
-        let mut surface = h.surface.clone();
-        let horizon = surface.horizon_for_pixel(footprint.smallest);
-        if horizon < surface.horizon() {
-            surface = surface.with_horizon(horizon).ok()?;
-        }
-        if let Some((axis, angle)) = footprint.plane {
-            surface = surface.with_view_horizon(axis, angle).ok()?;
-        } else if horizon >= h.surface.horizon() {
+        let unchanged = footprint.plane.is_none()
+            && h.surface.horizon_for_pixel(footprint.smallest) >= h.surface.horizon();
+        if unchanged {
             return None;
         }
+        let surface = h
+            .surface
+            .clone()
+            .for_pixels(footprint.smallest, footprint.plane)
+            .ok()?;
         let mut h = h.clone();
         h.surface = surface;
         Some(Shape::Honeycomb(h))
