@@ -220,8 +220,9 @@ impl PreparedScene {
                     )));
                 }
                 let parts = o.shape.part_materials().cloned();
-                let part_ids = parts.iter().flat_map(|p| p.faces.iter().chain(&p.palette));
-                if let Some(bad) = part_ids
+                if let Some(bad) = parts
+                    .iter()
+                    .flat_map(PartMaterials::ids)
                     .map(|m| m.index())
                     .find(|&m| m >= scene.materials.len())
                 {
@@ -238,13 +239,9 @@ impl PreparedScene {
                         what: format!("object {}", index + 1),
                     });
                 }
-                let opaque = std::iter::once(o.material.index())
-                    .chain(
-                        parts
-                            .iter()
-                            .flat_map(|p| p.faces.iter().chain(&p.palette).map(|m| m.index())),
-                    )
-                    .all(|m| scene.materials[m].transmission == 0.0);
+                let opaque = std::iter::once(o.material)
+                    .chain(parts.iter().flat_map(PartMaterials::ids))
+                    .all(|m| scene.materials[m.index()].transmission == 0.0);
                 Ok(PreparedObject {
                     surfaces,
                     material: o.material.index(),

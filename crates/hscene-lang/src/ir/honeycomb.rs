@@ -45,6 +45,12 @@ pub struct PartMaterials {
 }
 
 impl PartMaterials {
+    /// Every material its parts may be drawn in besides the object's own:
+    /// the faces' and the palette's.
+    pub fn ids(&self) -> impl Iterator<Item = MaterialId> + '_ {
+        self.faces.iter().chain(&self.palette).copied()
+    }
+
     /// The index (into the scene's materials) of the material of the part
     /// a hit met (`hit.part`), for an object whose own material has index
     /// `own`.
@@ -63,5 +69,27 @@ impl PartMaterials {
                 None => own,
             },
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The faces' material first, then the palette in order; none
+    /// without either.
+    #[test]
+    fn ids_are_the_faces_then_the_palette() {
+        let id = MaterialId::declared;
+        let both = PartMaterials {
+            faces: Some(id(2)),
+            palette: vec![id(0), id(1)],
+        };
+        assert_eq!(both.ids().collect::<Vec<_>>(), [id(2), id(0), id(1)]);
+        let bare = PartMaterials {
+            faces: None,
+            palette: Vec::new(),
+        };
+        assert_eq!(bare.ids().count(), 0);
     }
 }
