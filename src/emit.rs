@@ -7,7 +7,7 @@
 use std::path::Path;
 
 use hgeom::{BallShape, ConvexPolygon, Point, Rod, Vertex};
-use hscene_lang::ir::{Camera, Light, Material, Object, Rgb, Scene, Shape};
+use hscene_ir::{Camera, Light, Material, Object, Rgb, Scene, Shape};
 use serde_json::{Value, json};
 
 /// The version of the IR schema.
@@ -104,7 +104,7 @@ fn header(path: &Path, scene: &Scene) -> Value {
     })
 }
 
-fn point_entry(p: &hscene_lang::ir::PointRecord) -> Value {
+fn point_entry(p: &hscene_ir::PointRecord) -> Value {
     let (position, ideal) = match p.position {
         Vertex::Interior(q) => (q.coords(), false),
         Vertex::Ideal(q) => (q.coords(), true),

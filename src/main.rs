@@ -16,8 +16,10 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use clap::Parser;
-use hrender::{DisplayTransform, Encoding, RenderOptions, SampleDepth, ToneMap};
-use hscene_lang::ir::{Net, Resolution};
+use hrender::{
+    DisplayTransform, Encoding, Exposure, IntegratorKind, RenderOptions, SampleDepth, ToneMap,
+};
+use hscene_ir::{Net, Resolution};
 
 use exit::{EXIT_SCENE_ERRORS, EXIT_USAGE_OR_IO, print_bytes};
 
@@ -337,7 +339,7 @@ fn frame_path(output: &Path, frame: u32) -> std::path::PathBuf {
 
 fn render_frame(
     args: &RenderArgs,
-    scene: &hscene_lang::ir::Scene,
+    scene: &hscene_ir::Scene,
     output: &Path,
     stderr_tty: bool,
     auto_ev: &std::cell::Cell<Option<f64>>,
@@ -351,10 +353,12 @@ fn render_frame(
         threads: args.threads.map(usize::from),
         samples: args.samples,
         seed: args.seed,
-        exposure: match args.exposure {
-            ExposureArg::Stops(ev) => ev,
-            ExposureArg::Auto => 0.0,
+        exposure: match (args.exposure, auto_ev.get()) {
+            (ExposureArg::Stops(ev), _) => Exposure::Stops(ev),
+            (ExposureArg::Auto, None) => Exposure::Auto,
+            (ExposureArg::Auto, Some(ev)) => Exposure::AutoKept(ev),
         },
+        integrator: IntegratorKind::default(),
     };
     let height = args.crop.map_or_else(
         || {
@@ -382,7 +386,7 @@ fn render_frame(
             bar.set_position(u64::from(rows));
         }
     };
-    let mut rendered = match hrender::render_region(scene, &options, args.crop, &progress) {
+    let rendered = match hrender::render_region(scene, &options, args.crop, &progress) {
         Ok(r) => r,
         Err(e) => {
             eprintln!("error: {e}");
@@ -401,14 +405,11 @@ fn render_frame(
     if let Some(bar) = &bar {
         bar.finish_and_clear();
     }
-    let auto = (args.exposure == ExposureArg::Auto).then(|| {
-        let ev = auto_ev
-            .get()
-            .unwrap_or_else(|| hrender::auto_exposure(&rendered.image));
-        auto_ev.set(Some(ev));
-        rendered.image.expose(ev);
-        ev
-    });
+    // `--exposure auto` is chosen on the first frame and kept for the rest.
+    let auto = rendered.auto_exposure;
+    if auto.is_some() {
+        auto_ev.set(auto);
+    }
     let depth = match hrender::ImageFormat::from_path(output) {
         Ok(format) => sample_depth(args.depth, format),
         Err(e) => {

@@ -8,7 +8,8 @@ use std::time::Instant;
 
 use hgeom::glam::DVec3;
 use hgeom::{HCylinder, HSphere, Ray, Rod, Vertex};
-use hrender::{CanonicalCamera, Nearest, PixelNet, PreparedScene, Sample};
+use hrender::{Nearest, PixelNet, PreparedScene, Sample};
+use hscene_ir::view::CanonicalFrame;
 use hscene_lang::ir::{Net, Resolution, Scene, Shape};
 use hscene_test_support::reference::{self as r, R, V4};
 
@@ -253,7 +254,7 @@ pub fn povray(pov: &str, resolution: u32, threads: Option<usize>) -> Result<Meas
 /// renderer prepares it for them.
 pub struct Probe {
     /// The camera's frame.
-    pub camera: CanonicalCamera,
+    pub camera: CanonicalFrame,
     /// The scene in that frame.
     pub prepared: PreparedScene,
     /// Ray directions from the eye, in that frame.
@@ -263,7 +264,7 @@ pub struct Probe {
 impl Probe {
     /// The probe of `scene` through net 0.
     pub fn new(scene: &Scene, k: u32) -> Result<Probe, String> {
-        let camera = CanonicalCamera::new(&scene.camera).map_err(|e| e.to_string())?;
+        let camera = hrender::canonical_frame(&scene.camera).map_err(|e| e.to_string())?;
         let prepared = PreparedScene::for_camera(scene, &camera).map_err(|e| e.to_string())?;
         let window = match scene.settings.fov {
             None => scene.settings.window,

@@ -6,7 +6,7 @@
 use std::fmt::Write as _;
 
 use hgeom::{Point, Vertex};
-use hscene_lang::ir::{Rgb, Scene};
+use hscene_ir::{Rgb, Scene};
 use hscene_lang::symbols::{Definition, SymbolKind};
 use lsp_types::{Hover, HoverContents, HoverParams, MarkupContent, MarkupKind};
 

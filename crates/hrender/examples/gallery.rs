@@ -10,7 +10,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use hrender::{RenderOptions, SampleDepth, render, write_image};
-use hscene_lang::ir::{Net, Scene};
+use hscene_ir::{Net, Scene};
 use hscene_test_support::scenes;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

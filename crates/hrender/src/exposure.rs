@@ -1,10 +1,66 @@
-//! Automatic exposure from the image's log-average luminance (Reinhard et
-//! al. 2002, "Photographic tone reproduction"): the exposure that maps the
-//! geometric mean of the luminance onto the key value, a photographer's
-//! 18 % mid-grey.
+//! Exposure: how a render's linear radiance is scaled before it is stored.
+//! A fixed number of stops, or one chosen from the image's log-average
+//! luminance (Reinhard et al. 2002, "Photographic tone reproduction"): the
+//! exposure that maps the geometric mean of the luminance onto the key
+//! value, a photographer's 18 % mid-grey.
 
 use crate::display::DisplayTransform;
 use crate::image::Image;
+
+/// How a render's radiance is scaled before it is stored
+/// (`RenderOptions::exposure`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Exposure {
+    /// Fixed stops (EV): each pixel's radiance is multiplied by `2^ev` as it
+    /// is computed, so every output format, the floating-point ones
+    /// included, sees the scaled values.
+    Stops(f64),
+    /// Chosen from the finished image ([`auto_exposure`]) and applied to it;
+    /// the render reports the stops it chose
+    /// ([`Rendered::auto_exposure`](crate::Rendered::auto_exposure)).
+    Auto,
+    /// Stops chosen automatically for an earlier image (an animation's first
+    /// frame), applied as [`Exposure::Auto`] applies its own, so that every
+    /// frame of an animation is exposed alike.
+    AutoKept(f64),
+}
+
+impl Default for Exposure {
+    /// No correction.
+    fn default() -> Exposure {
+        Exposure::Stops(0.0)
+    }
+}
+
+impl Exposure {
+    /// The stops given, if any (`None` for [`Exposure::Auto`]).
+    pub fn given_stops(self) -> Option<f64> {
+        match self {
+            Exposure::Stops(ev) | Exposure::AutoKept(ev) => Some(ev),
+            Exposure::Auto => None,
+        }
+    }
+
+    /// The factor applied to each pixel's radiance while rendering.
+    pub(crate) fn render_scale(self) -> f64 {
+        match self {
+            Exposure::Stops(ev) => ev.exp2(),
+            Exposure::Auto | Exposure::AutoKept(_) => 1.0,
+        }
+    }
+
+    /// Apply the automatic part to a finished image: the stops applied,
+    /// `None` for fixed stops (already applied while rendering).
+    pub(crate) fn finish(self, image: &mut Image) -> Option<f64> {
+        let ev = match self {
+            Exposure::Stops(_) => return None,
+            Exposure::Auto => auto_exposure(image),
+            Exposure::AutoKept(ev) => ev,
+        };
+        image.expose(ev);
+        Some(ev)
+    }
+}
 
 /// Largest exposure correction, in stops, either way: `2^64` already maps
 /// the faintest visible radiance onto the brightest.

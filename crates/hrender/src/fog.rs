@@ -2,27 +2,24 @@
 //! carries to its origin is mixed towards the fog colour by the segment's
 //! hyperbolic length `s`, `L' = L e^{-s/D} + C (1 - e^{-s/D})`, and a ray
 //! that leaves the scene (infinite length) brings the fog colour itself.
-//! Applied to every segment the tracer follows (primary, reflected,
+//! Applied to every segment the Whitted integrator follows (primary, reflected,
 //! refracted), so a mirror image is fogged by the whole path. Shadow rays
 //! are not fogged: fog here is a depth cue, not a medium that absorbs the
 //! lights' power.
 
-use hscene_lang::ir::Fog;
-
-use crate::color::Color;
+use hscene_ir::{Fog, Rgb};
 
 /// The radiance `c` seen through `s` of fog (`s >= 0`, hyperbolic length).
 #[inline]
-pub fn through_fog(fog: &Fog, c: Color, s: f64) -> Color {
+pub fn through_fog(fog: &Fog, c: Rgb, s: f64) -> Rgb {
     // exp(-s/D) underflows to 0 for long segments: the fog colour exactly.
     let keep = (-s / fog.distance).exp();
-    c * keep + Color::from(fog.color) * (-(-s / fog.distance).exp_m1())
+    c * keep + fog.color * (-(-s / fog.distance).exp_m1())
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use hscene_lang::ir::Rgb;
 
     const FOG: Fog = Fog {
         color: Rgb {
@@ -35,13 +32,17 @@ mod tests {
 
     #[test]
     fn mixes_by_the_exponential_of_the_length() {
-        let c = Color([1.0, 0.0, 0.25]);
+        let c = Rgb::new(1.0, 0.0, 0.25);
         assert_eq!(through_fog(&FOG, c, 0.0), c);
         let k = (-0.5f64).exp();
         let got = through_fog(&FOG, c, 1.0);
-        for (g, (x, f)) in got.0.iter().zip(c.0.iter().zip([0.5, 0.6, 0.7])) {
+        for (g, (x, f)) in got
+            .channels()
+            .iter()
+            .zip(c.channels().iter().zip([0.5, 0.6, 0.7]))
+        {
             assert!((g - (x * k + f * (1.0 - k))).abs() < 1e-15);
         }
-        assert_eq!(through_fog(&FOG, c, 1e4), Color([0.5, 0.6, 0.7]));
+        assert_eq!(through_fog(&FOG, c, 1e4), Rgb::new(0.5, 0.6, 0.7));
     }
 }

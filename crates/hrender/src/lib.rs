@@ -1,8 +1,9 @@
 //! # hrender — the hyperbolic ray tracer
 //!
-//! Traces a lowered [`Scene`](hscene_lang::ir::Scene) over the chosen pixel
-//! net with Whitted recursion, Phong shading and hyperbolic attenuation, in
-//! parallel, and writes the result as PNG or TIFF. Every intersection is
+//! Traces a compiled [`Scene`](hscene_ir::Scene) over the chosen pixel
+//! net with an [`Integrator`] (today Whitted recursion with Phong shading
+//! and hyperbolic attenuation), in parallel, and writes the result as PNG,
+//! TIFF or OpenEXR. Every intersection is
 //! hgeom's exact one; a hierarchy of bounding h-spheres decides which exact
 //! tests a ray needs. Anti-aliasing (deterministic, seeded jitter) and an
 //! exposure correction are render options. `docs/rendering.md` describes
@@ -15,47 +16,51 @@
 //! hidden, and no pixel is ever NaN or infinite.
 
 mod accel;
-mod camera;
-mod color;
 mod display;
 mod error;
 mod exposure;
 mod fog;
 mod icc;
 mod image;
+mod integrator;
+mod light_sampling;
+mod material;
 mod nets;
 mod output;
 mod output_check;
 mod ray_budget;
 mod sampling;
 mod scene;
-mod tracer;
+mod tangent;
+mod texture;
+mod trace_stats;
 mod unfinished;
 
 use std::collections::HashMap;
 
 use hgeom::Ray;
-use hscene_lang::ir::{Net, Resolution, Scene, Window};
-use hscene_lang::view::FovError;
+use hscene_ir::view::{CanonicalFrame, FovError};
+use hscene_ir::{Camera, Net, Resolution, Rgb, Scene, Window};
 use rayon::prelude::*;
 
-pub use camera::CanonicalCamera;
-pub use color::Color;
 pub use display::{DisplayTransform, Encoding, ToneMap, srgb_decode, srgb_encode};
 pub use error::RenderError;
-pub use exposure::{AUTO_KEY, DARK_LEVEL, MAX_EXPOSURE, auto_exposure, is_almost_black, luminance};
+pub use exposure::{
+    AUTO_KEY, DARK_LEVEL, Exposure, MAX_EXPOSURE, auto_exposure, is_almost_black, luminance,
+};
 pub use image::Image;
+pub use integrator::{Integrator, IntegratorKind, Whitted};
 pub use nets::{PixelNet, Sample, pixel_footprint};
 pub use output::{ImageFormat, PngLevel, SampleDepth, check_depth, write_image, write_image_with};
 pub use output_check::{Overwrite, check_output};
 pub use ray_budget::{MAX_SECONDARY_RAYS, RayBudget};
 pub use sampling::{SampleStream, Sampler};
-pub use scene::{Nearest, PreparedObject, PreparedScene};
-pub use tracer::{TraceStats, Tracer};
+pub use scene::{Nearest, PreparedLight, PreparedObject, PreparedScene, T_MIN};
+pub use trace_stats::TraceStats;
 pub use unfinished::remove_unfinished_outputs;
 
 /// Most samples per pixel a render accepts.
-pub const MAX_SAMPLES: u32 = hscene_lang::MAX_SAMPLES;
+pub use hscene_ir::limits::MAX_SAMPLES;
 
 /// Most worker threads a render starts: far above any core count a render
 /// can use, far below what exhausts the system's thread limit.
@@ -77,10 +82,10 @@ pub struct RenderOptions {
     pub samples: Option<u32>,
     /// Seed of the sample jitter: the same seed gives the same image.
     pub seed: u64,
-    /// Exposure correction in stops (EV): linear radiance is multiplied by
-    /// `2^exposure` before it is stored, so every output format, the
-    /// floating-point TIFF included, sees the scaled values.
-    pub exposure: f64,
+    /// How radiance is scaled before it is stored.
+    pub exposure: Exposure,
+    /// How light is computed.
+    pub integrator: IntegratorKind,
 }
 
 impl Default for RenderOptions {
@@ -91,7 +96,8 @@ impl Default for RenderOptions {
             threads: None,
             samples: None,
             seed: 0,
-            exposure: 0.0,
+            exposure: Exposure::default(),
+            integrator: IntegratorKind::default(),
         }
     }
 }
@@ -106,10 +112,11 @@ impl RenderOptions {
                 "samples must be from 1 to {MAX_SAMPLES}, not {samples}"
             )));
         }
-        if !(self.exposure.is_finite() && self.exposure.abs() <= MAX_EXPOSURE) {
+        if let Some(ev) = self.exposure.given_stops()
+            && !(ev.is_finite() && ev.abs() <= MAX_EXPOSURE)
+        {
             return Err(RenderError::InvalidOption(format!(
-                "exposure must be a number of stops from -{MAX_EXPOSURE} to {MAX_EXPOSURE}, not {}",
-                self.exposure
+                "exposure must be a number of stops from -{MAX_EXPOSURE} to {MAX_EXPOSURE}, not {ev}"
             )));
         }
         if let Some(threads) = self.threads
@@ -143,6 +150,15 @@ pub struct Rendered {
     pub image: Image,
     /// Counters.
     pub stats: RenderStats,
+    /// The stops applied by an automatic exposure ([`Exposure::Auto`] or
+    /// [`Exposure::AutoKept`]); `None` for fixed stops.
+    pub auto_exposure: Option<f64>,
+}
+
+/// The canonical frame of `camera`, or the error a render reports for a
+/// camera whose view and up directions are degenerate.
+pub fn canonical_frame(camera: &Camera) -> Result<CanonicalFrame, RenderError> {
+    CanonicalFrame::of(camera).ok_or(RenderError::DegenerateCamera)
 }
 
 /// Render a scene. `progress` is called with the number of rows finished so
@@ -199,8 +215,8 @@ struct RenderJob<'a> {
     height: u32,
     sampler: Sampler,
     scale: f64,
-    tracer: Tracer<'a>,
-    background: Color,
+    integrator: Box<dyn Integrator + 'a>,
+    background: Rgb,
 }
 
 impl RenderJob<'_> {
@@ -211,13 +227,13 @@ impl RenderJob<'_> {
         sample: Sample,
         stream: &mut SampleStream,
         stats: &mut TraceStats,
-    ) -> (Color, bool) {
+    ) -> (Rgb, bool) {
         match sample {
             Sample::Ray(dir) => {
                 let before = stats.failures;
-                let c =
-                    self.tracer
-                        .primary_sampled(&Ray::from_origin_unchecked(dir), stream, stats);
+                let c = self
+                    .integrator
+                    .radiance(&Ray::from_origin_unchecked(dir), stream, stats);
                 (c, stats.failures > before)
             }
             Sample::Outside => (self.background, false),
@@ -238,7 +254,7 @@ impl RenderJob<'_> {
         let mut nodes = NodeCache::default();
         let mut failed_pixels = 0;
         for (i, pixel) in columns.zip(out) {
-            let mut sum = Color::default();
+            let mut sum = Rgb::default();
             let mut failed = false;
             for k in 0..self.sampler.count() {
                 let (ox, oy) = self.sampler.offset(i, j, k);
@@ -255,7 +271,7 @@ impl RenderJob<'_> {
                 failed |= f;
             }
             let c = sum * (self.scale / f64::from(self.sampler.count()));
-            let px = c.0.map(|v| v as f32);
+            let px = c.channels().map(|v| v as f32);
             // Exposure or f32 conversion can overflow a finite radiance.
             let px = if px.iter().all(|v| v.is_finite()) {
                 px
@@ -282,7 +298,7 @@ impl RenderJob<'_> {
         sy: f64,
         nodes: &mut NodeCache,
         stats: &mut TraceStats,
-    ) -> (Color, bool) {
+    ) -> (Rgb, bool) {
         let (u, v) = (self.window.width * sx, self.window.height * sy);
         let r2 = u * u + v * v;
         if !(r2 < 1.0) {
@@ -300,7 +316,7 @@ impl RenderJob<'_> {
         let (fa, fb) = (a / da - 0.5, b / db - 0.5);
         let (ia, ib) = (fa.floor(), fb.floor());
         let (ta, tb) = (fa - ia, fb - ib);
-        let mut sum = Color::default();
+        let mut sum = Rgb::default();
         let mut failed = false;
         for (di, dk, weight) in [
             (0.0, 0.0, (1.0 - ta) * (1.0 - tb)),
@@ -346,7 +362,7 @@ fn view_window(
     let Some(fov) = scene.settings.fov else {
         return Ok(scene.settings.window);
     };
-    hscene_lang::view::fov_window(fov, net, resolution, view_distance).map_err(|e| {
+    hscene_ir::view::fov_window(fov, net, resolution, view_distance).map_err(|e| {
         RenderError::InvalidOption(match e {
             FovError::OutOfRange => format!("fov must be between 0 and 180 degrees, not {fov}"),
             FovError::BeyondViewPlane(max) => format!(
@@ -359,7 +375,7 @@ fn view_window(
 
 /// Net-3 nodes already traced for the current row, by lattice index.
 #[derive(Default)]
-struct NodeCache(HashMap<(i64, i64), (Color, bool)>);
+struct NodeCache(HashMap<(i64, i64), (Rgb, bool)>);
 
 fn render_in_pool(
     scene: &Scene,
@@ -367,7 +383,7 @@ fn render_in_pool(
     region: Option<Region>,
     progress: &(dyn Fn(u32) + Sync),
 ) -> Result<Rendered, RenderError> {
-    let camera = CanonicalCamera::new(&scene.camera)?;
+    let camera = canonical_frame(&scene.camera)?;
     let net = options.net.unwrap_or(scene.settings.net);
     let resolution = options.resolution.unwrap_or(scene.settings.resolution);
     let (width, height) = (resolution.width(), resolution.height());
@@ -405,9 +421,9 @@ fn render_in_pool(
                 .clamp(1, MAX_SAMPLES),
             options.seed,
         ),
-        scale: options.exposure.exp2(),
-        tracer: Tracer::new(&prepared),
-        background: Color::from(prepared.background),
+        scale: options.exposure.render_scale(),
+        integrator: options.integrator.build(&prepared),
+        background: prepared.background,
     };
 
     let done = std::sync::atomic::AtomicU32::new(0);
@@ -434,8 +450,11 @@ fn render_in_pool(
         cut_trees: traced.cut_trees,
         numeric_failures: failed,
     };
+    let mut image = Image::from_pixels(region.width, region.height, pixels);
+    let auto_exposure = options.exposure.finish(&mut image);
     Ok(Rendered {
-        image: Image::from_pixels(region.width, region.height, pixels),
+        image,
         stats,
+        auto_exposure,
     })
 }

@@ -3,8 +3,8 @@
 
 use hgeom::glam::DVec3;
 use hgeom::mobius::add_raw;
-use hscene_lang::ir::{Net, Window};
-use hscene_lang::view::PixelFootprint;
+use hscene_ir::view::PixelFootprint;
+use hscene_ir::{Net, Window};
 
 /// Where a sample of the screen looks.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -113,7 +113,7 @@ impl PixelNet {
 /// the middle and the corners of the picture (nets other than 0 spread
 /// their pixels unevenly), and for net 0 (a flat image plane on the +z
 /// axis) a lower bound of that angle at the middle, from which each ray's
-/// own follows (`hscene_lang::view::PixelFootprint`). `None` if no two
+/// own follows (`hscene_ir::view::PixelFootprint`). `None` if no two
 /// neighbours both see the scene. Honeycombs are walked to where their
 /// cells shrink below a pixel (`ir::Shape::for_footprint`).
 pub fn pixel_footprint(net: &PixelNet, width: u32, height: u32) -> Option<PixelFootprint> {

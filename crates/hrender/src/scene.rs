@@ -3,18 +3,21 @@
 //! and one hierarchy of Klein-model boxes over every bounded surface of every
 //! object ([`crate::accel`]), so a ray pays the exact intersection only for
 //! what it may actually meet.
+//!
+//! Its queries are geometric only: the nearest hit along a ray, and what a
+//! geodesic segment passes through. How light is carried (which materials a
+//! shadow ray passes, and how much) is each integrator's policy, passed in.
 
 use hgeom::Shape as Surface;
 use hgeom::glam::{DVec3, DVec4};
 use hgeom::{Hit, Isometry, KleinBox, Point, Ray};
-use hscene_lang::ir::{self, Fog, Material, PartMaterials, Rgb, Scene, Surfaces};
-use hscene_lang::view::PixelFootprint;
+use hscene_ir::view::{CanonicalFrame, PixelFootprint};
+use hscene_ir::{self as ir, Fog, Material, PartMaterials, Rgb, Scene, Surfaces};
 
 use rayon::prelude::*;
 use smallvec::SmallVec;
 
 use crate::accel::{Accel, Leaf, Step};
-use crate::camera::CanonicalCamera;
 use crate::error::RenderError;
 
 /// An object ready for tracing.
@@ -39,16 +42,20 @@ pub struct PreparedObject {
     pub to_local: Isometry,
 }
 
-/// Shadow rays through an object drawn in several materials stop counting
+/// Rays that leave a surface ignore hits closer than this (hyperbolic
+/// length), so that they do not meet the same surface at their own origin.
+pub const T_MIN: f64 = 1e-9;
+
+/// A segment through an object drawn in several materials stops counting
 /// its crossings here: the light left is below 1/1000 (counted as none) or
-/// the ray has crossed this many of its parts.
+/// the segment has crossed this many of its parts.
 const MIN_TRANSMITTANCE: f64 = 1e-3;
 const MAX_PART_CROSSINGS: u32 = 64;
 
 /// How far past a part's crossing the next one is looked for: the hit was
 /// on a wall the walk crosses there, and finding it again would count one
-/// face twice. The tracer's own offset for secondary rays.
-const PART_GAP: f64 = crate::tracer::T_MIN;
+/// face twice. The offset of rays leaving a surface.
+const PART_GAP: f64 = T_MIN;
 
 impl std::fmt::Debug for PreparedObject {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -178,11 +185,11 @@ impl PreparedScene {
     }
 
     /// [`PreparedScene::new`] for a camera: everything is moved by the
-    /// camera's [`stages`](CanonicalCamera::stages) in turn, which keeps far
+    /// camera's [`stages`](CanonicalFrame::stages) in turn, which keeps far
     /// scenes exact to the rounding of their input.
     pub fn for_camera(
         scene: &Scene,
-        camera: &CanonicalCamera,
+        camera: &CanonicalFrame,
     ) -> Result<PreparedScene, RenderError> {
         PreparedScene::staged(scene, &camera.stages, None)
     }
@@ -192,7 +199,7 @@ impl PreparedScene {
     /// resolve is not traced ([`ir::Shape::for_footprint`]).
     pub fn for_picture(
         scene: &Scene,
-        camera: &CanonicalCamera,
+        camera: &CanonicalFrame,
         footprint: &PixelFootprint,
     ) -> Result<PreparedScene, RenderError> {
         PreparedScene::staged(scene, &camera.stages, Some(footprint))
@@ -335,20 +342,32 @@ impl PreparedScene {
         }
     }
 
-    /// The fraction of light passing along the ray's arc `(t_min, t_max)`:
-    /// each object met multiplies it by its transmission coefficient, once
-    /// per object; an object drawn in several materials (a honeycomb) by
-    /// that of each part crossed, since its transparent faces are many
-    /// separate sheets. The search ends at the first opaque blocker.
-    /// `tanh_t_max` is `tanh(t_max)`, which the hierarchy culls with.
-    pub fn transmittance(&self, ray: &Ray, t_min: f64, t_max: f64, tanh_t_max: f64) -> f64 {
+    /// The product of `pass(material)` over what the ray's arc
+    /// `(t_min, t_max)` passes through: each object it meets once, by its
+    /// material; an object drawn in several materials (a honeycomb) once per
+    /// part crossed, since its parts are many separate sheets, unless every
+    /// material it can be drawn in is opaque (`transmission == 0`), when one
+    /// any-hit test settles it. The search ends once the product is 0 (a
+    /// blocker: most segments). `tanh_t_max` is `tanh(t_max)`, which the
+    /// hierarchy culls with. `pass` is the integrator's policy: Whitted's
+    /// lets a shadow ray through glass by its transmission; `|_| 0.0` asks
+    /// only whether the segment is clear.
+    #[inline]
+    pub fn transmittance<P: Fn(&Material) -> f64>(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+        tanh_t_max: f64,
+        pass: P,
+    ) -> f64 {
         let mut s = 1.0;
         // The objects already counted: only translucent ones get here, and
-        // a shadow ray meets few of them.
+        // a segment meets few of them.
         let mut counted: SmallVec<[u32; 8]> = SmallVec::new();
         self.accel.any(ray, t_min, tanh_t_max, |i| {
             let r = self.surfaces[i as usize];
-            // Most shadow rays meet only opaque objects: nothing to look up.
+            // Most segments meet only opaque objects: nothing to look up.
             if !counted.is_empty() && counted.contains(&r.object) {
                 return Step::Continue;
             }
@@ -357,10 +376,10 @@ impl PreparedScene {
             if o.parts.is_some() && !o.opaque {
                 // Each part crossed counts: translucent faces are many
                 // separate sheets.
-                s *= self.parts_transmittance(o, surface, ray, t_min, t_max);
+                s *= self.parts_transmittance(o, surface, ray, t_min, t_max, &pass);
             } else if surface.blocks(ray, t_min, t_max) {
                 // PreparedScene::new checked every material index.
-                s *= self.materials[o.material].transmission;
+                s *= pass(&self.materials[o.material]);
             } else {
                 return Step::Continue;
             }
@@ -392,6 +411,7 @@ impl PreparedScene {
         ray: &Ray,
         t_min: f64,
         t_max: f64,
+        pass: &impl Fn(&Material) -> f64,
     ) -> f64 {
         let mut s = 1.0;
         let mut from = t_min;
@@ -400,7 +420,7 @@ impl PreparedScene {
                 return s;
             };
             // PreparedScene::new checked every material index of the parts.
-            s *= self.materials[o.material_of(hit.part)].transmission;
+            s *= pass(&self.materials[o.material_of(hit.part)]);
             if s < MIN_TRANSMITTANCE {
                 return 0.0;
             }
@@ -476,6 +496,11 @@ mod tests {
         Point::from_coords(DVec3::new(x, y, z)).unwrap()
     }
 
+    /// Whitted's policy for shadow rays: glass passes its transmission.
+    fn by_transmission(m: &Material) -> f64 {
+        m.transmission
+    }
+
     /// A plane given by a bare normal 17 from the eye cannot be resolved in
     /// f64 (its `<N,N>` rounds at `eps e^34 / 4 ~ 3e-2`; at 25 the bare
     /// normal is not even spacelike): the scene is refused, not drawn
@@ -541,8 +566,9 @@ mod tests {
             };
             let ray = Ray::from_ball_unchecked(&start, dir);
             for t_max in [0.2, 1.0, 4.0] {
-                let got = prepared.transmittance(&ray, 1e-9, t_max, t_max.tanh());
-                let want = prepared.parts_transmittance(o, surface, &ray, 1e-9, t_max);
+                let got = prepared.transmittance(&ray, 1e-9, t_max, t_max.tanh(), by_transmission);
+                let want =
+                    prepared.parts_transmittance(o, surface, &ray, 1e-9, t_max, &by_transmission);
                 assert_eq!(got, want, "ray {k}, t_max {t_max}");
                 if got == 0.0 {
                     blocked += 1;
@@ -602,7 +628,7 @@ mod tests {
                 .filter(|o| o.surfaces.iter().any(|x| x.blocks(&ray, 1e-9, t_max)))
                 .map(|o| prepared.materials[o.material].transmission)
                 .product();
-            let got = prepared.transmittance(&ray, 1e-9, t_max, t_max.tanh());
+            let got = prepared.transmittance(&ray, 1e-9, t_max, t_max.tanh(), by_transmission);
             assert_eq!(got, want);
             assert_eq!(got, if with_sphere { 0.125 } else { 0.5 });
         }

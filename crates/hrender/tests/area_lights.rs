@@ -6,7 +6,7 @@
 use hgeom::HPlane;
 use hgeom::glam::DVec3;
 use hrender::RenderOptions;
-use hscene_lang::ir::{Light, Material, Net, Rgb, Scene, Shape};
+use hscene_ir::{Light, Material, Net, Rgb, Scene, Shape};
 use hscene_test_support::SplitMix64;
 use hscene_test_support::scenes::*;
 

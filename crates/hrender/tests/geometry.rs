@@ -4,7 +4,7 @@
 
 use hgeom::glam::DVec3;
 use hrender::Image;
-use hscene_lang::ir::{Net, Rgb};
+use hscene_ir::{Net, Rgb};
 use hscene_test_support::SplitMix64;
 use hscene_test_support::scenes::*;
 

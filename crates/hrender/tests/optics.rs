@@ -8,7 +8,7 @@
 
 use hgeom::glam::{DVec3, DVec4};
 use hrender::RenderOptions;
-use hscene_lang::ir::{Material, Net, Rgb};
+use hscene_ir::{Material, Net, Rgb};
 use hscene_test_support::scenes::*;
 
 /// A material that only mirrors.
@@ -209,7 +209,7 @@ fn attenuation_is_one_over_the_area_of_the_hyperbolic_sphere() {
             default_camera(0.1),
             vec![white],
             vec![light(at(DVec3::Z, light_at), 1.0)],
-            vec![obj(hscene_lang::ir::Shape::Plane(plane), 0)],
+            vec![obj(hscene_ir::Shape::Plane(plane), 0)],
         );
         let img = draw(&s);
         let r = plane_at - light_at;
@@ -239,7 +239,7 @@ fn shadows_follow_transmission() {
     };
     let centre_pixel = |blocker_trans: Option<f64>| {
         let mut materials = vec![white.clone()];
-        let mut objects = vec![obj(hscene_lang::ir::Shape::Plane(plane), 0)];
+        let mut objects = vec![obj(hscene_ir::Shape::Plane(plane), 0)];
         if let Some(t) = blocker_trans {
             materials.push(Material {
                 transmission: t,
@@ -279,7 +279,7 @@ fn exposure_scales_radiance_by_powers_of_two() {
         let img = draw_with(
             &s,
             &RenderOptions {
-                exposure: ev,
+                exposure: hrender::Exposure::Stops(ev),
                 ..Default::default()
             },
         );
@@ -294,7 +294,7 @@ fn exposure_scales_radiance_by_powers_of_two() {
     let img = draw_with(
         &s,
         &RenderOptions {
-            exposure: 0.5,
+            exposure: hrender::Exposure::Stops(0.5),
             ..Default::default()
         },
     );
@@ -316,7 +316,7 @@ fn prepared_scene_reports_hits_and_misses() {
         vec![],
         vec![obj(sphere(at(DVec3::Z, 1.0), 0.3), 0)],
     );
-    let cam = hrender::CanonicalCamera::new(&s.camera).unwrap();
+    let cam = hrender::canonical_frame(&s.camera).unwrap();
     let prepared = hrender::PreparedScene::new(&s, &cam.to_canonical).unwrap();
     match prepared.nearest(&hgeom::Ray::from_origin_unchecked(DVec3::Z), 1e-9) {
         hrender::Nearest::Hit(hit, 0) => assert!((hit.t - 0.7).abs() < 1e-12),

@@ -9,7 +9,7 @@ use hrender::{
     DisplayTransform, Encoding, Image, PngLevel, RenderOptions, Rendered, SampleDepth, ToneMap,
     render, write_image, write_image_with,
 };
-use hscene_lang::ir::{Net, Rgb, Scene, Shape};
+use hscene_ir::{Net, Rgb, Scene, Shape};
 use hscene_test_support::SplitMix64;
 use hscene_test_support::scenes::*;
 
@@ -104,7 +104,7 @@ fn every_primitive_renders_in_every_net() {
 /// counted (and here there must be none).
 #[test]
 fn hard_configurations_give_finite_pixels() {
-    let glass = hscene_lang::ir::Material {
+    let glass = hscene_ir::Material {
         reflection: 0.3,
         transmission: 0.6,
         refraction: 1.5,
@@ -284,7 +284,7 @@ fn farther_isometries_leave_the_image_unchanged() {
 /// counted, 125 still miss: docs/geometry.md, section 16.5.)
 #[test]
 fn beyond_the_hyperboloid_objects_resolve() {
-    let glass = hscene_lang::ir::Material {
+    let glass = hscene_ir::Material {
         reflection: 0.3,
         transmission: 0.6,
         refraction: 1.5,
@@ -427,11 +427,11 @@ fn bad_options_are_errors() {
             ..Default::default()
         },
         RenderOptions {
-            exposure: f64::NAN,
+            exposure: hrender::Exposure::Stops(f64::NAN),
             ..Default::default()
         },
         RenderOptions {
-            exposure: 1000.0,
+            exposure: hrender::Exposure::Stops(1000.0),
             ..Default::default()
         },
     ] {

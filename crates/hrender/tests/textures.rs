@@ -5,7 +5,7 @@
 use hgeom::glam::{DMat3, DVec3};
 use hgeom::{HPlane, Isometry, from_fermi_coordinates};
 use hrender::Image;
-use hscene_lang::ir::{Material, Net, Rgb, Scene, Shape};
+use hscene_ir::{Material, Net, Rgb, Scene, Shape};
 use hscene_test_support::SplitMix64;
 use hscene_test_support::scenes::*;
 

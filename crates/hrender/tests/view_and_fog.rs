@@ -4,7 +4,7 @@
 //! a far surface and a ray leaving the scene take the fog colour.
 
 use hrender::Image;
-use hscene_lang::ir::Scene;
+use hscene_ir::Scene;
 use hscene_test_support::scenes::{agreement, draw};
 
 fn compile(src: &str) -> Scene {

@@ -17,7 +17,6 @@
 
 pub mod diagnostic;
 pub mod format;
-pub mod ir;
 mod lower;
 pub mod mesh_file;
 mod numbers;
@@ -27,8 +26,13 @@ pub mod source;
 pub mod symbols;
 pub mod syntax;
 pub mod tokens;
-pub mod view;
 pub mod vocabulary;
+
+/// The IR this language compiles to: the `hscene-ir` crate, re-exported so
+/// that a user of the language needs no second dependency.
+pub use hscene_ir as ir;
+/// The view geometry of the IR (`hscene_ir::view`).
+pub use hscene_ir::view;
 
 pub use diagnostic::{Code, Diagnostic, LineIndex, Severity, Span};
 pub use format::{FormatError, format};

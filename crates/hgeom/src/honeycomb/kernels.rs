@@ -18,7 +18,7 @@ use crate::klein_box::plain_max;
 use crate::lorentz;
 use crate::roots::exp_roots_lazy;
 
-use super::domain::MAX_WALLS;
+use super::domain_ray::MAX_WALLS;
 
 /// The inverse of a Lorentz matrix: `J Lᵀ J`.
 pub(super) fn lorentz_inverse(l: DMat4) -> DMat4 {

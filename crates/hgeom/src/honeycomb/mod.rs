@@ -14,16 +14,20 @@
 //! - `walk`: [`RegularHoneycomb`], the honeycomb as one surface traced by
 //!   walking each ray from cell to cell (or through the simplex);
 //!   `domain`: the cell or simplex it walks and the parts inside it;
+//!   `domain_ray`: the ray in one domain and the parts a domain reports;
 //!   `kernels`: the arithmetic of one step; `crossings`: the walls crossed,
 //!   folded into the domain matrix only when it is needed; `walk_record`:
 //!   what a walk reports besides its hit; `view_horizon`: where a ray
-//!   from the eye stops, by the width of its pixel.
+//!   from the eye stops, by the width of its pixel; `picture_horizons`:
+//!   both horizons of a picture set at once.
 
 mod cells;
 mod crossings;
 mod cube435;
 mod domain;
+mod domain_ray;
 mod kernels;
+mod picture_horizons;
 mod schlafli;
 mod simplex;
 mod style;

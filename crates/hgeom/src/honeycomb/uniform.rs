@@ -60,7 +60,7 @@ use glam::DVec4;
 use crate::error::GeomError;
 use crate::lorentz;
 
-use super::domain::{DomainPart, DomainRay};
+use super::domain_ray::{DomainPart, DomainRay};
 use super::kernels::{ball_first_v, ball_normal, tube_normal, tube_roots, walls_through};
 use super::simplex::CoxeterSimplex;
 use super::style::HoneycombStyle;

@@ -104,7 +104,8 @@ use crate::roots::exp_roots_lazy;
 
 use super::cells::{CellSet, Shells};
 use super::crossings::{Crossings, Pending};
-use super::domain::{DomainPart, DomainRay, MAX_WALLS, WalkDomain};
+use super::domain::WalkDomain;
+use super::domain_ray::{DomainPart, DomainRay, MAX_WALLS};
 use super::kernels::{lorentz_inverse, nearest_exit, reflect, renormalise};
 use super::schlafli::Schlafli;
 use super::simplex::CoxeterSimplex;

@@ -12,14 +12,7 @@ use crate::syntax::{Clause, Ident, Section, Value};
 /// Largest accepted image side, to keep allocations sane.
 const MAX_RESOLUTION: u64 = 32_768;
 
-/// Most anti-aliasing samples per pixel a scene may ask for.
-pub const MAX_SAMPLES: u32 = 4096;
-
-/// Most animation frames a scene may declare.
-pub const MAX_FRAMES: u32 = 100_000;
-
-/// Largest accepted pixel count (about 1.6 GB of HDR samples).
-pub const MAX_PIXELS: u64 = 1 << 27;
+pub use hscene_ir::limits::{MAX_FRAMES, MAX_PIXELS, MAX_SAMPLES};
 
 /// What a global key sets.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

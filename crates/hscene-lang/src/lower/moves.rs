@@ -19,8 +19,8 @@ use super::names::{CAMERA, TargetSlot};
 use super::suggest::{MAX_CANDIDATES, closest};
 use super::text::{quote, reference_text, shorten};
 use crate::diagnostic::{Code, Diagnostic};
-use crate::ir::animation::{move_camera, move_object};
 use crate::ir::{Camera, Motion, Track, TrackBase, compose};
+use crate::ir::{move_camera, move_object};
 use crate::syntax::{RefTarget, Reference};
 
 /// A transformation of an `@` target, waiting for its target to exist.

@@ -12,6 +12,7 @@
 
 mod args;
 mod build;
+mod built;
 pub(super) mod figures;
 mod honeycomb;
 pub(super) mod keywords;

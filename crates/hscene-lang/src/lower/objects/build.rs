@@ -6,9 +6,10 @@ use hgeom::{
 };
 
 use super::args::Arg;
+use super::built::Built;
 use super::figures::{self, Figure, FigureError};
 use super::keywords::ObjectKeyword;
-use super::options::{Built, ObjectOptions};
+use super::options::ObjectOptions;
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::Shape;
 use crate::lower::Lowerer;

@@ -11,7 +11,7 @@ use hgeom::{
 };
 
 use super::args::Arg;
-use super::options::Built;
+use super::built::Built;
 use crate::ir::Shape;
 
 /// A predefined figure.

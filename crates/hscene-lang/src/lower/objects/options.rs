@@ -6,6 +6,7 @@
 
 use hgeom::{GeomError, Isometry, Point, Polyhedron, Rings, Rod, Vertex};
 
+use super::built::Built;
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::{MaterialId, Object, Shape};
 use crate::lower::Lowerer;
@@ -411,32 +412,6 @@ impl Lowerer<'_> {
             st.span,
         ));
         self.objects.len() - 1
-    }
-}
-
-/// What a statement built, for [`Lowerer::place`].
-pub(super) enum Built {
-    /// The shapes themselves.
-    Shapes(Vec<Shape>),
-    /// Copies of one cell, one per placement, not built yet: a tessellation
-    /// drawn as edges alone needs only the copies' vertices, and building
-    /// ten thousand cells' faces for that was most of its set-up.
-    Copies {
-        cell: Polyhedron,
-        placements: Vec<Isometry>,
-    },
-}
-
-impl Built {
-    /// The shapes, the copies built as polyhedra.
-    fn into_shapes(self) -> Vec<Shape> {
-        match self {
-            Built::Shapes(shapes) => shapes,
-            Built::Copies { cell, placements } => placements
-                .iter()
-                .map(|p| Shape::Polyhedron(cell.transformed(p)))
-                .collect(),
-        }
     }
 }
 

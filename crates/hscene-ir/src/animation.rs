@@ -1,6 +1,6 @@
 //! Animation compiled once: the transformations of named objects, lights
 //! and the camera, kept as motions that any frame can be asked of
-//! ([`Scene::frame`]) without compiling the scene again.
+//! ([`Scene::frame`](crate::Scene::frame)) without compiling the scene again.
 //!
 //! A target's transformations are applied in statement order, composed into
 //! one isometry and applied once; an animated one (`, animate`) contributes
@@ -10,10 +10,10 @@
 //! motions at that frame's time and applies them to it, exactly as the
 //! lowering of that frame alone would.
 
-use hgeom::glam::DVec3;
 use hgeom::{GeomError, HLine, Isometry, Point, Segment, Vertex};
 
-use super::{Camera, Object, Scene};
+use crate::camera::Camera;
+use crate::object::Object;
 
 /// One transformation of a target, as written.
 #[derive(Clone, Debug, PartialEq)]
@@ -86,14 +86,14 @@ pub fn compose(motions: &[Motion], time: f64) -> Result<Isometry, GeomError> {
 pub enum TrackBase {
     /// The objects one statement declared.
     Objects {
-        /// Their indices in [`Scene::objects`].
+        /// Their indices in [`Scene::objects`](crate::Scene::objects).
         indices: Vec<usize>,
         /// The objects before their transformations, in the same order.
         objects: Vec<Object>,
     },
     /// A light's position (`Scene::lights[index]`).
     Light {
-        /// Index in [`Scene::lights`].
+        /// Index in [`Scene::lights`](crate::Scene::lights).
         index: usize,
         /// The position before its transformations.
         position: Point,
@@ -119,11 +119,11 @@ pub struct Animation {
     /// True when animated transformations act on points (`%P->...,
     /// animate`): what is built from those points changes shape between
     /// frames, so each frame must be compiled from the source
-    /// (`hscene_lang::Options::frame`); [`Scene::frame`] refuses.
+    /// (the scene language compiles such a frame on its own); [`Scene::frame`](crate::Scene::frame) refuses.
     pub moves_points: bool,
 }
 
-/// Why [`Scene::frame`] cannot give a frame.
+/// Why [`Scene::frame`](crate::Scene::frame) cannot give a frame.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum FrameError {
     /// Past the last frame.
@@ -158,95 +158,4 @@ pub fn frame_time(frame: u32, frames: u32) -> f64 {
     } else {
         0.0
     }
-}
-
-impl Scene {
-    /// The scene in animation frame `k` (0-based, below `settings.frames`),
-    /// from this compiled scene, whichever frame it was compiled for: the
-    /// tracks' motions at frame `k`'s time applied to their targets.
-    pub fn frame(&self, k: u32) -> Result<Scene, FrameError> {
-        let frames = self.settings.frames;
-        if k >= frames {
-            return Err(FrameError::PastEnd {
-                frame: k,
-                last: frames.saturating_sub(1),
-            });
-        }
-        if self.animation.moves_points && k != self.frame {
-            return Err(FrameError::NeedsSource { frame: k });
-        }
-        let time = frame_time(k, frames);
-        let mut scene = self.clone();
-        scene.frame = k;
-        for track in &self.animation.tracks {
-            let out_of_range = |what: String| FrameError::OutOfRange { frame: k, what };
-            let base_name = match &track.base {
-                TrackBase::Objects { indices, .. } => {
-                    format!("object {}", indices.first().map_or(0, |i| i + 1))
-                }
-                TrackBase::Light { index, .. } => format!("light {}", index + 1),
-                TrackBase::Camera(_) => "the camera".to_string(),
-            };
-            let iso = compose(&track.motions, time).map_err(|_| out_of_range(base_name.clone()))?;
-            match &track.base {
-                TrackBase::Objects { indices, objects } => {
-                    for (&i, base) in indices.iter().zip(objects) {
-                        let moved = move_object(base, &iso)
-                            .ok_or_else(|| out_of_range(format!("object {}", i + 1)))?;
-                        scene.objects[i] = moved;
-                    }
-                }
-                TrackBase::Light { index, position } => {
-                    scene.lights[*index].position = iso
-                        .checked_apply(position)
-                        .map_err(|_| out_of_range(base_name))?;
-                }
-                TrackBase::Camera(base) => {
-                    let mut camera = *base;
-                    move_camera(&mut camera, &iso).ok_or_else(|| out_of_range(base_name))?;
-                    scene.camera = camera;
-                }
-            }
-        }
-        Ok(scene)
-    }
-}
-
-/// The object moved by `iso`: its shape moved, its placement composed;
-/// `None` if the shape leaves what f64 can represent.
-pub(crate) fn move_object(object: &Object, iso: &Isometry) -> Option<Object> {
-    Some(Object {
-        shape: object.shape.moved(iso)?,
-        material: object.material,
-        name: object.name.clone(),
-        placement: iso.compose(&object.placement),
-    })
-}
-
-/// Moves the eye, the target and the up point. A camera with the default
-/// up direction (`+y` at the eye) first gets an explicit up point on the
-/// geodesic leaving the eye in that direction, so that the direction turns
-/// with the camera. `None` if a point leaves what f64 can represent.
-pub(crate) fn move_camera(cam: &mut Camera, iso: &Isometry) -> Option<()> {
-    if cam.up.is_none() {
-        cam.up = default_up_point(&cam.eye);
-    }
-    let eye = iso.checked_apply(&cam.eye).ok()?;
-    let target = iso.checked_apply(&cam.target).ok()?;
-    let up = match &cam.up {
-        Some(u) => Some(iso.checked_apply(u).ok()?),
-        None => None,
-    };
-    *cam = Camera { eye, target, up };
-    Some(())
-}
-
-/// A point towards which the default up direction (`+y` at the eye) points.
-fn default_up_point(eye: &Point) -> Option<Point> {
-    let line = HLine::from_point_direction(eye, DVec3::Y).ok()?;
-    // Any point on the geodesic gives the same direction; a short step stays
-    // representable even for an eye far out.
-    [1.0, 0.1, 1e-3]
-        .into_iter()
-        .find_map(|s| line.point_at(s).ok())
 }

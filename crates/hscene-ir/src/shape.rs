@@ -12,7 +12,7 @@ use std::sync::Arc;
 
 use hgeom::glam::{DVec3, DVec4};
 
-use super::honeycomb::{Honeycomb, PartMaterials};
+use crate::honeycomb::{Honeycomb, PartMaterials};
 use crate::view::PixelFootprint;
 use hgeom::{
     ConvexPolygon, HCylinder, HPlane, HSphere, Horosphere, Isometry, Point, Polyhedron, Rod,
@@ -309,7 +309,7 @@ impl Shape {
     /// needs no move, its ball distance being good anywhere). Only closed
     /// shapes have an inside: polygons, planes and meshes (whose closedness
     /// is not checked) never contain a point.
-    pub(crate) fn encloses(&self, point: &Point, to_origin: &Isometry) -> bool {
+    pub fn encloses(&self, point: &Point, to_origin: &Isometry) -> bool {
         let here = DVec4::W;
         match self {
             Shape::Sphere(s) => point.distance(s.center()) < s.radius(),
@@ -351,7 +351,7 @@ impl Shape {
     /// in that point's frame (`to_origin` takes it to the origin): there the
     /// plane is the flat one `x . view = 0`, and a point's side is the sign
     /// of `x . view`, its signed distance `asinh(2 x.view / g)`.
-    pub(crate) fn lies_behind(&self, to_origin: &Isometry, view: DVec3) -> bool {
+    pub fn lies_behind(&self, to_origin: &Isometry, view: DVec3) -> bool {
         let sinh_ahead = |p: &Point| {
             let q = to_origin.apply(p);
             2.0 * q.coords().dot(view) / q.gap()

@@ -10,14 +10,14 @@
 //! square at the centre. `docs/rendering.md#field-of-view` derives the
 //! formulas below.
 
-use hgeom::Isometry;
 use hgeom::glam::{DMat3, DVec3};
+use hgeom::{Isometry, Point};
 
-use crate::ir::{Camera, Net, Resolution, Window};
+use crate::camera::{Camera, Net, Resolution, Window};
 
 /// How finely a picture samples the directions at the eye (the origin of
 /// the canonical frame): what decides how far a honeycomb is walked
-/// ([`crate::ir::Shape::for_footprint`]).
+/// ([`crate::Shape::for_footprint`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PixelFootprint {
     /// The smallest angle between the primary rays of two neighbouring
@@ -47,6 +47,25 @@ pub struct CanonicalFrame {
     /// Euclidean distance `f = tanh(d/2)` from the origin to the view plane
     /// in the canonical frame, `d` the hyperbolic eye-target distance.
     pub view_distance: f64,
+}
+
+impl CanonicalFrame {
+    /// The frame of `camera` ([`canonical_frame`]); `None` when its view
+    /// and up directions are degenerate.
+    pub fn of(camera: &Camera) -> Option<CanonicalFrame> {
+        canonical_frame(camera)
+    }
+
+    /// A point's image in the canonical frame, stage by stage (see
+    /// [`CanonicalFrame::stages`]).
+    pub fn apply(&self, p: &Point) -> Point {
+        self.stages.iter().fold(*p, |p, iso| iso.apply(&p))
+    }
+
+    /// The view target's image in the canonical frame, on the +z axis.
+    pub fn target(&self, camera: &Camera) -> Point {
+        self.apply(&camera.target)
+    }
 }
 
 /// The camera's [`CanonicalFrame`]. First the transvection taking the eye
@@ -149,6 +168,49 @@ pub fn fov_window(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn p(x: f64, y: f64, z: f64) -> Point {
+        Point::from_coords(DVec3::new(x, y, z)).unwrap()
+    }
+
+    #[test]
+    fn default_camera_is_the_identity() {
+        let cam = Camera {
+            eye: Point::ORIGIN,
+            target: p(0.0, 0.0, 0.1),
+            up: None,
+        };
+        let c = CanonicalFrame::of(&cam).unwrap();
+        let q = p(0.3, -0.2, 0.4);
+        assert!((c.to_canonical.apply(&q).coords() - q.coords()).length() < 1e-15);
+        assert!((c.view_distance - 0.1).abs() < 1e-15);
+    }
+
+    #[test]
+    fn moved_camera_sees_target_on_axis_and_up_upwards() {
+        let cam = Camera {
+            eye: p(0.2, 0.1, -0.3),
+            target: p(-0.1, 0.4, 0.2),
+            up: Some(p(0.2, 0.6, -0.3)),
+        };
+        let c = CanonicalFrame::of(&cam).unwrap();
+        assert!(c.to_canonical.apply(&cam.eye).coords().length() < 1e-15);
+        let t = c.target(&cam).coords();
+        assert!(t.x.abs() < 1e-14 && t.y.abs() < 1e-14 && t.z > 0.0);
+        let u = c.to_canonical.apply(&cam.up.unwrap()).coords();
+        assert!(u.y > 0.0 && u.x.abs() < 1e-14);
+    }
+
+    #[test]
+    fn a_degenerate_camera_has_no_frame() {
+        // Up lies on the line of sight.
+        let cam = Camera {
+            eye: Point::ORIGIN,
+            target: p(0.0, 0.0, 0.3),
+            up: Some(p(0.0, 0.0, 0.5)),
+        };
+        assert!(CanonicalFrame::of(&cam).is_none());
+    }
 
     const SQUARE: Resolution = Resolution::new(100, 100).unwrap();
 

@@ -10,7 +10,7 @@
 
 use hgeom::{HoneycombPart, RegularHoneycomb, decode_honeycomb_part};
 
-use super::MaterialId;
+use crate::material::MaterialId;
 
 /// A regular honeycomb of hyperbolic space (`Honeycomb {p,q,r}, #M;`).
 #[derive(Clone, Debug)]

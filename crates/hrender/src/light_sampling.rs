@@ -1,0 +1,181 @@
+//! Sampling points on lights: a point light is its own sample; a spherical
+//! area light is sampled uniformly in area over the cap a shading point
+//! can see (docs/rendering.md has the derivation).
+
+use std::f64::consts::TAU;
+
+use hgeom::glam::DVec4;
+use hgeom::lorentz;
+
+use crate::sampling::SampleStream;
+use crate::scene::PreparedLight;
+
+/// The golden ratio's fractional part: successive area-light samples turn
+/// by this share of a full turn about the axis towards the shading point.
+const GOLDEN_TURN: f64 = 0.618_033_988_749_894_8;
+
+/// The part of a spherical area light (an h-sphere of radius `r` about the
+/// light's position, each surface element of which emits its share of the
+/// light's power uniformly into its outer half-space) that a point can
+/// see: the cap of angle `phi` at the centre with `cos phi >= tanh r /
+/// tanh D`, `D` the distance of the centre. Its [`points`] are uniform in
+/// area on the cap, stratified in `cos phi` and turned by the golden angle;
+/// each lit like a point light and averaged, and weighted by the cap's
+/// share of the light's power, `1 - tanh r / tanh D` ([`weight`]), they
+/// give an unbiased estimate that lights a surface facing the light with
+/// exactly the point light's `1/(4 pi sinh^2 D)`, and tends to the point
+/// light as `r -> 0`.
+///
+/// [`points`]: VisibleCap::point
+/// [`weight`]: VisibleCap::weight
+pub struct VisibleCap {
+    centre: DVec4,
+    /// The unit tangent at the centre towards the shading point.
+    towards: DVec4,
+    /// With `towards`, an orthonormal basis of the tangent space there.
+    basis: (DVec4, DVec4),
+    sinh_r: f64,
+    cosh_r: f64,
+    /// `1 - tanh r / tanh D`.
+    cap: f64,
+    count: f64,
+    /// The turn of the first sample about `towards`, in turns.
+    turn: f64,
+}
+
+impl VisibleCap {
+    /// The cap of `light` (radius above 0) that `p` sees, drawing the
+    /// turn of its samples from `stream`; `None` when `p` is on or inside
+    /// the sphere (the emission faces outward) or at its centre.
+    pub fn of(light: &PreparedLight, p: DVec4, stream: &mut SampleStream) -> Option<VisibleCap> {
+        let centre = light.position;
+        let r = light.radius;
+        // At the centre itself there is no direction: the point is inside.
+        let (towards, dist) = lorentz::direction_towards(centre, p)?;
+        if !(dist > r) {
+            return None;
+        }
+        // 1 - tanh r / tanh D, written without cancellation.
+        let cap = (dist - r).sinh() / (dist.sinh() * r.cosh());
+        let basis = tangent_basis(centre, towards);
+        Some(VisibleCap {
+            centre,
+            towards,
+            basis,
+            sinh_r: r.sinh(),
+            cosh_r: r.cosh(),
+            cap,
+            count: f64::from(light.samples),
+            turn: stream.next_unit(),
+        })
+    }
+
+    /// The `k`-th of the light's samples (from 0), its jitter within its
+    /// stratum drawn from `stream`: a point on the hyperboloid.
+    #[inline]
+    pub fn point(&self, k: u32, stream: &mut SampleStream) -> DVec4 {
+        let k = f64::from(k);
+        // 1 - cos(phi), uniform over the cap (area on the sphere is
+        // proportional to 1 - cos(phi)), one sample per stratum.
+        let h = (k + stream.next_unit()) / self.count * self.cap;
+        let (cos_phi, sin_phi) = (1.0 - h, (h * (2.0 - h)).sqrt());
+        let psi = TAU * (self.turn + k * GOLDEN_TURN).fract();
+        let (b1, b2) = self.basis;
+        let u = self.towards * cos_phi + (b1 * psi.cos() + b2 * psi.sin()) * sin_phi;
+        self.cosh_r * self.centre + self.sinh_r * u
+    }
+
+    /// The weight of the sum of what the samples give: the cap's share of
+    /// the light's power over the number of samples.
+    #[inline]
+    pub fn weight(&self) -> f64 {
+        self.cap / self.count
+    }
+}
+
+/// Two unit tangents at `c` that complete the unit tangent `e` to a Lorentz
+/// orthonormal basis of the tangent space. The first is a coordinate axis
+/// projected into the tangent space and away from `e` (the axis that keeps
+/// most of its length, so the projection never degenerates); the second is
+/// orthogonal to `c`, `e` and the first.
+fn tangent_basis(c: DVec4, e: DVec4) -> (DVec4, DVec4) {
+    let project = |a: DVec4| {
+        let v = a + lorentz::dot(c, a) * c;
+        v - lorentz::dot(e, v) * e
+    };
+    let mut b1 = project(DVec4::X);
+    for a in [DVec4::Y, DVec4::Z] {
+        let v = project(a);
+        if lorentz::dot(v, v) > lorentz::dot(b1, b1) {
+            b1 = v;
+        }
+    }
+    let b1 = b1 / lorentz::norm(b1);
+    let b2 = lorentz::orthogonal_complement(c, e, b1);
+    (b1, b2 / lorentz::norm(b2))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use hgeom::Point;
+    use hgeom::glam::DVec3;
+
+    /// The tangent basis is Lorentz orthonormal and tangent, also for a
+    /// centre away from the origin and every direction.
+    #[test]
+    fn tangent_basis_is_orthonormal() {
+        let centre = Point::at_distance_from_origin(DVec3::new(0.3, -1.0, 0.4), 2.5)
+            .unwrap()
+            .to_hyperboloid();
+        for e3 in [DVec3::X, DVec3::Y, DVec3::Z, DVec3::new(1.0, 2.0, -0.5)] {
+            let e =
+                hgeom::ray::hyperboloid_direction(&Point::from_hyperboloid(centre).unwrap(), e3);
+            let (b1, b2) = tangent_basis(centre, e);
+            for (a, b, expect) in [
+                (b1, b1, 1.0),
+                (b2, b2, 1.0),
+                (b1, b2, 0.0),
+                (b1, e, 0.0),
+                (b2, e, 0.0),
+                (b1, centre, 0.0),
+                (b2, centre, 0.0),
+            ] {
+                assert!((lorentz::dot(a, b) - expect).abs() < 1e-12, "{e3}");
+            }
+        }
+    }
+
+    /// Every sample lies on the light's sphere, on the cap the shading
+    /// point sees; a point inside the sphere sees none.
+    #[test]
+    fn samples_lie_on_the_visible_cap() {
+        let centre = Point::at_distance_from_origin(DVec3::new(0.2, 0.5, -0.1), 1.5).unwrap();
+        let light = PreparedLight {
+            position: centre.to_hyperboloid(),
+            diffuse: hscene_ir::Rgb::BLACK,
+            specular: hscene_ir::Rgb::BLACK,
+            radius: 0.3,
+            samples: 16,
+        };
+        let p = Point::ORIGIN.to_hyperboloid();
+        let mut stream = SampleStream::new(7);
+        let cap = VisibleCap::of(&light, p, &mut stream).expect("the origin is outside");
+        let d = centre.distance_from_origin();
+        for k in 0..16 {
+            let q = cap.point(k, &mut stream);
+            let r = (-lorentz::dot(q, light.position)).acosh();
+            assert!((r - 0.3).abs() < 1e-12);
+            // On the cap: cos phi >= tanh r / tanh D, phi the angle at the
+            // centre between the sample and the shading point.
+            let (towards_p, _) = lorentz::direction_towards(light.position, p).unwrap();
+            let (towards_q, _) = lorentz::direction_towards(light.position, q).unwrap();
+            let cos_phi = lorentz::dot(towards_p, towards_q);
+            assert!(cos_phi >= 0.3f64.tanh() / d.tanh() - 1e-12);
+        }
+        let inside = Point::at_distance_from_origin(DVec3::new(0.2, 0.5, -0.1), 1.4)
+            .unwrap()
+            .to_hyperboloid();
+        assert!(VisibleCap::of(&light, inside, &mut stream).is_none());
+    }
+}

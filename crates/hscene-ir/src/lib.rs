@@ -1,0 +1,36 @@
+//! # hscene-ir — the compiled scene
+//!
+//! What a scene is once its text is gone: hyperbolic data in Poincaré-ball
+//! coordinates, every reference resolved, every transformation applied,
+//! every default filled in. The scene language (`hscene-lang`) compiles
+//! text to it; the renderer (`hrender`) traces it; neither needs the other.
+//!
+//! Also here, because both sides need them: the view geometry ([`view`]:
+//! the camera's canonical frame, the window a field of view gives each
+//! pixel net, a picture's pixel footprint), the limits every front end and
+//! renderer agree on ([`limits`]), and the one colour type ([`Rgb`]).
+//!
+//! Invariants: the IR carries no source text and no spans; its types carry
+//! their invariants (a [`Resolution`] is never zero, a [`MaterialId`] names
+//! a material of its scene).
+
+mod animation;
+mod camera;
+mod color;
+mod frame;
+mod honeycomb;
+pub mod limits;
+mod material;
+mod object;
+mod scene;
+mod shape;
+pub mod view;
+
+pub use animation::{Animation, FrameError, Motion, Track, TrackBase, compose, frame_time};
+pub use camera::{Camera, Net, Resolution, Window, move_camera};
+pub use color::Rgb;
+pub use honeycomb::{Honeycomb, PartMaterials};
+pub use material::{Material, MaterialId, Pattern, Texture};
+pub use object::{Object, move_object};
+pub use scene::{Fog, Light, PointRecord, Scene, Settings};
+pub use shape::{BoxedSurface, MESH_TRIANGLES_PER_PRIMITIVE, Shape, Surfaces, mesh_budget_cost};
