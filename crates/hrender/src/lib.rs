@@ -66,8 +66,10 @@ pub use hscene_ir::limits::MAX_SAMPLES;
 /// can use, far below what exhausts the system's thread limit.
 pub const MAX_THREADS: usize = 1024;
 
-/// Overrides of the scene's own settings, and execution options.
-#[derive(Clone, Debug)]
+/// Overrides of the scene's own settings, and execution options. The
+/// default overrides nothing: the scene as it is, on every core, seed 0,
+/// no exposure correction, the Whitted integrator.
+#[derive(Clone, Debug, Default)]
 pub struct RenderOptions {
     /// Use this pixel net instead of the scene's `net_type`.
     pub net: Option<Net>,
@@ -86,20 +88,6 @@ pub struct RenderOptions {
     pub exposure: Exposure,
     /// How light is computed.
     pub integrator: IntegratorKind,
-}
-
-impl Default for RenderOptions {
-    fn default() -> Self {
-        RenderOptions {
-            net: None,
-            resolution: None,
-            threads: None,
-            samples: None,
-            seed: 0,
-            exposure: Exposure::default(),
-            integrator: IntegratorKind::default(),
-        }
-    }
 }
 
 impl RenderOptions {
