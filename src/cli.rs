@@ -99,11 +99,26 @@ pub struct RenderArgs {
     /// Replace an existing output even when it is read-only.
     #[arg(long)]
     pub force: bool,
-    /// Samples per pixel for anti-aliasing, overriding the scene's
-    /// `samples` (default 1 = the pixel centre; a square number is
-    /// stratified, any other jittered; box-filtered).
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=i64::from(hrender::MAX_SAMPLES)))]
-    pub samples: Option<u32>,
+    /// Samples per pixel, overriding the scene's `samples` (default 1 = the
+    /// pixel centre; a square number is stratified, any other jittered;
+    /// box-filtered). `auto` samples each pixel until its noise (relative
+    /// standard error) is at most `--noise`.
+    #[arg(long, value_name = "N|auto", value_parser = parse_samples)]
+    pub samples: Option<SamplesArg>,
+    /// With `--samples auto`: the relative standard error each pixel stops
+    /// at (default 0.01, one per cent).
+    #[arg(long, value_name = "FRACTION")]
+    pub noise: Option<f64>,
+    /// With `--samples auto`: the most samples a pixel takes, a multiple of
+    /// 16 (default 1024).
+    #[arg(long, value_name = "N")]
+    pub max_samples: Option<u32>,
+    /// How light is computed, overriding the scene's `integrator`: whitted
+    /// (the thesis's recursive ray tracing) or path (an unbiased path
+    /// tracer: light bouncing between surfaces, emissive surfaces, glass
+    /// with Fresnel).
+    #[arg(long, value_name = "NAME", value_parser = parse_integrator)]
+    pub integrator: Option<hrender::IntegratorKind>,
     /// Seed of the sample jitter; the same seed gives the same image.
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
@@ -172,6 +187,37 @@ pub enum ToneMapArg {
     Reinhard,
     /// The ACES filmic curve (Narkowicz's fit).
     Aces,
+}
+
+/// `--samples`: a count, or adaptive.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SamplesArg {
+    /// This many per pixel.
+    Count(u32),
+    /// Until the noise target.
+    Auto,
+}
+
+fn parse_samples(s: &str) -> Result<SamplesArg, String> {
+    if s.trim() == "auto" {
+        return Ok(SamplesArg::Auto);
+    }
+    let max = hrender::MAX_SAMPLES;
+    match s.trim().parse::<u32>() {
+        Ok(n) if (1..=max).contains(&n) => Ok(SamplesArg::Count(n)),
+        _ => Err(format!(
+            "expected a number of samples from 1 to {max}, or `auto`, not `{s}`"
+        )),
+    }
+}
+
+fn parse_integrator(s: &str) -> Result<hrender::IntegratorKind, String> {
+    hrender::IntegratorKind::from_name(s.trim()).ok_or_else(|| {
+        format!(
+            "unknown integrator `{s}`: integrators are {}",
+            hrender::IntegratorKind::names()
+        )
+    })
 }
 
 /// `--exposure`: fixed stops or chosen from the image.

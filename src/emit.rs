@@ -94,6 +94,7 @@ fn header(path: &Path, scene: &Scene) -> Value {
             "samples": s.samples,
             "frames": s.frames,
             "fov": s.fov,
+            "integrator": s.integrator.name(),
             "fog": s.fog.map(|f| json!({
                 "color": rgb(f.color),
                 "distance": f.distance,
@@ -178,6 +179,7 @@ fn material(i: usize, m: &Material) -> Value {
         "trans": m.transmission,
         "shininess": m.shininess,
         "refraction": m.refraction,
+        "emission": rgb(m.emission),
         "checker": m.texture.map(|t| json!({
             "size": t.scale,
             "diffuse": rgb(t.diffuse),

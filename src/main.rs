@@ -16,17 +16,18 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use clap::Parser;
-use hrender::{
-    DisplayTransform, Encoding, Exposure, IntegratorKind, RenderOptions, SampleDepth, ToneMap,
-};
+use hrender::{DisplayTransform, Encoding, Exposure, RenderOptions, SampleDepth, ToneMap};
 use hscene_ir::{Net, Resolution};
 
 use exit::{EXIT_SCENE_ERRORS, EXIT_USAGE_OR_IO, print_bytes};
 
 use cli::{
     CheckArgs, Cli, ColorChoice, Command, Depth, Emit, EncodingArg, ExposureArg, Format,
-    RenderArgs, ToneMapArg,
+    RenderArgs, SamplesArg, ToneMapArg,
 };
+
+/// The relative standard error `--samples auto` stops at without `--noise`.
+const DEFAULT_NOISE: f64 = 0.01;
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
@@ -200,6 +201,12 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
             return ExitCode::from(EXIT_USAGE_OR_IO);
         }
     };
+    if args.samples != Some(SamplesArg::Auto)
+        && (args.noise.is_some() || args.max_samples.is_some())
+    {
+        eprintln!("error: --noise and --max-samples go with --samples auto");
+        return ExitCode::from(EXIT_USAGE_OR_IO);
+    }
     // Refuse a bad output before spending time on the scene.
     if let Err(code) = check_outputs(args, std::slice::from_ref(&args.output)) {
         return code;
@@ -232,6 +239,14 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
     let Some(scene) = compiled.scene else {
         return ExitCode::from(EXIT_SCENE_ERRORS);
     };
+    if args.integrator == Some(hrender::IntegratorKind::Path)
+        && scene.settings.integrator != hrender::IntegratorKind::Path
+        && scene.reflects_ambient()
+    {
+        eprintln!(
+            "warning: `ambient` has no meaning under the path integrator, which computes the light bouncing between surfaces instead; surfaces lit only by ambient light come out darker [HSC1010]"
+        );
+    }
     let frames = scene.settings.frames;
     if let Some(k) = args.frame
         && k >= frames
@@ -351,14 +366,23 @@ fn render_frame(
             // The parser refused empty sides.
             .and_then(|(width, height)| Resolution::new(width, height)),
         threads: args.threads.map(usize::from),
-        samples: args.samples,
+        samples: match args.samples {
+            Some(SamplesArg::Count(n)) => Some(n),
+            _ => None,
+        },
+        adaptive: (args.samples == Some(SamplesArg::Auto)).then(|| hrender::Adaptive {
+            noise: args.noise.unwrap_or(DEFAULT_NOISE),
+            max_samples: args
+                .max_samples
+                .unwrap_or(hrender::Adaptive::DEFAULT_MAX_SAMPLES),
+        }),
         seed: args.seed,
         exposure: match (args.exposure, auto_ev.get()) {
             (ExposureArg::Stops(ev), _) => Exposure::Stops(ev),
             (ExposureArg::Auto, None) => Exposure::Auto,
             (ExposureArg::Auto, Some(ev)) => Exposure::AutoKept(ev),
         },
-        integrator: IntegratorKind::default(),
+        integrator: args.integrator,
     };
     let height = args.crop.map_or_else(
         || {
@@ -442,6 +466,21 @@ fn render_frame(
     }
     if let Some(ev) = auto {
         eprintln!("note: --exposure auto chose {ev:.2} stops");
+    }
+    let path =
+        args.integrator.unwrap_or(scene.settings.integrator) == hrender::IntegratorKind::Path;
+    if path || args.samples == Some(SamplesArg::Auto) {
+        let pixels = u64::from(rendered.image.width()) * u64::from(rendered.image.height());
+        let per_pixel = rendered.stats.samples as f64 / pixels.max(1) as f64;
+        match rendered.stats.noise {
+            Some(e) => eprintln!(
+                "note: noise left {:.2} % (mean relative standard error of the lit pixels), {per_pixel:.1} samples per pixel",
+                100.0 * e
+            ),
+            None => eprintln!(
+                "note: {per_pixel:.1} samples per pixel; the noise left cannot be estimated from one sample (use --samples 16 or more, or --samples auto)"
+            ),
+        }
     }
     warn_if_almost_black(&rendered.image, display, auto.is_some());
     if rendered.stats.cut_trees > 0 {

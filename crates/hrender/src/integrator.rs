@@ -6,19 +6,21 @@
 //! ([`PreparedScene::nearest`], [`PreparedScene::transmittance`]).
 //!
 //! Adding one: a file under `integrator/` with a type that implements
-//! [`Integrator`], a variant of [`IntegratorKind`] and its row in
-//! [`IntegratorKind::TABLE`] (docs/ARCHITECTURE.md, "Adding an
+//! [`Integrator`], a variant of the IR's [`IntegratorKind`] (its name) and
+//! its row in this module's table (docs/ARCHITECTURE.md, "Adding an
 //! integrator").
 
+mod path;
 mod whitted;
 
 use hgeom::Ray;
-use hscene_ir::Rgb;
+use hscene_ir::{IntegratorKind, Rgb};
 
 use crate::sampling::SampleStream;
 use crate::scene::PreparedScene;
 use crate::trace_stats::TraceStats;
 
+pub use path::{MAX_PATH_LENGTH, PathTracer};
 pub use whitted::Whitted;
 
 /// Computes the radiance arriving at the eye along primary rays.
@@ -36,52 +38,23 @@ pub trait Integrator: Sync {
     fn radiance(&self, ray: &Ray, stream: &mut SampleStream, stats: &mut TraceStats) -> Rgb;
 }
 
-/// Which integrator a render uses (`RenderOptions::integrator`).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum IntegratorKind {
-    /// Whitted's recursive ray tracing with the thesis's Phong model:
-    /// point and spherical area lights, an ambient term, mirror reflection
-    /// and refraction ([`Whitted`]).
-    #[default]
-    Whitted,
-}
-
 /// Builds an integrator over a prepared scene.
 type Build = for<'s> fn(&'s PreparedScene) -> Box<dyn Integrator + 's>;
 
-impl IntegratorKind {
-    /// Every integrator: its kind, its name (as `--integrator` and the
-    /// scene's `integrator` key spell it) and how it is built.
-    pub const TABLE: &'static [(IntegratorKind, &'static str, Build)] =
-        &[(IntegratorKind::Whitted, "whitted", |s| {
-            Box::new(Whitted::new(s))
-        })];
+/// Every integrator and how it is built. `IntegratorKind` (in the IR,
+/// where the scene language names it) lists the kinds; this table holds
+/// one row per kind.
+const TABLE: &[(IntegratorKind, Build)] = &[
+    (IntegratorKind::Whitted, |s| Box::new(Whitted::new(s))),
+    (IntegratorKind::Path, |s| Box::new(PathTracer::new(s))),
+];
 
-    /// Its name.
-    pub fn name(self) -> &'static str {
-        Self::row(self).1
-    }
-
-    /// The integrator called `name`, if there is one.
-    pub fn from_name(name: &str) -> Option<IntegratorKind> {
-        Self::TABLE
-            .iter()
-            .find(|row| row.1 == name)
-            .map(|row| row.0)
-    }
-
-    /// The integrator of this kind over `scene`.
-    pub fn build(self, scene: &PreparedScene) -> Box<dyn Integrator + '_> {
-        (Self::row(self).2)(scene)
-    }
-
-    fn row(self) -> &'static (IntegratorKind, &'static str, Build) {
-        // Every kind has its row (the test below checks it); the first row
-        // stands in rather than a panic.
-        Self::TABLE
-            .iter()
-            .find(|row| row.0 == self)
-            .unwrap_or(&Self::TABLE[0])
+/// The integrator of `kind` over `scene`.
+pub fn build(kind: IntegratorKind, scene: &PreparedScene) -> Box<dyn Integrator + '_> {
+    match TABLE.iter().find(|row| row.0 == kind) {
+        Some(row) => (row.1)(scene),
+        // Every kind has its row (the test below checks it).
+        None => Box::new(Whitted::new(scene)),
     }
 }
 
@@ -89,23 +62,13 @@ impl IntegratorKind {
 mod tests {
     use super::*;
 
-    /// Each kind has exactly one row, and its name finds it again.
+    /// Each kind has exactly one row.
     #[test]
     fn every_kind_has_one_row() {
-        for (kind, name, _) in IntegratorKind::TABLE {
-            assert_eq!(IntegratorKind::from_name(name), Some(*kind));
-            assert_eq!(kind.name(), *name);
-            let rows = IntegratorKind::TABLE
-                .iter()
-                .filter(|r| r.0 == *kind)
-                .count();
+        for (kind, name) in IntegratorKind::ALL {
+            let rows = TABLE.iter().filter(|r| r.0 == kind).count();
             assert_eq!(rows, 1, "{name}");
         }
-        // The exhaustive match fails to compile when a variant is added, as
-        // a reminder of its row.
-        match IntegratorKind::default() {
-            IntegratorKind::Whitted => {}
-        }
-        assert_eq!(IntegratorKind::from_name("nonesuch"), None);
+        assert_eq!(TABLE.len(), IntegratorKind::ALL.len());
     }
 }

@@ -16,6 +16,7 @@
 //! hidden, and no pixel is ever NaN or infinite.
 
 mod accel;
+mod bsdf;
 mod display;
 mod error;
 mod exposure;
@@ -26,6 +27,7 @@ mod integrator;
 mod light_sampling;
 mod material;
 mod nets;
+mod noise;
 mod output;
 mod output_check;
 mod ray_budget;
@@ -48,9 +50,11 @@ pub use error::RenderError;
 pub use exposure::{
     AUTO_KEY, DARK_LEVEL, Exposure, MAX_EXPOSURE, auto_exposure, is_almost_black, luminance,
 };
+pub use hscene_ir::IntegratorKind;
 pub use image::Image;
-pub use integrator::{Integrator, IntegratorKind, Whitted};
+pub use integrator::{Integrator, MAX_PATH_LENGTH, PathTracer, Whitted};
 pub use nets::{PixelNet, Sample, pixel_footprint};
+pub use noise::{ADAPTIVE_BATCH, Adaptive, PixelNoise};
 pub use output::{ImageFormat, PngLevel, SampleDepth, check_depth, write_image, write_image_with};
 pub use output_check::{Overwrite, check_output};
 pub use ray_budget::{MAX_SECONDARY_RAYS, RayBudget};
@@ -68,7 +72,7 @@ pub const MAX_THREADS: usize = 1024;
 
 /// Overrides of the scene's own settings, and execution options. The
 /// default overrides nothing: the scene as it is, on every core, seed 0,
-/// no exposure correction, the Whitted integrator.
+/// no exposure correction, the scene's integrator.
 #[derive(Clone, Debug, Default)]
 pub struct RenderOptions {
     /// Use this pixel net instead of the scene's `net_type`.
@@ -84,10 +88,14 @@ pub struct RenderOptions {
     pub samples: Option<u32>,
     /// Seed of the sample jitter: the same seed gives the same image.
     pub seed: u64,
+    /// Adaptive sampling: each pixel takes samples until its estimated
+    /// noise is low enough (instead of a fixed count; `samples` is then
+    /// ignored).
+    pub adaptive: Option<Adaptive>,
     /// How radiance is scaled before it is stored.
     pub exposure: Exposure,
-    /// How light is computed.
-    pub integrator: IntegratorKind,
+    /// How light is computed, instead of the scene's `integrator`.
+    pub integrator: Option<IntegratorKind>,
 }
 
 impl RenderOptions {
@@ -107,6 +115,9 @@ impl RenderOptions {
                 "exposure must be a number of stops from -{MAX_EXPOSURE} to {MAX_EXPOSURE}, not {ev}"
             )));
         }
+        if let Some(a) = self.adaptive {
+            a.validate()?;
+        }
         if let Some(threads) = self.threads
             && !(1..=MAX_THREADS).contains(&threads)
         {
@@ -119,7 +130,7 @@ impl RenderOptions {
 }
 
 /// What happened during a render.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct RenderStats {
     /// Rays traced, all kinds.
     pub rays: u64,
@@ -129,6 +140,14 @@ pub struct RenderStats {
     /// Primary rays (pixel samples or interpolation nodes) whose ray tree
     /// was cut at [`MAX_SECONDARY_RAYS`].
     pub cut_trees: u64,
+    /// Pixel samples taken, all pixels together.
+    pub samples: u64,
+    /// The mean, over the pixels that see any light, of each pixel's
+    /// relative standard error (the standard deviation of its mean
+    /// luminance over that mean, from its own samples): the noise left in
+    /// the image. `None` with one sample per pixel (no spread to measure)
+    /// or no lit pixel.
+    pub noise: Option<f64>,
 }
 
 /// A finished render.
@@ -202,6 +221,7 @@ struct RenderJob<'a> {
     width: u32,
     height: u32,
     sampler: Sampler,
+    adaptive: Option<Adaptive>,
     scale: f64,
     integrator: Box<dyn Integrator + 'a>,
     background: Rgb,
@@ -229,22 +249,24 @@ impl RenderJob<'_> {
     }
 
     /// Columns `columns` of row `j` into `out` (one pixel per column):
-    /// every pixel's samples, box-filtered and exposed. Returns the number
-    /// of pixels with a numeric failure.
+    /// every pixel's samples, box-filtered and exposed (with adaptive
+    /// sampling, as many as its noise needs, in batches).
     fn row(
         &self,
         j: u32,
         columns: std::ops::Range<u32>,
         out: &mut [[f32; 3]],
         stats: &mut TraceStats,
-    ) -> u64 {
+    ) -> RowStats {
         let (w, h) = (f64::from(self.width), f64::from(self.height));
         let mut nodes = NodeCache::default();
-        let mut failed_pixels = 0;
+        let mut row = RowStats::default();
         for (i, pixel) in columns.zip(out) {
             let mut sum = Rgb::default();
             let mut failed = false;
-            for k in 0..self.sampler.count() {
+            let mut noise = PixelNoise::default();
+            let mut k = 0;
+            while k < self.sampler.count() {
                 let (ox, oy) = self.sampler.offset(i, j, k);
                 let sx = (f64::from(i) + ox) / w - 0.5;
                 let sy = 0.5 - (f64::from(j) + oy) / h;
@@ -257,8 +279,15 @@ impl RenderJob<'_> {
                 };
                 sum += c;
                 failed |= f;
+                noise.add(c);
+                k += 1;
+                if let Some(a) = &self.adaptive
+                    && a.is_done(&noise)
+                {
+                    break;
+                }
             }
-            let c = sum * (self.scale / f64::from(self.sampler.count()));
+            let c = sum * (self.scale / f64::from(k));
             let px = c.channels().map(|v| v as f32);
             // Exposure or f32 conversion can overflow a finite radiance.
             let px = if px.iter().all(|v| v.is_finite()) {
@@ -267,10 +296,15 @@ impl RenderJob<'_> {
                 failed = true;
                 [0.0; 3]
             };
-            failed_pixels += u64::from(failed);
+            row.failed_pixels += u64::from(failed);
+            row.samples += u64::from(k);
+            if let Some(e) = noise.relative_error() {
+                row.noise_sum += e;
+                row.noisy_pixels += 1;
+            }
             *pixel = px;
         }
-        failed_pixels
+        row
     }
 
     /// Net 4: the screen shows the great disk as net 2 does, and each
@@ -361,6 +395,27 @@ fn view_window(
     })
 }
 
+/// What a row's pixels add to the render's counters.
+#[derive(Clone, Copy, Debug, Default)]
+struct RowStats {
+    failed_pixels: u64,
+    samples: u64,
+    /// The sum of the relative errors of the pixels that have one.
+    noise_sum: f64,
+    noisy_pixels: u64,
+}
+
+impl RowStats {
+    fn merge(self, o: RowStats) -> RowStats {
+        RowStats {
+            failed_pixels: self.failed_pixels + o.failed_pixels,
+            samples: self.samples + o.samples,
+            noise_sum: self.noise_sum + o.noise_sum,
+            noisy_pixels: self.noisy_pixels + o.noisy_pixels,
+        }
+    }
+}
+
 /// Net-3 nodes already traced for the current row, by lattice index.
 #[derive(Default)]
 struct NodeCache(HashMap<(i64, i64), (Rgb, bool)>);
@@ -402,15 +457,22 @@ fn render_in_pool(
         window,
         width,
         height,
-        sampler: Sampler::new(
-            options
-                .samples
-                .unwrap_or(scene.settings.samples)
-                .clamp(1, MAX_SAMPLES),
-            options.seed,
-        ),
+        sampler: match options.adaptive {
+            Some(a) => Sampler::jittered(a.max_samples, options.seed),
+            None => Sampler::new(
+                options
+                    .samples
+                    .unwrap_or(scene.settings.samples)
+                    .clamp(1, MAX_SAMPLES),
+                options.seed,
+            ),
+        },
+        adaptive: options.adaptive,
         scale: options.exposure.render_scale(),
-        integrator: options.integrator.build(&prepared),
+        integrator: integrator::build(
+            options.integrator.unwrap_or(scene.settings.integrator),
+            &prepared,
+        ),
         background: prepared.background,
     };
 
@@ -424,19 +486,21 @@ fn render_in_pool(
         .zip(region.y..region.y + region.height)
         .map(|(out, j)| {
             let mut stats = TraceStats::default();
-            let failed = job.row(j, columns.clone(), out, &mut stats);
+            let row = job.row(j, columns.clone(), out, &mut stats);
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(n);
-            (failed, stats)
+            (row, stats)
         })
         .reduce(
-            || (0, TraceStats::default()),
-            |(fa, sa), (fb, sb)| (fa + fb, sa.merge(sb)),
+            || (RowStats::default(), TraceStats::default()),
+            |(fa, sa), (fb, sb)| (fa.merge(fb), sa.merge(sb)),
         );
     let stats = RenderStats {
         rays: traced.rays,
         cut_trees: traced.cut_trees,
-        numeric_failures: failed,
+        numeric_failures: failed.failed_pixels,
+        samples: failed.samples,
+        noise: (failed.noisy_pixels > 0).then(|| failed.noise_sum / failed.noisy_pixels as f64),
     };
     let mut image = Image::from_pixels(region.width, region.height, pixels);
     let auto_exposure = options.exposure.finish(&mut image);

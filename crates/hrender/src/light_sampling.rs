@@ -93,12 +93,65 @@ impl VisibleCap {
     }
 }
 
+/// The cone of directions in which a point sees an h-sphere: a sphere of
+/// radius `a` whose centre is at distance `d > a` subtends the half-angle
+/// `α` with `sin α = sinh a / sinh d` (the right triangle of the centre,
+/// the point and a point of tangency: `sin α = sinh(opposite) /
+/// sinh(hypotenuse)`), so its directions are sampled exactly, uniformly by
+/// solid angle, with density `1 / (2π (1 - cos α))`.
+pub struct SphereCone {
+    p: DVec4,
+    axis: DVec4,
+    basis: (DVec4, DVec4),
+    /// `1 - cos α`, without cancellation.
+    one_minus_cos: f64,
+}
+
+impl SphereCone {
+    /// The cone from `p` to the sphere of `radius` about `centre`; `None`
+    /// when `p` is not outside it.
+    pub fn new(p: DVec4, centre: DVec4, radius: f64) -> Option<SphereCone> {
+        let (axis, d) = lorentz::direction_towards(p, centre)?;
+        if !(d > radius) {
+            return None;
+        }
+        let sin = radius.sinh() / d.sinh();
+        let cos = (1.0 - sin * sin).max(0.0).sqrt();
+        let one_minus_cos = sin * sin / (1.0 + cos);
+        if !(one_minus_cos > 0.0) {
+            return None;
+        }
+        Some(SphereCone {
+            p,
+            axis,
+            basis: tangent_basis(p, axis),
+            one_minus_cos,
+        })
+    }
+
+    /// A direction drawn uniformly from the cone with the uniforms `u1`,
+    /// `u2`: a unit tangent at the point.
+    pub fn sample(&self, u1: f64, u2: f64) -> DVec4 {
+        let h = u1 * self.one_minus_cos;
+        let (cos, sin) = (1.0 - h, (h * (2.0 - h)).max(0.0).sqrt());
+        let phi = TAU * u2;
+        let (b1, b2) = self.basis;
+        let v = self.axis * cos + (b1 * phi.cos() + b2 * phi.sin()) * sin;
+        crate::tangent::renormalize(self.p, v)
+    }
+
+    /// The density of [`SphereCone::sample`] per unit solid angle.
+    pub fn pdf(&self) -> f64 {
+        1.0 / (TAU * self.one_minus_cos)
+    }
+}
+
 /// Two unit tangents at `c` that complete the unit tangent `e` to a Lorentz
 /// orthonormal basis of the tangent space. The first is a coordinate axis
 /// projected into the tangent space and away from `e` (the axis that keeps
 /// most of its length, so the projection never degenerates); the second is
 /// orthogonal to `c`, `e` and the first.
-fn tangent_basis(c: DVec4, e: DVec4) -> (DVec4, DVec4) {
+pub fn tangent_basis(c: DVec4, e: DVec4) -> (DVec4, DVec4) {
     let project = |a: DVec4| {
         let v = a + lorentz::dot(c, a) * c;
         v - lorentz::dot(e, v) * e
@@ -144,6 +197,50 @@ mod tests {
                 assert!((lorentz::dot(a, b) - expect).abs() < 1e-12, "{e3}");
             }
         }
+    }
+
+    /// Every direction of the cone meets the sphere, and the cone's solid
+    /// angle is `2π (1 - cos α)` with `sin α = sinh a / sinh d`: measured
+    /// against the fraction of uniform directions that meet the sphere.
+    #[test]
+    fn the_cone_is_the_sphere_seen_from_the_point() {
+        use hgeom::HSphere;
+        let (a, d) = (0.4, 1.7);
+        let centre = Point::at_distance_from_origin(DVec3::new(0.3, -0.2, 0.9), d).unwrap();
+        let sphere = HSphere::new(centre, a).unwrap();
+        let p = Point::ORIGIN.to_hyperboloid();
+        let cone = SphereCone::new(p, centre.to_hyperboloid(), a).unwrap();
+        let mut stream = SampleStream::new(11);
+        for _ in 0..1000 {
+            let dir = cone.sample(stream.next_unit(), stream.next_unit());
+            let ray = hgeom::Ray { origin: p, dir };
+            assert!(sphere.intersect(&ray, 0.0, f64::INFINITY).is_some());
+        }
+        // Uniform directions on the sphere of directions at the origin.
+        let n = 400_000;
+        let mut hits = 0;
+        for _ in 0..n {
+            let z = 2.0 * stream.next_unit() - 1.0;
+            let phi = TAU * stream.next_unit();
+            let r = (1.0 - z * z).sqrt();
+            let ray =
+                hgeom::Ray::from_origin_unchecked(DVec3::new(r * phi.cos(), r * phi.sin(), z));
+            hits += usize::from(sphere.intersect(&ray, 0.0, f64::INFINITY).is_some());
+        }
+        let sin = a.sinh() / d.sinh();
+        let share = (1.0 - (1.0 - sin * sin).sqrt()) / 2.0;
+        let measured = hits as f64 / f64::from(n);
+        let sigma = (share * (1.0 - share) / f64::from(n)).sqrt();
+        assert!(
+            (measured - share).abs() < 5.0 * sigma,
+            "{measured} vs {share}"
+        );
+        // The Euclidean cone, sin α = a / d, is far off.
+        let euclid = (1.0 - (1.0 - (a / d) * (a / d)).sqrt()) / 2.0;
+        assert!((measured - euclid).abs() > 50.0 * sigma);
+        assert!(
+            (cone.pdf() - 1.0 / (4.0 * std::f64::consts::PI * share)).abs() < 1e-9 * cone.pdf()
+        );
     }
 
     /// Every sample lies on the light's sphere, on the cap the shading

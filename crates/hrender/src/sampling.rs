@@ -31,6 +31,18 @@ impl Sampler {
         }
     }
 
+    /// Up to `samples` per pixel, every one jittered uniformly over the
+    /// pixel (none at the centre, no strata): for adaptive sampling, which
+    /// may stop after any batch, so every prefix of the samples must cover
+    /// the pixel evenly.
+    pub fn jittered(samples: u32, seed: u64) -> Sampler {
+        Sampler {
+            seed,
+            samples: samples.max(2),
+            strata: None,
+        }
+    }
+
     /// Samples per pixel.
     pub fn count(&self) -> u32 {
         self.samples

@@ -40,6 +40,10 @@ pub struct PreparedObject {
     /// From the canonical frame to the object's local space, where its
     /// texture is fixed: `(to_canonical ∘ placement)^-1`.
     pub to_local: Isometry,
+    /// The centre and radius of an object that is an h-sphere, in the
+    /// canonical frame: an emissive one is a light that can be sampled by
+    /// solid angle.
+    pub ball: Option<(DVec4, f64)>,
 }
 
 /// Rays that leave a surface ignore hits closer than this (hyperbolic
@@ -77,11 +81,22 @@ impl PreparedObject {
 
     /// The shape moved by each of `stages` in turn, as surfaces; drawn for
     /// pixels of `footprint` if given.
+    #[cfg(test)]
     fn surfaces_of(
         shape: &ir::Shape,
         stages: &[Isometry],
         footprint: Option<&PixelFootprint>,
     ) -> Surfaces {
+        Self::moved(shape, stages, footprint).0
+    }
+
+    /// [`PreparedObject::surfaces_of`], and the centre and radius of the
+    /// moved shape if it is an h-sphere.
+    fn moved(
+        shape: &ir::Shape,
+        stages: &[Isometry],
+        footprint: Option<&PixelFootprint>,
+    ) -> (Surfaces, Option<(DVec4, f64)>) {
         // A camera at the origin has identity stages, and moving by the
         // identity only copies (every cached quantity is recomputed from
         // the same inputs by the same formulas): tens of thousands of rods
@@ -95,9 +110,16 @@ impl PreparedObject {
         {
             moved = Some(nearer);
         }
+        let ball = |s: &ir::Shape| {
+            s.sphere()
+                .map(|b| (b.center().to_hyperboloid(), b.radius()))
+        };
         match moved {
-            Some(shape) => shape.into_surfaces(),
-            None => shape.to_surfaces(),
+            Some(shape) => {
+                let b = ball(&shape);
+                (shape.into_surfaces(), b)
+            }
+            None => (shape.to_surfaces(), ball(shape)),
         }
     }
 
@@ -240,7 +262,7 @@ impl PreparedScene {
                         scene.materials.len()
                     )));
                 }
-                let surfaces = PreparedObject::surfaces_of(&o.shape, stages, footprint);
+                let (surfaces, ball) = PreparedObject::moved(&o.shape, stages, footprint);
                 if !surfaces.iter().all(|s| s.is_traceable()) {
                     return Err(RenderError::OutOfRange {
                         what: format!("object {}", index + 1),
@@ -258,6 +280,7 @@ impl PreparedScene {
                         .iter()
                         .fold(o.placement, |f, iso| iso.compose(&f))
                         .inverse(),
+                    ball,
                 })
             })
             .collect();

@@ -19,6 +19,7 @@ mod camera;
 mod color;
 mod frame;
 mod honeycomb;
+mod integrator;
 pub mod limits;
 mod material;
 mod object;
@@ -30,6 +31,7 @@ pub use animation::{Animation, FrameError, Motion, Track, TrackBase, compose, fr
 pub use camera::{Camera, Net, Resolution, Window, move_camera};
 pub use color::Rgb;
 pub use honeycomb::{Honeycomb, PartMaterials};
+pub use integrator::IntegratorKind;
 pub use material::{Material, MaterialId, Pattern, Texture};
 pub use object::{Object, move_object};
 pub use scene::{Fog, Light, PointRecord, Scene, Settings};

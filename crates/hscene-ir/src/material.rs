@@ -25,11 +25,14 @@ pub struct Material {
     /// A pattern that replaces the diffuse and ambient reflectances in part
     /// of the surface; `None` for a uniform material.
     pub texture: Option<Texture>,
+    /// Radiance the surface emits, the same from both of its sides and in
+    /// every direction (a Lambertian emitter): it makes the surface a light.
+    pub emission: Rgb,
 }
 
 impl Default for Material {
     /// Every field at the language's default: black, no mirror, opaque,
-    /// shininess 1, refraction index 1, no texture.
+    /// shininess 1, refraction index 1, no texture, no emission.
     fn default() -> Material {
         Material {
             name: None,
@@ -41,6 +44,7 @@ impl Default for Material {
             shininess: 1.0,
             refraction: 1.0,
             texture: None,
+            emission: Rgb::BLACK,
         }
     }
 }

@@ -6,6 +6,7 @@ use hgeom::{Point, Vertex};
 use crate::animation::Animation;
 use crate::camera::{Camera, Net, Resolution, Window};
 use crate::color::Rgb;
+use crate::integrator::IntegratorKind;
 use crate::material::Material;
 use crate::object::Object;
 
@@ -37,6 +38,8 @@ pub struct Settings {
     pub fov: Option<f64>,
     /// Fog (`fog_distance = D`, `fog_color`), if any.
     pub fog: Option<Fog>,
+    /// How light is computed (`integrator = NAME;`).
+    pub integrator: IntegratorKind,
 }
 
 /// Fog: the radiance carried along a ray segment of hyperbolic length `s`
@@ -102,4 +105,18 @@ pub struct Scene {
     /// What moves from frame to frame: [`Scene::frame`] gives any frame
     /// of the animation from this one.
     pub animation: Animation,
+}
+
+impl Scene {
+    /// True when the ambient term lights something: a non-black global
+    /// `ambient` and a material (or its texture) that reflects it. The path
+    /// integrator has no ambient term, so such a scene looks different
+    /// there.
+    pub fn reflects_ambient(&self) -> bool {
+        !self.settings.ambient.is_black()
+            && self
+                .materials
+                .iter()
+                .any(|m| !m.ambient.is_black() || m.texture.is_some_and(|t| !t.ambient.is_black()))
+    }
 }

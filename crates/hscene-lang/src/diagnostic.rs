@@ -158,6 +158,7 @@ codes! {
     IneffectiveOption = "HSC1007", Warning, "option without effect";
     StillAnimation = "HSC1008", Warning, "animation in a still scene";
     DegenerateTriangles = "HSC1009", Warning, "degenerate mesh triangles";
+    AmbientUnderPath = "HSC1010", Warning, "ambient light under the path integrator";
 }
 
 impl Code {

@@ -100,6 +100,8 @@ struct Lowerer<'d> {
     primitives: u64,
     primitive_cap_reported: bool,
     light_cap_reported: bool,
+    /// Where `integrator = NAME` was given, if it was.
+    integrator_span: Option<Span>,
 }
 
 /// Lower a parsed file. Returns the scene only if no error was reported
@@ -144,6 +146,7 @@ pub(crate) fn lower(
         primitives: 0,
         primitive_cap_reported: false,
         light_cap_reported: false,
+        integrator_span: None,
         material_ref_failed: file.incomplete,
     };
     lw.check_section_names(file, source);
@@ -181,6 +184,7 @@ pub(crate) fn lower(
     lw.mark_failed_references(file);
     lw.lint_unused();
     lw.lint_still_animation();
+    lw.lint_ambient_under_path();
     if lw.diags.iter().any(Diagnostic::is_error) {
         return None;
     }

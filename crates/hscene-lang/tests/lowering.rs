@@ -286,6 +286,7 @@ fn appendix_a_compiles_with_one_warning() {
             frames: 1,
             fov: None,
             fog: None,
+            integrator: hscene_lang::ir::IntegratorKind::Whitted,
         }
     );
     assert_eq!(scene.camera.eye, Point::ORIGIN);
@@ -557,6 +558,7 @@ fn empty_file_gets_the_documented_defaults() {
                 frames: 1,
                 fov: None,
                 fog: None,
+                integrator: hscene_lang::ir::IntegratorKind::Whitted,
             }
         );
         assert_eq!(
@@ -624,6 +626,7 @@ fn material_fields_default_when_absent() {
             shininess: 1.0,
             refraction: 1.0,
             texture: None,
+            emission: Rgb::BLACK,
         }
     );
 }

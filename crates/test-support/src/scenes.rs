@@ -75,6 +75,7 @@ pub fn matte(r: f64, g: f64, b: f64) -> Material {
         shininess: 20.0,
         refraction: 1.0,
         texture: None,
+        emission: Rgb::BLACK,
     }
 }
 
@@ -106,6 +107,7 @@ pub fn settings(net: Net, size: u32, window: f64) -> Settings {
         frames: 1,
         fov: None,
         fog: None,
+        integrator: Default::default(),
     }
 }
 

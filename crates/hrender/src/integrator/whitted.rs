@@ -105,6 +105,11 @@ impl<'s> Whitted<'s> {
         let (ambient, diffuse) = reflectances(object, m, &hit);
 
         let mut color = ambient.tint(self.scene.ambient);
+        // An emissive surface glows with its own radiance (nothing is added
+        // for the usual black: the sums stay bit for bit what they were).
+        if !m.emission.is_black() {
+            color += m.emission;
+        }
         let view = -d;
         // A material without diffuse and specular terms ignores the lights:
         // skip their shadow rays.

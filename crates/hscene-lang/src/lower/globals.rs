@@ -6,7 +6,7 @@ use super::camera::CameraKey;
 use super::table::{self, Row, SeenKeys, unknown_word, words};
 use super::view_globals::ViewKey;
 use crate::diagnostic::{Code, Diagnostic};
-use crate::ir::{Net, Resolution, Rgb, Settings, Window};
+use crate::ir::{IntegratorKind, Net, Resolution, Rgb, Settings, Window};
 use crate::syntax::{Clause, Ident, Section, Value};
 
 /// Largest accepted image side, to keep allocations sane.
@@ -25,6 +25,7 @@ enum Global {
     Frames,
     Background,
     Ambient,
+    Integrator,
     Camera(CameraKey),
     View(ViewKey),
 }
@@ -71,6 +72,7 @@ const KEYS: &[GlobalKey] = &[
     key("up", Global::Camera(CameraKey::Up)),
     key("background", Global::Background),
     key("ambient", Global::Ambient),
+    key("integrator", Global::Integrator),
     key("fog_color", Global::View(ViewKey::FogColor)),
     key("fog_distance", Global::View(ViewKey::FogDistance)),
 ];
@@ -111,6 +113,7 @@ pub(super) fn default_settings() -> Settings {
         frames: 1,
         fov: None,
         fog: None,
+        integrator: IntegratorKind::Whitted,
     }
 }
 
@@ -196,8 +199,39 @@ impl Lowerer<'_> {
             Global::Ambient => {
                 self.settings.ambient = self.rgb(value).unwrap_or(self.settings.ambient)
             }
+            Global::Integrator => self.integrator(value),
             Global::View(key) => self.view_global(key, value),
             Global::Camera(key) => self.camera_global(key, value),
+        }
+    }
+
+    /// `integrator = whitted|path`.
+    fn integrator(&mut self, value: &Value) {
+        let help = || format!("integrators are {}", IntegratorKind::names());
+        let Value::Ident(name) = value else {
+            self.report(
+                Diagnostic::new(
+                    Code::WrongType,
+                    value.span(),
+                    format!("expected an integrator's name, found {}", value.describe()),
+                )
+                .with_help(help()),
+            );
+            return;
+        };
+        match IntegratorKind::from_name(&name.text) {
+            Some(kind) => {
+                self.settings.integrator = kind;
+                self.integrator_span = Some(value.span());
+            }
+            None => self.report(
+                Diagnostic::new(
+                    Code::InvalidValue,
+                    value.span(),
+                    format!("unknown integrator `{}`", name.text),
+                )
+                .with_help(help()),
+            ),
         }
     }
 

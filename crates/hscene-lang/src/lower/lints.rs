@@ -7,7 +7,7 @@ use super::Lowerer;
 use super::seen_from::SeenFrom;
 use super::text::numbered;
 use crate::diagnostic::{Code, Diagnostic, Span};
-use crate::ir::Camera;
+use crate::ir::{Camera, IntegratorKind};
 use crate::syntax::{Clause, RefSigil, Reference, SourceFile, Value};
 
 /// Calls `f` on every reference in `value`.
@@ -153,6 +153,25 @@ impl Lowerer<'_> {
     }
 
     /// Animated transformations in a scene of one frame stay at their start.
+    /// `integrator = path` with ambient light that some material reflects:
+    /// the path tracer ignores it (`HSC1010`).
+    pub(super) fn lint_ambient_under_path(&mut self) {
+        let Some(span) = self.integrator_span else {
+            return;
+        };
+        if self.settings.integrator != IntegratorKind::Path || !relies_on_ambient(self) {
+            return;
+        }
+        self.report(
+            Diagnostic::new(
+                Code::AmbientUnderPath,
+                span,
+                "`ambient` has no meaning under the path integrator, which computes the light bouncing between surfaces instead",
+            )
+            .with_help("light the scene with lights, `emission` or `background` and remove `ambient`, or use `integrator = whitted`"),
+        );
+    }
+
     pub(super) fn lint_still_animation(&mut self) {
         if self.settings.frames == 1
             && let Some(&at) = self.animations.first()
@@ -167,4 +186,16 @@ impl Lowerer<'_> {
             );
         }
     }
+}
+
+/// True when the ambient term would light something: a non-black global
+/// `ambient` and a material that reflects it.
+fn relies_on_ambient(lw: &Lowerer<'_>) -> bool {
+    !lw.settings.ambient.is_black()
+        && lw
+            .materials
+            .entries()
+            .iter()
+            .map(|e| &e.value)
+            .any(|m| !m.ambient.is_black() || m.texture.is_some_and(|t| !t.ambient.is_black()))
 }

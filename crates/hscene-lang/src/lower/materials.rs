@@ -19,6 +19,7 @@ enum Field {
     Checker,
     CheckerDiffuse,
     CheckerAmbient,
+    Emission,
 }
 
 /// Every material field, in the order the help lists them.
@@ -33,6 +34,7 @@ const FIELDS: &[(&str, Field)] = &[
     ("checker", Field::Checker),
     ("checker_diffuse", Field::CheckerDiffuse),
     ("checker_ambient", Field::CheckerAmbient),
+    ("emission", Field::Emission),
 ];
 
 /// The names of the material fields, in the order of [`FIELDS`].
@@ -194,6 +196,7 @@ impl Lowerer<'_> {
             }
             Field::CheckerDiffuse => checker.diffuse = self.rgb(value),
             Field::CheckerAmbient => checker.ambient = self.rgb(value),
+            Field::Emission => m.emission = self.rgb(value).unwrap_or(m.emission),
         }
     }
 }
