@@ -61,10 +61,10 @@ pub struct PathTracer<'s> {
 }
 
 /// What the last scattering vertex tells the next emitter hit: where it
-/// was and the density its smooth lobes drew the direction with; `None`
-/// at the eye or after a mirror or a refraction, which light sampling
-/// cannot reproduce.
-type LastScatter = Option<(DVec4, f64)>;
+/// was, the object it was on, and the density its smooth lobes drew the
+/// direction with; `None` at the eye or after a mirror or a refraction,
+/// which light sampling cannot reproduce.
+type LastScatter = Option<(DVec4, usize, f64)>;
 
 impl<'s> PathTracer<'s> {
     /// The integrator over `scene`: its spherical emitters gathered once.
@@ -140,10 +140,14 @@ impl<'s> PathTracer<'s> {
     /// The power-heuristic weight of emission from emitter `k` reached by
     /// a direction the last vertex's lobes drew.
     fn emission_weight(&self, k: usize, last: LastScatter) -> f64 {
-        let Some((from, pdf_bsdf)) = last else {
+        let Some((from, on, pdf_bsdf)) = last else {
             return 1.0;
         };
         let e = &self.emitters[k];
+        // Light sampling skips the emitter a point lies on (`direct`).
+        if e.object == Some(on) {
+            return 1.0;
+        }
         match SphereCone::new(from, e.centre, e.radius) {
             Some(cone) => power_heuristic(pdf_bsdf, cone.pdf()),
             None => 1.0,
@@ -318,7 +322,7 @@ impl Integrator for PathTracer<'_> {
             };
             beta = beta.tint(scatter.weight);
             if !scatter.passed_through {
-                last = scatter.pdf.map(|pdf| (p, pdf));
+                last = scatter.pdf.map(|pdf| (p, index, pdf));
             }
             ray = Ray {
                 origin: p,
