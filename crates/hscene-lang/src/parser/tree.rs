@@ -40,7 +40,9 @@ impl Scanner<'_> {
                 let mut value = None;
                 for p in pair.into_inner() {
                     match p.as_rule() {
-                        Rule::ident => key = Some(pair_ident(p, off)),
+                        Rule::ident if key.is_none() => key = Some(pair_ident(p, off)),
+                        // A bare name as the value (`integrator = path`).
+                        Rule::ident => value = Some(Value::Ident(pair_ident(p, off))),
                         Rule::value => value = Some(self.value(p, off)?),
                         _ => {}
                     }
