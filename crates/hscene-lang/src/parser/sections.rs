@@ -322,7 +322,10 @@ mod tests {
                 .starts_with("expected a section name")
         );
         // The nameless body is still checked, but not kept.
-        assert_eq!(p.diagnostics[1].message, "expected a value, found `;`");
+        assert_eq!(
+            p.diagnostics[1].message,
+            "expected a value or a name, found `;`"
+        );
         assert_eq!(p.file.sections.len(), 1);
         assert_eq!(p.file.sections[0].statements.len(), 1);
     }

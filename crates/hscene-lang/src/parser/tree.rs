@@ -268,11 +268,17 @@ mod tests {
         assert!(matches!(&st.clauses[0], Clause::Value(Value::Tuple { .. })));
     }
 
+    /// A bare name is the value of an assignment (`integrator = path`),
+    /// and the key stays the key.
     #[test]
-    fn bare_identifiers_are_not_values_outside_tuples() {
-        let p = parse("S { a = b; }");
-        assert_eq!(codes(&p), [Code::Syntax]);
-        assert_eq!(p.diagnostics[0].message, "expected a value, found `b`");
+    fn bare_identifiers_are_values_of_assignments() {
+        let st = only_statement("S { a = b; }");
+        let Clause::Assign { key, value, .. } = &st.clauses[0] else {
+            panic!("{:?}", st.clauses)
+        };
+        assert_eq!(key.text, "a");
+        assert!(matches!(value, Value::Ident(i) if i.text == "b"));
+        assert_eq!(value.describe(), "a name");
     }
 
     #[test]
