@@ -62,13 +62,15 @@ pub fn lookup(code: &str) -> Option<Entry<'static>> {
     None
 }
 
-/// Accepts `HSC0305`, `hsc0305` and `0305`.
+/// Accepts `HSC0305`, `hsc0305`, `0305` and `305`: the digits are padded
+/// to the four of every code.
 fn normalise(code: &str) -> String {
     let code = code.trim().to_ascii_uppercase();
-    if code.starts_with("HSC") {
-        code
+    let digits = code.strip_prefix("HSC").unwrap_or(&code);
+    if !digits.is_empty() && digits.len() < 4 && digits.bytes().all(|b| b.is_ascii_digit()) {
+        format!("HSC{digits:0>4}")
     } else {
-        format!("HSC{code}")
+        format!("HSC{digits}")
     }
 }
 
@@ -114,6 +116,11 @@ mod tests {
     fn rows_split_outside_backquotes() {
         assert_eq!(cells("| a | `x|y` | c |"), vec!["a", "`x|y`", "c"]);
         assert_eq!(normalise("0305"), "HSC0305");
+        // The trap a new user meets: the code without its zero or prefix.
+        for short in ["313", "0313", "hsc0313", "HSC313", " hsc313 "] {
+            assert_eq!(normalise(short), "HSC0313", "{short}");
+        }
+        assert_eq!(normalise("1005"), "HSC1005");
         assert_eq!(lookup("HSC9999"), None);
         assert_eq!(lookup("HSC0305").unwrap().name, "NonPlanarPolygon");
     }
