@@ -241,7 +241,7 @@ pub struct CheckArgs {
     /// Exit with status 1 when there are warnings, as for errors (for CI).
     #[arg(long)]
     pub deny_warnings: bool,
-    /// Output format (default: human on a terminal, short otherwise).
+    /// Output format (default: human, in colour on a terminal only).
     #[arg(long)]
     pub format: Option<Format>,
     /// Also print the lowered scene: `ir` writes one JSON object per error-free

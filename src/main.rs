@@ -77,11 +77,9 @@ fn check(args: &CheckArgs, color: ColorChoice) -> ExitCode {
     } else {
         std::io::stdout().is_terminal()
     };
-    let format = args.format.unwrap_or(if diag_tty {
-        Format::Human
-    } else {
-        Format::Short
-    });
+    // The full report (with every `help:`) whether or not the output is a
+    // terminal, as rustc and ruff do; only colour depends on the terminal.
+    let format = args.format.unwrap_or(Format::Human);
     let mut any_errors = false;
     let mut io_failure = false;
     let mut out = std::io::stdout().lock();
@@ -217,11 +215,9 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
     let first = args.frame.unwrap_or(0);
     let compiled = hscene_lang::compile_with(&source, &compile_options(&args.scene, first));
     let show = |diagnostics: &[hscene_lang::Diagnostic]| {
-        let format = if stderr_tty {
-            Format::Human
-        } else {
-            Format::Short
-        };
+        // The full report whether or not stderr is a terminal; colour only
+        // on one.
+        let format = Format::Human;
         eprint!(
             "{}",
             report::format_diagnostics(
@@ -311,21 +307,26 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
     ExitCode::SUCCESS
 }
 
-/// The lint for an image that would come out almost black (fewer than 1 %
-/// of its pixels at sRGB level 16 or above), with the exposure that would
-/// fix it.
-fn warn_if_almost_black(image: &hrender::Image, display: DisplayTransform, auto: bool) {
+/// The lint for an image that would come out almost black (even its
+/// bright pixels below level 16 of 255), with the absolute exposure that
+/// would fix it: following the hint gives a picture this lint passes.
+fn warn_if_almost_black(
+    image: &hrender::Image,
+    display: DisplayTransform,
+    current: f64,
+    auto: bool,
+) {
     if !hrender::is_almost_black(image, display) {
         return;
     }
-    let ev = hrender::auto_exposure(image);
-    let hint = if auto || ev <= 0.0 {
-        String::new()
-    } else {
-        format!("; try --exposure {ev:.1} (or --exposure auto), brighter lights or `irradiance_at`")
+    let hint = match hrender::suggested_exposure(image, current) {
+        Some(ev) if !auto => format!(
+            "; try --exposure {ev:.1} (or --exposure auto), brighter lights or `irradiance_at`"
+        ),
+        _ => String::new(),
     };
     eprintln!(
-        "warning: the image is almost black: under 1 % of its pixels reach level 16 of 255{hint}"
+        "warning: the image is almost black: even its bright pixels stay below level 16 of 255{hint}"
     );
 }
 
@@ -482,7 +483,11 @@ fn render_frame(
             ),
         }
     }
-    warn_if_almost_black(&rendered.image, display, auto.is_some());
+    let current = match args.exposure {
+        ExposureArg::Stops(ev) => ev,
+        ExposureArg::Auto => auto.unwrap_or(0.0),
+    };
+    warn_if_almost_black(&rendered.image, display, current, auto.is_some());
     if rendered.stats.cut_trees > 0 {
         eprintln!(
             "warning: {} primary ray(s) reached the budget of {} reflected and transmitted rays; their ray trees were cut short",

@@ -202,6 +202,61 @@ fn an_almost_black_image_is_reported() {
     assert!(!stderr.contains("almost black"), "{stderr}");
 }
 
+/// The trap of the almost-black warning: it must not fire on a small lit
+/// object on black (language.md's smallest useful scene), and its hint
+/// must be absolute and idempotent: the hint made at `--exposure 0` and at
+/// `--exposure 5` is the same number, and following it gives a picture
+/// that no longer warns.
+#[test]
+fn the_almost_black_hint_is_absolute_and_followed() {
+    let dir = tempfile::tempdir().unwrap();
+    let small = dir.path().join("small.hsc");
+    fs::write(
+        &small,
+        "BRDFs   { diffuse = (0.8, 0.2, 0.2), specular = (0.5, 0.5, 0.5), shininess = 20; }
+         Points  { (0, 0, 0.3); (0.1, 0.2, 0); }
+         Lights  { %2, (1, 1, 1), (1, 1, 1); }
+         Objects { Sphere %1, 0.05, #1; }",
+    )
+    .unwrap();
+    let run = |scene: &std::path::Path, ev: &str| {
+        let out = hscene()
+            .arg("render")
+            .arg(scene)
+            .args(["--resolution", "64x64", "--exposure", ev, "-o"])
+            .arg(dir.path().join("x.png"))
+            .assert()
+            .success();
+        String::from_utf8_lossy(&out.get_output().stderr).into_owned()
+    };
+    let stderr = run(&small, "0");
+    assert!(!stderr.contains("almost black"), "{stderr}");
+    let dark = dir.path().join("dark.hsc");
+    fs::write(
+        &dark,
+        "Globals { resolution = (32, 32); }
+         Points { (0, 0, 0.9); (0, 0.5, 0); }
+         BRDFs { diffuse = (1, 1, 1), ambient = (0, 0, 0); }
+         Lights { %2, (0.01, 0.01, 0.01), (0, 0, 0); }
+         Objects { Sphere %1, 0.5, #1; }",
+    )
+    .unwrap();
+    let hint = |stderr: &str| -> f64 {
+        stderr
+            .split("try --exposure ")
+            .nth(1)
+            .and_then(|s| s.split_whitespace().next())
+            .and_then(|s| s.parse().ok())
+            .unwrap_or_else(|| panic!("no hint in {stderr}"))
+    };
+    let at0 = hint(&run(&dark, "0"));
+    let at5 = hint(&run(&dark, "5"));
+    assert!((at0 - at5).abs() <= 0.1, "{at0} vs {at5}");
+    assert!(at0 > 5.0, "{at0}");
+    let followed = run(&dark, &format!("{at0}"));
+    assert!(!followed.contains("almost black"), "{followed}");
+}
+
 /// `--png-level` changes only the compressed bytes: levels 0 (stored), 3
 /// (the default) and 9 hold the same samples, in files no larger as the
 /// level rises; a level past 9 is a usage error, before any rendering.

@@ -48,7 +48,8 @@ use rayon::prelude::*;
 pub use display::{DisplayTransform, Encoding, ToneMap, srgb_decode, srgb_encode};
 pub use error::RenderError;
 pub use exposure::{
-    AUTO_KEY, DARK_LEVEL, Exposure, MAX_EXPOSURE, auto_exposure, is_almost_black, luminance,
+    AUTO_KEY, DARK_LEVEL, Exposure, MAX_EXPOSURE, auto_exposure, bright_level, is_almost_black,
+    luminance, suggested_exposure,
 };
 pub use hscene_ir::IntegratorKind;
 pub use image::Image;

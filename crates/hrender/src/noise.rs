@@ -81,7 +81,7 @@ impl Adaptive {
         }
         let max = crate::MAX_SAMPLES;
         if !(ADAPTIVE_BATCH..=max).contains(&self.max_samples)
-            || self.max_samples % ADAPTIVE_BATCH != 0
+            || !self.max_samples.is_multiple_of(ADAPTIVE_BATCH)
         {
             return Err(RenderError::InvalidOption(format!(
                 "the most samples of adaptive sampling must be a multiple of {ADAPTIVE_BATCH} from {ADAPTIVE_BATCH} to {max}, not {}",
@@ -96,7 +96,7 @@ impl Adaptive {
     #[inline]
     pub fn is_done(&self, noise: &PixelNoise) -> bool {
         let n = noise.count();
-        if n % ADAPTIVE_BATCH != 0 {
+        if !n.is_multiple_of(ADAPTIVE_BATCH) {
             return false;
         }
         match noise.relative_error() {

@@ -165,9 +165,11 @@ fn the_cell_parity_of_the_local_fermi_coordinates_decides() {
 
 /// The floor everyone writes first, an h-plane through the ball's centre
 /// with a checker, lies exactly on a wall of its checker cells: each hit's
-/// cell must not be decided by rounding. No pixel differs from all four of
-/// its neighbours (the white salt of isolated pixels), and the floor shows
-/// both colours.
+/// cell must not be decided by rounding. In the near floor, where every
+/// cell is many pixels wide, no pixel differs from all four of its
+/// neighbours (rounding made a salt of hundreds of them there), and the
+/// floor shows both colours. (Near the horizon, where cells shrink to a
+/// pixel, a checker's corners alias into single pixels by right.)
 #[test]
 fn a_checker_plane_through_the_centre_has_no_salt() {
     let compiled = hscene_lang::compile(
@@ -178,24 +180,28 @@ fn a_checker_plane_through_the_centre_has_no_salt() {
          Objects { Plane (1, 0, 0), (0, 0, 1), (-1, 0, 0), #floor; }",
     );
     let scene = compiled.scene.expect("the floor scene compiles");
-    let image = hrender::render(&scene, &hrender::RenderOptions::default(), &|_| {})
-        .expect("renders");
+    let image =
+        hrender::render(&scene, &hrender::RenderOptions::default(), &|_| {}).expect("renders");
     let (w, h) = (96usize, 72usize);
     let px = image.image.pixels();
     let at = |x: usize, y: usize| px[y * w + x][0];
     let mut isolated = 0;
     let (mut pale, mut dark) = (0, 0);
-    for y in 1..h - 1 {
+    for y in 48..h - 1 {
         for x in 1..w - 1 {
             let c = at(x, y);
             pale += usize::from(c > 0.5);
             dark += usize::from(c > 0.0 && c < 0.5);
             let differs = |v: f32| (v - c).abs() > 0.05;
-            if differs(at(x - 1, y)) && differs(at(x + 1, y)) && differs(at(x, y - 1)) && differs(at(x, y + 1)) {
+            if differs(at(x - 1, y))
+                && differs(at(x + 1, y))
+                && differs(at(x, y - 1))
+                && differs(at(x, y + 1))
+            {
                 isolated += 1;
             }
         }
     }
-    assert!(pale > 500 && dark > 500, "{pale} pale, {dark} dark");
+    assert!(pale > 300 && dark > 300, "{pale} pale, {dark} dark");
     assert_eq!(isolated, 0, "isolated pixels");
 }

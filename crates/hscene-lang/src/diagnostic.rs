@@ -159,6 +159,7 @@ codes! {
     StillAnimation = "HSC1008", Warning, "animation in a still scene";
     DegenerateTriangles = "HSC1009", Warning, "degenerate mesh triangles";
     AmbientUnderPath = "HSC1010", Warning, "ambient light under the path integrator";
+    SqueezedDisk = "HSC1011", Warning, "great disk squeezed into the middle";
 }
 
 impl Code {
@@ -345,7 +346,7 @@ mod tests {
     #[test]
     fn code_table_is_consistent() {
         assert_eq!(Code::ALL.len(), CODES.len());
-        assert_eq!(Code::ALL.len(), 48);
+        assert_eq!(Code::ALL.len(), 49);
         let mut strings = HashSet::new();
         for &(code, s, sev, title) in CODES {
             assert_eq!(code.as_str(), s);

@@ -9,8 +9,9 @@
 //! - one section after another, a blank line between them, `Name {` ... `}`;
 //! - one statement per line, indented by four spaces;
 //! - a statement whose first clause is `key = value` and that has several
-//!   clauses (a material) puts each clause on its own line at the same
-//!   indentation, as the thesis writes its `BRDFs`;
+//!   clauses (a material) puts each clause on its own line, as the thesis
+//!   writes its `BRDFs`, the second and later one level deeper than the
+//!   first, so that each material's first line (with its label) stands out;
 //! - `, ` after commas, ` = ` around `=`, `: ` after a label, no space inside
 //!   parentheses, around `->` or before the `(` of an application;
 //! - a Schläfli symbol inside a statement is written `{4,3,5}`, as
@@ -224,6 +225,11 @@ impl Writer<'_> {
         let continuation = self
             .statement
             .is_some_and(|s| s.started && !s.at_clause_start);
+        // A material's second and later clauses are indented under its
+        // first, so that one material does not run into the next.
+        let later_clause = self
+            .statement
+            .is_some_and(|s| s.started && s.at_clause_start && s.clause_per_line);
         let blank = if !self.in_section && t.kind != TokenKind::RBrace {
             // Between sections (and the comments around them).
             self.prev == Some(TokenKind::RBrace) || t.newlines_before >= 2
@@ -238,7 +244,7 @@ impl Writer<'_> {
         }
         if self.in_section && t.kind != TokenKind::RBrace {
             self.out.push_str(INDENT);
-            if continuation {
+            if continuation || later_clause {
                 self.out.push_str(INDENT);
             }
         }
@@ -315,7 +321,19 @@ mod tests {
         let src = "BRDFs { glass: ambient=(1,1,1), alpha = 0.5;\n\n\n  diffuse = (1,0,0); }";
         assert_eq!(
             fmt(src),
-            "BRDFs {\n    glass: ambient = (1, 1, 1),\n    alpha = 0.5;\n\n    diffuse = (1, 0, 0);\n}\n"
+            "BRDFs {\n    glass: ambient = (1, 1, 1),\n        alpha = 0.5;\n\n    diffuse = (1, 0, 0);\n}\n"
+        );
+    }
+
+    /// The trap: two labelled materials, each over several lines; the
+    /// later fields of each are indented under its label's line, so the
+    /// second material's label starts a line of its own at the outer level.
+    #[test]
+    fn a_materials_later_fields_are_indented_under_its_first() {
+        let src = "BRDFs { floor: ambient = (0.3, 0.3, 0.3), diffuse = (0.9, 0.9, 0.85),\nspecular = (0.2, 0.2, 0.2); ball: diffuse = (1, 0, 0),\nalpha = 0.2; }";
+        assert_eq!(
+            fmt(src),
+            "BRDFs {\n    floor: ambient = (0.3, 0.3, 0.3),\n        diffuse = (0.9, 0.9, 0.85),\n        specular = (0.2, 0.2, 0.2);\n    ball: diffuse = (1, 0, 0),\n        alpha = 0.2;\n}\n"
         );
     }
 
@@ -333,7 +351,7 @@ mod tests {
         let src = "BRDFs {\n ambient = (1,1,1), // a\n diffuse = (1,0,0), /* b */\n alpha = 1;\n}";
         assert_eq!(
             fmt(src),
-            "BRDFs {\n    ambient = (1, 1, 1), // a\n    diffuse = (1, 0, 0), /* b */\n    alpha = 1;\n}\n"
+            "BRDFs {\n    ambient = (1, 1, 1), // a\n        diffuse = (1, 0, 0), /* b */\n        alpha = 1;\n}\n"
         );
     }
 

@@ -180,6 +180,7 @@ pub(crate) fn lower(
     if let Some(camera) = &camera {
         lw.lint_scene(camera);
         lw.lint_outside_view(camera);
+        lw.lint_squeezed_disk(camera);
     }
     lw.mark_failed_references(file);
     lw.lint_unused();

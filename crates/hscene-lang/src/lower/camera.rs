@@ -53,6 +53,11 @@ impl Lowerer<'_> {
 
     /// The camera, with its defaults; `None` if a part failed or the parts
     /// do not fix a view.
+    /// Where `to` was given, if it was.
+    pub(super) fn target_span(&self) -> Option<Span> {
+        self.camera_parts.target.map(|(_, span)| span)
+    }
+
     pub(super) fn camera(&mut self) -> Option<Camera> {
         if self.camera_parts.failed {
             return None;

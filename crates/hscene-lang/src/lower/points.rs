@@ -106,10 +106,36 @@ impl Lowerer<'_> {
             return Some(Vertex::Interior(p));
         }
         self.report(
-            Diagnostic::new(Code::PointOutsideAbsolute, span, format!("point lies outside the absolute: |x| = {norm}"))
+            Diagnostic::new(Code::PointOutsideAbsolute, span, format!("point lies outside the absolute: |x| = {}", norm_text(norm)))
                 .with_label("outside the unit ball")
                 .with_help("h-points need |x| < 1 (ideal points |x| = 1); scale the coordinates into the unit ball"),
         );
         None
+    }
+}
+
+/// A norm above 1 in few digits that still show it is above 1: `1.0392`,
+/// or `1 + 2.5e-9` when four decimals would read as 1 (a message once
+/// printed all sixteen digits of `1.0392304845413265`).
+fn norm_text(norm: f64) -> String {
+    if norm.is_finite() && norm > 1.0 && norm - 1.0 < 1e-4 {
+        format!("1 + {:.1e}", norm - 1.0)
+    } else if norm.is_finite() && norm < 1e9 {
+        format!("{norm:.4}")
+    } else {
+        format!("{}", hgeom::Compact(norm))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn norms_are_short_and_above_one() {
+        assert_eq!(norm_text(1.039_230_484_541_326_5), "1.0392");
+        assert_eq!(norm_text(1.0 + 2.5e-9), "1 + 2.5e-9");
+        assert_eq!(norm_text(1.5e12), "1.5e12");
+        assert_eq!(norm_text(3.0), "3.0000");
     }
 }

@@ -84,9 +84,90 @@ impl Lowerer<'_> {
     }
 }
 
+/// The share of the angles a great-disk picture shows that may fall in
+/// the central tenth of its window before the picture counts as squeezed.
+const SQUEEZE: f64 = 0.75;
+
+/// The angle from the view axis of the net-2 ray through the disk point at
+/// distance `r` from the disk's centre, the disk moved to the view plane at
+/// ball height `f`: the Möbius translation of `(r, 0, 0)` by `(0, 0, f)` is
+/// `((1 - f²) r, 0, (1 + r²) f) / (1 + f² r²)`.
+fn disk_ray_angle(r: f64, f: f64) -> f64 {
+    ((1.0 - f * f) * r).atan2((1.0 + r * r) * f)
+}
+
+impl Lowerer<'_> {
+    /// Nets 2 and 4 show the great disk moved onto the view plane: with the
+    /// target very near the eye, the disk's every point but the middle is
+    /// seen almost sideways, and all the directions in front of the eye
+    /// crowd into the central pixels (`HSC1011`).
+    pub(super) fn lint_squeezed_disk(&mut self, camera: &Camera) {
+        if !matches!(self.settings.net, Net::GreatDisk | Net::EquidistantInterpolated) {
+            return;
+        }
+        let Some(span) = self.target_span() else {
+            return;
+        };
+        let Some(frame) = canonical_frame(camera) else {
+            return;
+        };
+        let f = frame.view_distance;
+        let window = match self.settings.fov {
+            Some(fov) => match fov_window(fov, self.settings.net, self.settings.resolution, f) {
+                Ok(w) => w,
+                Err(_) => return,
+            },
+            None => self.settings.window,
+        };
+        let r = (window.width.max(window.height) / 2.0).min(1.0);
+        let share = disk_ray_angle(0.1 * r, f) / disk_ray_angle(r, f);
+        if share > SQUEEZE {
+            self.report(
+                Diagnostic::new(
+                    Code::SqueezedDisk,
+                    span,
+                    format!(
+                        "with `to` this close to the eye, net {} crowds {:.0} % of the directions it shows into the central tenth of the picture",
+                        self.settings.net.index(),
+                        100.0 * share
+                    ),
+                )
+                .with_help("move `to` farther from the eye (a ball distance of 0.1 or more suits most pictures), or use net 0 with `fov`"),
+            );
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use crate::diagnostic::Code;
+
+    /// Net 2 with `to` a hair from the eye crowds nearly every direction
+    /// into the middle and is linted; the usual distance is not, nor net 0.
+    #[test]
+    fn a_great_disk_squeezed_by_a_near_target_is_linted() {
+        let squeezed = |to: f64, net: u32| {
+            let src = format!(
+                "Globals {{ net_type = {net}; to = (0, 0, {to}); window_size = (1.6, 1.6); }}
+                 BRDFs {{ diffuse = (1, 1, 1); }} Objects {{ Sphere (0, 0, 0.3), 0.05, #1; }}"
+            );
+            crate::compile(&src)
+                .diagnostics
+                .iter()
+                .any(|d| d.code == Code::SqueezedDisk)
+        };
+        assert!(squeezed(0.005, 2));
+        assert!(squeezed(0.005, 4));
+        assert!(!squeezed(0.1, 2));
+        assert!(!squeezed(0.45, 2));
+        assert!(!squeezed(0.005, 0));
+        // The angle formula: the disk's centre looks straight ahead, its
+        // rim (r = 1, translated) at `atan2(1 - f², 2 f)` from the axis.
+        assert_eq!(super::disk_ray_angle(0.0, 0.3), 0.0);
+        let f = 0.3;
+        let rim = super::disk_ray_angle(1.0, f);
+        assert!((rim - (1.0 - f * f).atan2(2.0 * f)).abs() < 1e-15);
+    }
 
     /// Lints of a scene with one sphere of radius 0.05 at ball point
     /// `(x, 0, 0.3)`, seen through `fov = 30` (half-angle 15 degrees).

@@ -371,7 +371,7 @@ pub(super) const KEYWORDS: &[KeywordRow] = &[
         Signature {
             params: &[Param::Symbol],
             takes: "a Schläfli symbol and a material",
-            usage: "write `Honeycomb {4,3,5}, #M;` (one of the 15 regular honeycombs of hyperbolic space; options edges = w, faces = #F, vertices = r, depth = N, colors = (#A, #B), at = %P)",
+            usage: "write `Honeycomb {4,3,5}, #M;` (one of the 15 regular honeycombs of hyperbolic space; options edges = w, faces = #F, vertices = r, depth = N, colors = (#A, #B), rings = (0, 1) for a uniform honeycomb, at = %P)",
             options: HONEYCOMB,
         },
     ),
@@ -396,5 +396,23 @@ mod tests {
         let before = names.len();
         names.dedup();
         assert_eq!(names.len(), before);
+    }
+
+    /// The help of `Honeycomb` names every option it takes (it once left
+    /// out `rings`): every option of its row but the alias `wireframe`.
+    #[test]
+    fn the_honeycomb_help_names_every_option() {
+        let row = keyword("Honeycomb").expect("a row");
+        for option in row.signature.options {
+            let word = super::super::options::option_word(*option);
+            if word == "wireframe" {
+                continue;
+            }
+            assert!(
+                row.signature.usage.contains(&format!("{word} = ")),
+                "{word} missing from {}",
+                row.signature.usage
+            );
+        }
     }
 }

@@ -40,6 +40,15 @@ pub(super) enum ObjectOption {
     Rings,
 }
 
+/// The word of an option, as scenes spell it.
+#[cfg(test)]
+pub(super) fn option_word(option: ObjectOption) -> &'static str {
+    OPTIONS
+        .iter()
+        .find(|(_, o)| *o == option)
+        .map_or("", |(w, _)| w)
+}
+
 /// Every object option, in the order the help lists them.
 const OPTIONS: &[(&str, ObjectOption)] = &[
     ("wireframe", ObjectOption::Wireframe),
