@@ -193,7 +193,14 @@ impl Bsdf {
         let d = -wo;
         // The geometric normal on the side the path came from.
         let g = if entering { geometric } else { -geometric };
-        let mirrored = renormalize(p, reflect(d, g));
+        // Mirror and refraction follow the shading normal (a smoothed mesh
+        // is smooth glass, not cut crystal), unless it sends the ray to the
+        // wrong side of the true surface; on every other surface the two
+        // normals are the same.
+        let mut mirrored = renormalize(p, reflect(d, n));
+        if !(lorentz::dot(mirrored, g) > 0.0) {
+            mirrored = renormalize(p, reflect(d, g));
+        }
         if pick < p_diffuse + p_glossy + p_mirror {
             let w = self.mirror / p_mirror;
             return Some(Scatter {
@@ -224,9 +231,12 @@ impl Bsdf {
         };
         // Reflected with the Fresnel probability (1 on total internal
         // reflection), refracted otherwise: the weight is the lobe's own.
-        let refracted = refract(d, g, n1, n2);
+        let refracted = match refract(d, n, n1, n2) {
+            Some(t) if lorentz::dot(t, g) < 0.0 => Some(t),
+            _ => refract(d, g, n1, n2),
+        };
         let f = match refracted {
-            Some(_) => fresnel(-lorentz::dot(d, g), n1, n2),
+            Some(_) => fresnel(-lorentz::dot(d, n), n1, n2),
             None => 1.0,
         };
         let dir = match refracted {

@@ -138,9 +138,22 @@ impl<'s> Whitted<'s> {
         }
 
         if depth < self.scene.max_depth {
+            // A smoothed mesh bends its mirror and refracted rays by the
+            // interpolated normal too, or glass looks like cut crystal
+            // under smooth shading; where that normal would send a ray to
+            // the wrong side of the true surface, the true normal decides.
+            let bend = if hit.shading == hit.normal {
+                n
+            } else {
+                lit_normal
+            };
+            let mut mirrored = renormalize(p, reflect(d, bend));
+            if !(lorentz::dot(mirrored, n) > 0.0) {
+                mirrored = renormalize(p, reflect(d, n));
+            }
             let reflected = Ray {
                 origin: p,
-                dir: renormalize(p, reflect(d, n)),
+                dir: mirrored,
             };
             if m.reflection > 0.0 && weight * m.reflection > MIN_WEIGHT && budget.take() {
                 let w = weight * m.reflection;
@@ -154,7 +167,11 @@ impl<'s> Whitted<'s> {
                 };
                 // Total internal reflection sends the transmitted share along
                 // the mirror ray (thesis Fig. 31).
-                let dir = refract(d, n, n1, n2).unwrap_or(reflected.dir);
+                let dir = match refract(d, bend, n1, n2) {
+                    Some(t) if lorentz::dot(t, n) < 0.0 => t,
+                    Some(_) => refract(d, n, n1, n2).unwrap_or(reflected.dir),
+                    None => reflected.dir,
+                };
                 let next = Ray {
                     origin: p,
                     dir: renormalize(p, dir),

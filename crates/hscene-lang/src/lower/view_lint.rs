@@ -102,7 +102,10 @@ impl Lowerer<'_> {
     /// seen almost sideways, and all the directions in front of the eye
     /// crowd into the central pixels (`HSC1011`).
     pub(super) fn lint_squeezed_disk(&mut self, camera: &Camera) {
-        if !matches!(self.settings.net, Net::GreatDisk | Net::EquidistantInterpolated) {
+        if !matches!(
+            self.settings.net,
+            Net::GreatDisk | Net::EquidistantInterpolated
+        ) {
             return;
         }
         let Some(span) = self.target_span() else {
