@@ -307,15 +307,22 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
     ExitCode::SUCCESS
 }
 
-/// The lint for an image that would come out almost black (even its
-/// bright pixels below level 16 of 255), with the absolute exposure that
-/// would fix it: following the hint gives a picture this lint passes.
+/// The lint for an image that is black (nothing lit: a forgotten light) or
+/// would come out almost black (even its bright pixels below level 16 of
+/// 255), with the absolute exposure that would fix it: following the hint
+/// gives a picture this lint passes.
 fn warn_if_almost_black(
     image: &hrender::Image,
     display: DisplayTransform,
     current: f64,
     auto: bool,
 ) {
+    if !image.pixels().is_empty() && hrender::bright_level(image).is_none() {
+        eprintln!(
+            "warning: the image is black: no pixel receives any light; add a light (`Lights`), an `ambient` colour to the materials (with the global `ambient`), `emission`, or a `background`"
+        );
+        return;
+    }
     if !hrender::is_almost_black(image, display) {
         return;
     }

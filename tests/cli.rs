@@ -229,3 +229,48 @@ fn every_net_renders() {
         assert!(samples.iter().all(|s| s.is_finite()), "net {net}");
     }
 }
+
+/// Piped (as in CI, or `| less`), `check` and `render` keep the full
+/// report, every `help:` line included, and drop only the colour; `--format
+/// short` still gives one line per diagnostic.
+#[test]
+fn piped_output_keeps_the_help_and_drops_the_colour() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("typo.hsc");
+    fs::write(&scene, "Globals { resolutoin = (8, 8); }").unwrap();
+    let out = hscene().arg("check").arg(&scene).assert().failure();
+    let text = String::from_utf8_lossy(&out.get_output().stdout).into_owned();
+    assert!(text.contains("help:") || text.contains("help"), "{text}");
+    assert!(text.contains("did you mean `resolution`"), "{text}");
+    assert!(!text.contains('\u{1b}'), "colour in a pipe: {text:?}");
+    let out = hscene()
+        .args(["render", "-o"])
+        .arg(dir.path().join("x.png"))
+        .arg(&scene)
+        .assert()
+        .failure();
+    let text = String::from_utf8_lossy(&out.get_output().stderr).into_owned();
+    assert!(text.contains("did you mean `resolution`"), "{text}");
+    assert!(!text.contains('\u{1b}'), "colour in a pipe: {text:?}");
+    let out = hscene()
+        .args(["check", "--format", "short"])
+        .arg(&scene)
+        .assert()
+        .failure();
+    let text = String::from_utf8_lossy(&out.get_output().stdout).into_owned();
+    assert_eq!(text.lines().count(), 1, "{text}");
+}
+
+/// `hscene explain` takes a code as a user types it: `313`, `0313`,
+/// `hsc0313` and `HSC0313` are the same code.
+#[test]
+fn explain_accepts_short_codes() {
+    for code in ["313", "0313", "hsc0313", "HSC0313"] {
+        hscene()
+            .args(["explain", code])
+            .assert()
+            .success()
+            .stdout(predicate::str::contains("HSC0313"));
+    }
+    hscene().args(["explain", "99999"]).assert().failure();
+}

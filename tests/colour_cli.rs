@@ -161,21 +161,20 @@ fn tone_curves_and_auto_exposure() {
     assert!(sum(&auto) > sum(&clip));
 }
 
+/// A scene lit only by a faint light far away.
+const DARK_SCENE: &str = "Globals { resolution = (32, 32); }
+         Points { (0, 0, 0.9); (0, 0.5, 0); }
+         BRDFs { diffuse = (1, 1, 1), ambient = (0, 0, 0); }
+         Lights { %2, (0.01, 0.01, 0.01), (0, 0, 0); }
+         Objects { Sphere %1, 0.5, #1; }";
+
 /// A scene lit by a faint light far away warns that it is almost black and
 /// names the exposure that would fix it; the Appendix A scene does not.
 #[test]
 fn an_almost_black_image_is_reported() {
     let dir = tempfile::tempdir().unwrap();
     let scene = dir.path().join("dark.hsc");
-    fs::write(
-        &scene,
-        "Globals { resolution = (32, 32); }
-         Points { (0, 0, 0.9); (0, 0.5, 0); }
-         BRDFs { diffuse = (1, 1, 1), ambient = (0, 0, 0); }
-         Lights { %2, (0.01, 0.01, 0.01), (0, 0, 0); }
-         Objects { Sphere %1, 0.5, #1; }",
-    )
-    .unwrap();
+    fs::write(&scene, DARK_SCENE).unwrap();
     hscene()
         .arg("render")
         .arg(&scene)
@@ -231,16 +230,19 @@ fn the_almost_black_hint_is_absolute_and_followed() {
     };
     let stderr = run(&small, "0");
     assert!(!stderr.contains("almost black"), "{stderr}");
-    let dark = dir.path().join("dark.hsc");
+    // A scene with nothing lit at all (the light forgotten) is black, and
+    // says so, with what to add.
+    let unlit = dir.path().join("unlit.hsc");
     fs::write(
-        &dark,
-        "Globals { resolution = (32, 32); }
-         Points { (0, 0, 0.9); (0, 0.5, 0); }
-         BRDFs { diffuse = (1, 1, 1), ambient = (0, 0, 0); }
-         Lights { %2, (0.01, 0.01, 0.01), (0, 0, 0); }
-         Objects { Sphere %1, 0.5, #1; }",
+        &unlit,
+        "BRDFs { diffuse = (1, 1, 1); } Objects { Sphere (0, 0, 0.2), 0.05, #1; }",
     )
     .unwrap();
+    let stderr = run(&unlit, "0");
+    assert!(stderr.contains("the image is black"), "{stderr}");
+    assert!(stderr.contains("add a light"), "{stderr}");
+    let dark = dir.path().join("dark.hsc");
+    fs::write(&dark, DARK_SCENE).unwrap();
     let hint = |stderr: &str| -> f64 {
         stderr
             .split("try --exposure ")

@@ -159,3 +159,29 @@ fn example_scenes_compile_without_errors() {
     }
     assert!(checked >= 4, "only {checked} scenes");
 }
+
+/// A blank line inside a markdown table ends it: the rows after it fall
+/// out (the `checker` rows of the BRDF table once did). No table of
+/// language.md is followed, after one blank line, by rows of the same
+/// width without a header of their own.
+#[test]
+fn no_table_is_split_by_a_blank_line() {
+    let md = include_str!("../../../docs/language.md");
+    let lines: Vec<&str> = md.lines().collect();
+    let cells = |l: &str| l.matches('|').count();
+    for k in 2..lines.len() {
+        let (before, blank, row) = (lines[k - 2], lines[k - 1], lines[k]);
+        let continues = before.starts_with('|')
+            && blank.trim().is_empty()
+            && row.starts_with('|')
+            && cells(before) == cells(row)
+            && !lines
+                .get(k + 1)
+                .is_some_and(|l| l.starts_with("|--") || l.starts_with("|-"));
+        assert!(
+            !continues,
+            "a table is split by the blank line before line {}: {row}",
+            k + 1
+        );
+    }
+}
