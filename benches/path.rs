@@ -49,8 +49,15 @@ struct Box3 {
     triangles: Vec<([[f64; 3]; 3], [f64; 3])>,
     /// Quads (four corners in order) with their albedo, for the twin.
     quads: Vec<([[f64; 3]; 4], [f64; 3])>,
-    /// Spheres: centre, radius, albedo, emission.
-    spheres: Vec<([f64; 3], f64, [f64; 3], [f64; 3])>,
+    spheres: Vec<Ball>,
+}
+
+/// A sphere of the box.
+struct Ball {
+    centre: [f64; 3],
+    radius: f64,
+    albedo: [f64; 3],
+    emission: [f64; 3],
 }
 
 /// The scale of the hyperbolic box: one hyperbolic unit per 1/0.7 of the
@@ -121,9 +128,24 @@ fn cornell() -> Box3 {
         triangles,
         quads,
         spheres: vec![
-            ([-0.4, -0.6, 2.3], 0.4, WHITE, [0.0; 3]),
-            ([0.45, -0.65, 1.8], 0.35, WHITE, [0.0; 3]),
-            ([0.0, 0.5, 2.0], 0.15, [0.0; 3], LIGHT),
+            Ball {
+                centre: [-0.4, -0.6, 2.3],
+                radius: 0.4,
+                albedo: WHITE,
+                emission: [0.0; 3],
+            },
+            Ball {
+                centre: [0.45, -0.65, 1.8],
+                radius: 0.35,
+                albedo: WHITE,
+                emission: [0.0; 3],
+            },
+            Ball {
+                centre: [0.0, 0.5, 2.0],
+                radius: 0.15,
+                albedo: [0.0; 3],
+                emission: LIGHT,
+            },
         ],
     }
 }
@@ -173,13 +195,13 @@ fn cornell_hsc(b: &Box3, scale: f64, size: u32, fov: f64) -> String {
             ball(t[2], scale)
         );
     }
-    for (centre, r, c, e) in &b.spheres {
-        let k = material(*c, *e, &mut s);
+    for sphere in &b.spheres {
+        let k = material(sphere.albedo, sphere.emission, &mut s);
         let _ = writeln!(
             objects,
             "  Sphere {}, {}, #m{k};",
-            ball(*centre, scale),
-            r * scale
+            ball(sphere.centre, scale),
+            sphere.radius * scale
         );
     }
     s.push_str("}\nObjects {\n");
@@ -194,12 +216,13 @@ fn cornell_json(b: &Box3, size: u32, fov: f64, spp: u32, seed: u64) -> String {
     let spheres: Vec<String> = b
         .spheres
         .iter()
-        .map(|(c, r, a, e)| {
+        .map(|b| {
             format!(
-                "{{\"center\": {}, \"radius\": {r}, \"albedo\": {}, \"emission\": {}}}",
-                v(*c),
-                v(*a),
-                v(*e)
+                "{{\"center\": {}, \"radius\": {}, \"albedo\": {}, \"emission\": {}}}",
+                v(b.centre),
+                b.radius,
+                v(b.albedo),
+                v(b.emission)
             )
         })
         .collect();
