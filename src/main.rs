@@ -317,7 +317,7 @@ fn warn_if_almost_black(
     current: f64,
     auto: bool,
 ) {
-    if !image.pixels().is_empty() && hrender::bright_level(image).is_none() {
+    if !image.pixels().is_empty() && hrender::is_black(image) {
         eprintln!(
             "warning: the image is black: no pixel receives any light; add a light (`Lights`), an `ambient` colour to the materials (with the global `ambient`), `emission`, or a `background`"
         );

@@ -148,13 +148,44 @@ pub fn bright_level(image: &Image) -> Option<f64> {
     Some(f64::from(*v))
 }
 
-/// True when the picture would look almost black: even its bright pixels
-/// ([`bright_level`]) stay below [`DARK_LEVEL`] once tone-mapped and
-/// encoded by `display`. A small object on a black background is not dark
-/// (its own pixels are bright); an image that sees nothing at all is not
-/// "almost black" either (there is nothing to expose).
+/// True when the picture would look almost black: fewer than 1 % of the
+/// pixels that see anything reach [`DARK_LEVEL`] once tone-mapped and
+/// encoded by `display` (so its [`bright_level`] stays below it). A small
+/// object on a black background is not dark (its own pixels are bright);
+/// an image that sees nothing at all is not "almost black" either (there
+/// is nothing to expose: [`is_black`]). One pass, no allocation: the level
+/// is turned into a linear threshold once.
 pub fn is_almost_black(image: &Image, display: DisplayTransform) -> bool {
-    bright_level(image).is_some_and(|v| display.apply(v as f32) < DARK_LEVEL)
+    let threshold = dark_threshold(display);
+    let (mut lit, mut bright) = (0u64, 0u64);
+    for p in image.pixels() {
+        let m = p[0].max(p[1]).max(p[2]);
+        if m > 0.0 {
+            lit += 1;
+            bright += u64::from(m >= threshold);
+        }
+    }
+    lit > 0 && bright * 100 < lit
+}
+
+/// True when no pixel sees anything: every channel of every pixel is 0.
+pub fn is_black(image: &Image) -> bool {
+    image.pixels().iter().all(|p| !p.iter().any(|c| *c > 0.0))
+}
+
+/// The least linear value that `display` stores at [`DARK_LEVEL`] or above
+/// (every tone curve and encoding is monotone), by bisection.
+fn dark_threshold(display: DisplayTransform) -> f32 {
+    let (mut lo, mut hi) = (0.0f32, 1.0f32);
+    for _ in 0..40 {
+        let mid = 0.5 * (lo + hi);
+        if display.apply(mid) >= DARK_LEVEL {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    hi
 }
 
 /// The `--exposure` (absolute stops) that brings the bright pixels of an

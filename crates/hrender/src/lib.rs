@@ -49,7 +49,7 @@ pub use display::{DisplayTransform, Encoding, ToneMap, srgb_decode, srgb_encode}
 pub use error::RenderError;
 pub use exposure::{
     AUTO_KEY, DARK_LEVEL, Exposure, MAX_EXPOSURE, auto_exposure, bright_level, is_almost_black,
-    luminance, suggested_exposure,
+    is_black, luminance, suggested_exposure,
 };
 pub use hscene_ir::IntegratorKind;
 pub use image::Image;
@@ -280,7 +280,10 @@ impl RenderJob<'_> {
                 };
                 sum += c;
                 failed |= f;
-                noise.add(c);
+                // One sample has no spread to measure: nothing to count.
+                if self.sampler.count() > 1 {
+                    noise.add(c);
+                }
                 k += 1;
                 if let Some(a) = &self.adaptive
                     && a.is_done(&noise)

@@ -10,7 +10,13 @@
 use hscene_ir::Rgb;
 
 use crate::error::RenderError;
-use crate::exposure::luminance;
+
+/// Rec. 709 luminance of a linear colour; negative channels count as 0
+/// (the weights of [`crate::luminance`], in f64).
+#[inline]
+fn luminance_of(c: Rgb) -> f64 {
+    0.2126 * c.r.max(0.0) + 0.7152 * c.g.max(0.0) + 0.0722 * c.b.max(0.0)
+}
 
 /// Samples an adaptive pixel takes between two looks at its noise, and
 /// at least: fewer would judge the noise from too small a sample (a pixel
@@ -31,7 +37,7 @@ impl PixelNoise {
     /// Count one sample.
     #[inline]
     pub fn add(&mut self, c: Rgb) {
-        let y = luminance([c.r as f32, c.g as f32, c.b as f32]);
+        let y = luminance_of(c);
         self.n += 1;
         let delta = y - self.mean;
         self.mean += delta / f64::from(self.n);
@@ -127,7 +133,7 @@ mod tests {
         let p = at(100);
         let ys: Vec<f64> = draws[..100]
             .iter()
-            .map(|&v| luminance([v as f32; 3]))
+            .map(|&v| luminance_of(grey(v)))
             .collect();
         let mean = ys.iter().sum::<f64>() / 100.0;
         let var = ys.iter().map(|y| (y - mean).powi(2)).sum::<f64>() / 99.0;
