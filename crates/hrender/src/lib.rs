@@ -33,6 +33,7 @@ mod output_check;
 mod ray_budget;
 mod sampling;
 mod scene;
+mod spherical_triangle;
 mod tangent;
 mod texture;
 mod trace_stats;

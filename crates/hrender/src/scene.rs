@@ -44,6 +44,10 @@ pub struct PreparedObject {
     /// canonical frame: an emissive one is a light that can be sampled by
     /// solid angle.
     pub ball: Option<(DVec4, f64)>,
+    /// For an emissive object with flat faces (a polygon, a polyhedron),
+    /// its faces as triangles in the canonical frame: the path integrator
+    /// samples them by solid angle. Empty for every other object.
+    pub faces: Vec<[DVec4; 3]>,
 }
 
 /// Rays that leave a surface ignore hits closer than this (hyperbolic
@@ -87,16 +91,19 @@ impl PreparedObject {
         stages: &[Isometry],
         footprint: Option<&PixelFootprint>,
     ) -> Surfaces {
-        Self::moved(shape, stages, footprint).0
+        Self::moved(shape, stages, footprint, false).0
     }
 
-    /// [`PreparedObject::surfaces_of`], and the centre and radius of the
-    /// moved shape if it is an h-sphere.
+    /// [`PreparedObject::surfaces_of`], what an emitter needs of the moved
+    /// shape: its centre and radius if it is an h-sphere, and with
+    /// `faces`, its flat faces cut into triangles (fans; a face with an
+    /// ideal vertex has no finite area and is left out).
     fn moved(
         shape: &ir::Shape,
         stages: &[Isometry],
         footprint: Option<&PixelFootprint>,
-    ) -> (Surfaces, Option<(DVec4, f64)>) {
+        faces: bool,
+    ) -> (Surfaces, Option<(DVec4, f64)>, Vec<[DVec4; 3]>) {
         // A camera at the origin has identity stages, and moving by the
         // identity only copies (every cached quantity is recomputed from
         // the same inputs by the same formulas): tens of thousands of rods
@@ -114,12 +121,30 @@ impl PreparedObject {
             s.sphere()
                 .map(|b| (b.center().to_hyperboloid(), b.radius()))
         };
+        let triangles = |s: &ir::Shape| -> Vec<[DVec4; 3]> {
+            if !faces {
+                return Vec::new();
+            }
+            s.faces()
+                .iter()
+                .filter_map(|f| {
+                    f.vertices()
+                        .iter()
+                        .map(|v| match v {
+                            hgeom::Vertex::Interior(p) => Some(p.to_hyperboloid()),
+                            hgeom::Vertex::Ideal(_) => None,
+                        })
+                        .collect::<Option<Vec<DVec4>>>()
+                })
+                .flat_map(|v| (1..v.len().saturating_sub(1)).map(move |k| [v[0], v[k], v[k + 1]]))
+                .collect()
+        };
         match moved {
             Some(shape) => {
-                let b = ball(&shape);
-                (shape.into_surfaces(), b)
+                let (b, t) = (ball(&shape), triangles(&shape));
+                (shape.into_surfaces(), b, t)
             }
-            None => (shape.to_surfaces(), ball(shape)),
+            None => (shape.to_surfaces(), ball(shape), triangles(shape)),
         }
     }
 
@@ -262,7 +287,9 @@ impl PreparedScene {
                         scene.materials.len()
                     )));
                 }
-                let (surfaces, ball) = PreparedObject::moved(&o.shape, stages, footprint);
+                let emits = !scene.materials[o.material.index()].emission.is_black();
+                let (surfaces, ball, faces) =
+                    PreparedObject::moved(&o.shape, stages, footprint, emits);
                 if !surfaces.iter().all(|s| s.is_traceable()) {
                     return Err(RenderError::OutOfRange {
                         what: format!("object {}", index + 1),
@@ -281,6 +308,7 @@ impl PreparedScene {
                         .fold(o.placement, |f, iso| iso.compose(&f))
                         .inverse(),
                     ball,
+                    faces,
                 })
             })
             .collect();

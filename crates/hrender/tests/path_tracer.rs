@@ -309,3 +309,46 @@ fn same_seed_same_image_on_any_thread_count() {
     .expect("renders");
     assert_eq!(one.image.pixels(), two.image.pixels());
 }
+
+/// A Lambertian floor under an emitting geodesic triangle reflects
+/// `ρ/π E` at the origin, with `E = L/2 |Σ γ_i (m_i · n)|` (Lambert's
+/// formula for a polygon, in the tangent space at the point: the edges'
+/// directions `a_i`, the angles `γ_i` between consecutive ones and the unit
+/// normals `m_i` of the planes they span; at the ball's centre the unit
+/// tangent towards a point is its ball direction). The triangle is sampled
+/// exactly by solid angle, so the estimate is also far less noisy than the
+/// lobes' directions alone would make it.
+#[test]
+fn irradiance_under_an_emitting_triangle() {
+    let v = [[0.1, 0.3, 0.05], [-0.15, 0.35, 0.1], [0.0, 0.32, -0.2]];
+    let scene = compile(&format!(
+        "Globals {{ resolution = (1, 1); from = (0.3, 0.25, -0.3); to = (0, 0, 0); fov = 0.5;
+                    ambient = (0, 0, 0); background = (0, 0, 0); }}
+         BRDFs {{ floor: diffuse = (0.8, 0.8, 0.8); lamp: emission = (1, 1, 1); }}
+         Objects {{ Plane (0.5, 0, 0), (0, 0, 0.5), (-0.5, 0, 0.1), #floor;
+                    Polygon (({}, {}, {}), ({}, {}, {}), ({}, {}, {})), #lamp; }}",
+        v[0][0], v[0][1], v[0][2], v[1][0], v[1][1], v[1][2], v[2][0], v[2][1], v[2][2]
+    ));
+    let dirs: Vec<hgeom::glam::DVec3> = v
+        .iter()
+        .map(|p| hgeom::glam::DVec3::new(p[0], p[1], p[2]).normalize())
+        .collect();
+    let n = hgeom::glam::DVec3::Y;
+    let mut sum = 0.0;
+    for k in 0..3 {
+        let (a, b) = (dirs[k], dirs[(k + 1) % 3]);
+        sum += a.angle_between(b) * a.cross(b).normalize().dot(n);
+    }
+    let expected = 0.8 / std::f64::consts::PI * (0.5 * sum.abs());
+    let mut estimates = Vec::new();
+    for seed in 0..8 {
+        let r = hrender::render(&scene, &path(256, seed), &|_| {}).expect("renders");
+        estimates.push(luminance(r.image.pixels()[0]));
+    }
+    let (mean, error) = mean_and_error(&estimates);
+    assert!(
+        (mean - expected).abs() < 5.0 * error + 1e-4 * expected,
+        "{mean} vs {expected} (standard error {error})"
+    );
+    assert!(error < 0.02 * expected, "the test can tell: {error}");
+}

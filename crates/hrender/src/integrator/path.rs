@@ -12,8 +12,10 @@
 //! solid angle ([`SphereCone`]).
 //!
 //! At each vertex: emission (weighted against light sampling by the power
-//! heuristic), next-event estimation to every point light and every
-//! spherical emitter (area lights and emissive h-spheres), then one
+//! heuristic), next-event estimation to every point light, every
+//! spherical emitter (area lights and emissive h-spheres, by the cone they
+//! subtend) and every triangle of an emissive polygon or polyhedron (by
+//! the spherical triangle it subtends), then one
 //! direction from the material's lobes ([`Bsdf`]); Russian roulette after
 //! three bounces (a path survives with the probability of its largest
 //! throughput channel, when below 1), at most [`MAX_PATH_LENGTH`] bounces.
@@ -29,6 +31,7 @@ use crate::light_sampling::SphereCone;
 use crate::material::reflectances;
 use crate::sampling::SampleStream;
 use crate::scene::{Nearest, PreparedScene, T_MIN};
+use crate::spherical_triangle::SphericalTriangle;
 use crate::tangent::is_unit;
 use crate::trace_stats::TraceStats;
 
@@ -51,10 +54,20 @@ struct SphereEmitter {
     object: Option<usize>,
 }
 
+/// An emissive object with flat faces (a polygon, a polyhedron).
+struct FaceEmitter {
+    object: usize,
+    /// The radiance it emits, from both sides.
+    radiance: Rgb,
+    /// Its faces as geodesic triangles.
+    triangles: Vec<[DVec4; 3]>,
+}
+
 /// The path integrator over a prepared scene.
 pub struct PathTracer<'s> {
     scene: &'s PreparedScene,
     emitters: Vec<SphereEmitter>,
+    faces: Vec<FaceEmitter>,
     /// Paths end at this many diffuse or glossy vertices (after light
     /// sampling there).
     smooth_vertices: u32,
@@ -88,8 +101,16 @@ impl<'s> PathTracer<'s> {
                 });
             }
         }
+        let mut faces = Vec::new();
         for (index, object) in scene.objects.iter().enumerate() {
             let m = &scene.materials[object.material];
+            if !object.faces.is_empty() && !m.emission.is_black() {
+                faces.push(FaceEmitter {
+                    object: index,
+                    radiance: m.emission,
+                    triangles: object.faces.clone(),
+                });
+            }
             if let (Some((centre, radius)), false) = (object.ball, m.emission.is_black()) {
                 emitters.push(SphereEmitter {
                     centre,
@@ -103,6 +124,7 @@ impl<'s> PathTracer<'s> {
         PathTracer {
             scene,
             emitters,
+            faces,
             smooth_vertices: MAX_PATH_LENGTH,
         }
     }
@@ -230,6 +252,84 @@ impl<'s> PathTracer<'s> {
         sum
     }
 
+    /// Light from the emissive faces: for each triangle, one direction drawn
+    /// uniformly from the solid angle it fills ([`SphericalTriangle`]),
+    /// weighted against the lobes by the power heuristic.
+    #[allow(clippy::too_many_arguments)]
+    fn direct_from_faces(
+        &self,
+        p: DVec4,
+        n: DVec4,
+        wo: DVec4,
+        bsdf: &Bsdf,
+        own: usize,
+        stream: &mut SampleStream,
+        stats: &mut TraceStats,
+    ) -> Rgb {
+        let mut sum = Rgb::BLACK;
+        for e in self.faces.iter().filter(|e| e.object != own) {
+            for tri in &e.triangles {
+                let (u1, u2) = (stream.next_unit(), stream.next_unit());
+                let Some(solid) = SphericalTriangle::new(p, *tri) else {
+                    continue;
+                };
+                let wi = solid.sample(u1, u2);
+                let cos = lorentz::dot(n, wi);
+                if !(cos > 0.0) {
+                    continue;
+                }
+                let ray = Ray { origin: p, dir: wi };
+                let Some(t) = self.scene.objects[e.object]
+                    .intersect(&ray, 0.0, f64::INFINITY)
+                    .map(|h| h.t)
+                else {
+                    continue;
+                };
+                let t_max = t - T_MIN;
+                stats.rays += 1;
+                let shadow = if t_max > T_MIN {
+                    self.scene
+                        .transmittance(&ray, T_MIN, t_max, t_max.tanh(), clear_transmission)
+                } else {
+                    1.0
+                };
+                if shadow == 0.0 {
+                    continue;
+                }
+                let pdf = 1.0 / solid.solid_angle();
+                let w = power_heuristic(pdf, bsdf.pdf(n, wo, wi));
+                sum += bsdf.eval(n, wo, wi).tint(e.radiance) * (cos * shadow * w / pdf);
+            }
+        }
+        sum
+    }
+
+    /// The power-heuristic weight of emission from the faces of object
+    /// `index` at `point`, reached by a direction the last vertex's lobes
+    /// drew: light sampling would have drawn it from the one triangle whose
+    /// solid angle holds it.
+    fn face_weight(&self, index: usize, point: DVec4, last: LastScatter) -> f64 {
+        let Some((from, on, pdf_bsdf)) = last else {
+            return 1.0;
+        };
+        let Some(e) = self.faces.iter().find(|e| e.object == index) else {
+            return 1.0;
+        };
+        if on == index {
+            return 1.0;
+        }
+        let Some(d) = lorentz::unit_tangent_towards(from, point) else {
+            return 1.0;
+        };
+        e.triangles
+            .iter()
+            .filter_map(|tri| SphericalTriangle::new(from, *tri))
+            .find(|solid| solid.contains(d))
+            .map_or(1.0, |solid| {
+                power_heuristic(pdf_bsdf, 1.0 / solid.solid_angle())
+            })
+    }
+
     /// Where `ray` meets emitter `e`'s sphere.
     fn emitter_distance(&self, e: &SphereEmitter, ray: &Ray) -> Option<f64> {
         match (&e.surface, e.object) {
@@ -298,9 +398,10 @@ impl Integrator for PathTracer<'_> {
             let object = &self.scene.objects[index];
             let m = &self.scene.materials[object.material_of(hit.part)];
             if !m.emission.is_black() {
-                let w = self
-                    .emitter_of(index)
-                    .map_or(1.0, |k| self.emission_weight(k, last));
+                let w = match self.emitter_of(index) {
+                    Some(k) => self.emission_weight(k, last),
+                    None => self.face_weight(index, hit.point, last),
+                };
                 radiance += beta.tint(m.emission) * w;
             }
             let entering = lorentz::dot(d, hit.normal) < 0.0;
@@ -311,6 +412,10 @@ impl Integrator for PathTracer<'_> {
             let bsdf = Bsdf::new(m, diffuse);
             if bsdf.is_smooth() {
                 radiance += beta.tint(self.direct(p, n, wo, &bsdf, index, stream, stats));
+                if !self.faces.is_empty() {
+                    radiance +=
+                        beta.tint(self.direct_from_faces(p, n, wo, &bsdf, index, stream, stats));
+                }
                 smooth += 1;
                 if smooth >= self.smooth_vertices {
                     break;
