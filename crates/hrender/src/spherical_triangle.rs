@@ -121,7 +121,7 @@ impl SphericalTriangle {
 mod tests {
     use super::*;
     use crate::sampling::SampleStream;
-    use hgeom::{ConvexPolygon, Point, Ray, Shape, Vertex};
+    use hgeom::{ConvexPolygon, Point, Ray, Vertex};
 
     fn at(x: f64, y: f64, z: f64) -> Point {
         Point::from_coords(DVec3::new(x, y, z)).unwrap()
