@@ -224,32 +224,53 @@ impl<'s> PathTracer<'s> {
             let Some(cone) = SphereCone::new(p, e.centre, e.radius) else {
                 continue;
             };
+            let at = ShadingPoint { p, n, wo, bsdf };
             let wi = cone.sample(u1, u2);
-            let cos = lorentz::dot(n, wi);
-            if !(cos > 0.0) {
-                continue;
-            }
-            let ray = Ray { origin: p, dir: wi };
-            let Some(t) = self.emitter_distance(e, &ray) else {
-                continue;
-            };
-            // The shadow ray stops short of the emitter's own surface.
-            let t_max = t - T_MIN;
-            stats.rays += 1;
-            let shadow = if t_max > T_MIN {
-                self.scene
-                    .transmittance(&ray, T_MIN, t_max, t_max.tanh(), clear_transmission)
-            } else {
-                1.0
-            };
-            if shadow == 0.0 {
-                continue;
-            }
-            let pdf = cone.pdf();
-            let w = power_heuristic(pdf, bsdf.pdf(n, wo, wi));
-            sum += bsdf.eval(n, wo, wi).tint(e.radiance) * (cos * shadow * w / pdf);
+            sum += self.light_along(&at, wi, cone.pdf(), e.radiance, stats, |ray| {
+                self.emitter_distance(e, ray)
+            });
         }
         sum
+    }
+
+    /// What an emitter of `radiance` sends to `at` along the unit tangent
+    /// `wi`, drawn by light sampling with density `pdf`, reflected towards
+    /// the viewer: nothing below the surface; `surface` finds where the ray
+    /// meets the emitter, and the shadow ray stops short of it; weighted
+    /// against the lobes by the power heuristic.
+    fn light_along(
+        &self,
+        at: &ShadingPoint<'_>,
+        wi: DVec4,
+        pdf: f64,
+        radiance: Rgb,
+        stats: &mut TraceStats,
+        surface: impl FnOnce(&Ray) -> Option<f64>,
+    ) -> Rgb {
+        let cos = lorentz::dot(at.n, wi);
+        if !(cos > 0.0) {
+            return Rgb::BLACK;
+        }
+        let ray = Ray {
+            origin: at.p,
+            dir: wi,
+        };
+        let Some(t) = surface(&ray) else {
+            return Rgb::BLACK;
+        };
+        let t_max = t - T_MIN;
+        stats.rays += 1;
+        let shadow = if t_max > T_MIN {
+            self.scene
+                .transmittance(&ray, T_MIN, t_max, t_max.tanh(), clear_transmission)
+        } else {
+            1.0
+        };
+        if shadow == 0.0 {
+            return Rgb::BLACK;
+        }
+        let w = power_heuristic(pdf, at.bsdf.pdf(at.n, at.wo, wi));
+        at.bsdf.eval(at.n, at.wo, wi).tint(radiance) * (cos * shadow * w / pdf)
     }
 
     /// Light from the emissive faces: for each triangle, one direction drawn
@@ -273,32 +294,14 @@ impl<'s> PathTracer<'s> {
                 let Some(solid) = SphericalTriangle::new(p, *tri) else {
                     continue;
                 };
+                let at = ShadingPoint { p, n, wo, bsdf };
                 let wi = solid.sample(u1, u2);
-                let cos = lorentz::dot(n, wi);
-                if !(cos > 0.0) {
-                    continue;
-                }
-                let ray = Ray { origin: p, dir: wi };
-                let Some(t) = self.scene.objects[e.object]
-                    .intersect(&ray, 0.0, f64::INFINITY)
-                    .map(|h| h.t)
-                else {
-                    continue;
-                };
-                let t_max = t - T_MIN;
-                stats.rays += 1;
-                let shadow = if t_max > T_MIN {
-                    self.scene
-                        .transmittance(&ray, T_MIN, t_max, t_max.tanh(), clear_transmission)
-                } else {
-                    1.0
-                };
-                if shadow == 0.0 {
-                    continue;
-                }
                 let pdf = 1.0 / solid.solid_angle();
-                let w = power_heuristic(pdf, bsdf.pdf(n, wo, wi));
-                sum += bsdf.eval(n, wo, wi).tint(e.radiance) * (cos * shadow * w / pdf);
+                sum += self.light_along(&at, wi, pdf, e.radiance, stats, |ray| {
+                    self.scene.objects[e.object]
+                        .intersect(ray, 0.0, f64::INFINITY)
+                        .map(|h| h.t)
+                });
             }
         }
         sum
@@ -353,6 +356,16 @@ impl<'s> PathTracer<'s> {
     fn emitter_of(&self, index: usize) -> Option<usize> {
         self.emitters.iter().position(|e| e.object == Some(index))
     }
+}
+
+/// A shading point as light sampling sees it.
+struct ShadingPoint<'b> {
+    p: DVec4,
+    /// The shading normal on the viewer's side.
+    n: DVec4,
+    /// Towards the viewer.
+    wo: DVec4,
+    bsdf: &'b Bsdf,
 }
 
 /// Veach's power heuristic with one sample of each strategy.
