@@ -176,19 +176,17 @@ impl<'s> PathTracer<'s> {
         }
     }
 
-    /// Light arriving at `p` straight from the lights and spherical
-    /// emitters, reflected towards `wo`: next-event estimation.
-    #[allow(clippy::too_many_arguments)]
+    /// Light arriving at the shading point straight from the point lights
+    /// and spherical emitters, reflected towards the viewer: next-event
+    /// estimation.
     fn direct(
         &self,
-        p: DVec4,
-        n: DVec4,
-        wo: DVec4,
-        bsdf: &Bsdf,
+        at: &ShadingPoint<'_>,
         own: usize,
         stream: &mut SampleStream,
         stats: &mut TraceStats,
     ) -> Rgb {
+        let ShadingPoint { p, n, wo, bsdf } = *at;
         let mut sum = Rgb::BLACK;
         for light in self.scene.lights.iter().filter(|l| l.radius == 0.0) {
             let Some(wi) = lorentz::unit_tangent_towards(p, light.position) else {
@@ -224,9 +222,8 @@ impl<'s> PathTracer<'s> {
             let Some(cone) = SphereCone::new(p, e.centre, e.radius) else {
                 continue;
             };
-            let at = ShadingPoint { p, n, wo, bsdf };
             let wi = cone.sample(u1, u2);
-            sum += self.light_along(&at, wi, cone.pdf(), e.radiance, stats, |ray| {
+            sum += self.light_along(at, wi, cone.pdf(), e.radiance, stats, |ray| {
                 self.emitter_distance(e, ray)
             });
         }
@@ -276,17 +273,14 @@ impl<'s> PathTracer<'s> {
     /// Light from the emissive faces: for each triangle, one direction drawn
     /// uniformly from the solid angle it fills ([`SphericalTriangle`]),
     /// weighted against the lobes by the power heuristic.
-    #[allow(clippy::too_many_arguments)]
     fn direct_from_faces(
         &self,
-        p: DVec4,
-        n: DVec4,
-        wo: DVec4,
-        bsdf: &Bsdf,
+        at: &ShadingPoint<'_>,
         own: usize,
         stream: &mut SampleStream,
         stats: &mut TraceStats,
     ) -> Rgb {
+        let p = at.p;
         let mut sum = Rgb::BLACK;
         for e in self.faces.iter().filter(|e| e.object != own) {
             for tri in &e.triangles {
@@ -294,10 +288,9 @@ impl<'s> PathTracer<'s> {
                 let Some(solid) = SphericalTriangle::new(p, *tri) else {
                     continue;
                 };
-                let at = ShadingPoint { p, n, wo, bsdf };
                 let wi = solid.sample(u1, u2);
                 let pdf = 1.0 / solid.solid_angle();
-                sum += self.light_along(&at, wi, pdf, e.radiance, stats, |ray| {
+                sum += self.light_along(at, wi, pdf, e.radiance, stats, |ray| {
                     self.scene.objects[e.object]
                         .intersect(ray, 0.0, f64::INFINITY)
                         .map(|h| h.t)
@@ -359,6 +352,7 @@ impl<'s> PathTracer<'s> {
 }
 
 /// A shading point as light sampling sees it.
+#[derive(Clone, Copy)]
 struct ShadingPoint<'b> {
     p: DVec4,
     /// The shading normal on the viewer's side.
@@ -424,10 +418,15 @@ impl Integrator for PathTracer<'_> {
             let (_, diffuse) = reflectances(object, m, &hit);
             let bsdf = Bsdf::new(m, diffuse);
             if bsdf.is_smooth() {
-                radiance += beta.tint(self.direct(p, n, wo, &bsdf, index, stream, stats));
+                let at = ShadingPoint {
+                    p,
+                    n,
+                    wo,
+                    bsdf: &bsdf,
+                };
+                radiance += beta.tint(self.direct(&at, index, stream, stats));
                 if !self.faces.is_empty() {
-                    radiance +=
-                        beta.tint(self.direct_from_faces(p, n, wo, &bsdf, index, stream, stats));
+                    radiance += beta.tint(self.direct_from_faces(&at, index, stream, stats));
                 }
                 smooth += 1;
                 if smooth >= self.smooth_vertices {
