@@ -87,7 +87,7 @@ const SUGGESTED_LEVEL: f64 = 0.5;
 const BRIGHT_QUANTILE: f64 = 0.99;
 
 /// Rec. 709 / sRGB luminance weights of linear R, G, B.
-const LUMA: [f64; 3] = [0.2126, 0.7152, 0.0722];
+pub(crate) const LUMA: [f64; 3] = [0.2126, 0.7152, 0.0722];
 
 /// The luminance of a linear pixel; negative channels count as 0.
 #[inline]

@@ -10,12 +10,13 @@
 use hscene_ir::Rgb;
 
 use crate::error::RenderError;
+use crate::exposure::LUMA;
 
 /// Rec. 709 luminance of a linear colour; negative channels count as 0
-/// (the weights of [`crate::luminance`], in f64).
+/// ([`crate::luminance`] in f64, without the round trip through f32).
 #[inline]
 fn luminance_of(c: Rgb) -> f64 {
-    0.2126 * c.r.max(0.0) + 0.7152 * c.g.max(0.0) + 0.0722 * c.b.max(0.0)
+    LUMA[0] * c.r.max(0.0) + LUMA[1] * c.g.max(0.0) + LUMA[2] * c.b.max(0.0)
 }
 
 /// Samples an adaptive pixel takes between two looks at its noise, and

@@ -25,10 +25,10 @@ impl IntegratorKind {
 
     /// Its name.
     pub fn name(self) -> &'static str {
-        match self {
-            IntegratorKind::Whitted => "whitted",
-            IntegratorKind::Path => "path",
-        }
+        Self::ALL
+            .iter()
+            .find(|(k, _)| *k == self)
+            .map_or("", |(_, n)| n)
     }
 
     /// The integrator called `name`, if there is one.
@@ -54,5 +54,9 @@ mod tests {
         }
         assert_eq!(IntegratorKind::from_name("Whitted"), None);
         assert_eq!(IntegratorKind::names(), "whitted, path");
+        // A new kind fails to compile here until it has its row in `ALL`.
+        match IntegratorKind::default() {
+            IntegratorKind::Whitted | IntegratorKind::Path => {}
+        }
     }
 }

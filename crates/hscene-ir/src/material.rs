@@ -30,6 +30,14 @@ pub struct Material {
     pub emission: Rgb,
 }
 
+impl Material {
+    /// True when the material (or its texture) reflects ambient light,
+    /// which only Whitted's integrator has.
+    pub fn reflects_ambient(&self) -> bool {
+        !self.ambient.is_black() || self.texture.is_some_and(|t| !t.ambient.is_black())
+    }
+}
+
 impl Default for Material {
     /// Every field at the language's default: black, no mirror, opaque,
     /// shininess 1, refraction index 1, no texture, no emission.

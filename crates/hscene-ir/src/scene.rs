@@ -113,10 +113,6 @@ impl Scene {
     /// integrator has no ambient term, so such a scene looks different
     /// there.
     pub fn reflects_ambient(&self) -> bool {
-        !self.settings.ambient.is_black()
-            && self
-                .materials
-                .iter()
-                .any(|m| !m.ambient.is_black() || m.texture.is_some_and(|t| !t.ambient.is_black()))
+        !self.settings.ambient.is_black() && self.materials.iter().any(Material::reflects_ambient)
     }
 }

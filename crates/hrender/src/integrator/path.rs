@@ -176,9 +176,9 @@ impl<'s> PathTracer<'s> {
         }
     }
 
-    /// Light arriving at the shading point straight from the point lights
-    /// and spherical emitters, reflected towards the viewer: next-event
-    /// estimation.
+    /// Light arriving at the shading point straight from the point lights,
+    /// the spherical emitters and the emissive faces, reflected towards the
+    /// viewer: next-event estimation.
     fn direct(
         &self,
         at: &ShadingPoint<'_>,
@@ -227,6 +227,23 @@ impl<'s> PathTracer<'s> {
                 self.emitter_distance(e, ray)
             });
         }
+        // Emissive faces: one direction per triangle, drawn uniformly
+        // from the spherical triangle of directions it fills.
+        for e in self.faces.iter().filter(|e| e.object != own) {
+            for tri in &e.triangles {
+                let (u1, u2) = (stream.next_unit(), stream.next_unit());
+                let Some(solid) = SphericalTriangle::new(p, *tri) else {
+                    continue;
+                };
+                let wi = solid.sample(u1, u2);
+                let pdf = 1.0 / solid.solid_angle();
+                sum += self.light_along(at, wi, pdf, e.radiance, stats, |ray| {
+                    self.scene.objects[e.object]
+                        .intersect(ray, 0.0, f64::INFINITY)
+                        .map(|h| h.t)
+                });
+            }
+        }
         sum
     }
 
@@ -268,36 +285,6 @@ impl<'s> PathTracer<'s> {
         }
         let w = power_heuristic(pdf, at.bsdf.pdf(at.n, at.wo, wi));
         at.bsdf.eval(at.n, at.wo, wi).tint(radiance) * (cos * shadow * w / pdf)
-    }
-
-    /// Light from the emissive faces: for each triangle, one direction drawn
-    /// uniformly from the solid angle it fills ([`SphericalTriangle`]),
-    /// weighted against the lobes by the power heuristic.
-    fn direct_from_faces(
-        &self,
-        at: &ShadingPoint<'_>,
-        own: usize,
-        stream: &mut SampleStream,
-        stats: &mut TraceStats,
-    ) -> Rgb {
-        let p = at.p;
-        let mut sum = Rgb::BLACK;
-        for e in self.faces.iter().filter(|e| e.object != own) {
-            for tri in &e.triangles {
-                let (u1, u2) = (stream.next_unit(), stream.next_unit());
-                let Some(solid) = SphericalTriangle::new(p, *tri) else {
-                    continue;
-                };
-                let wi = solid.sample(u1, u2);
-                let pdf = 1.0 / solid.solid_angle();
-                sum += self.light_along(at, wi, pdf, e.radiance, stats, |ray| {
-                    self.scene.objects[e.object]
-                        .intersect(ray, 0.0, f64::INFINITY)
-                        .map(|h| h.t)
-                });
-            }
-        }
-        sum
     }
 
     /// The power-heuristic weight of emission from the faces of object
@@ -425,9 +412,6 @@ impl Integrator for PathTracer<'_> {
                     bsdf: &bsdf,
                 };
                 radiance += beta.tint(self.direct(&at, index, stream, stats));
-                if !self.faces.is_empty() {
-                    radiance += beta.tint(self.direct_from_faces(&at, index, stream, stats));
-                }
                 smooth += 1;
                 if smooth >= self.smooth_vertices {
                     break;

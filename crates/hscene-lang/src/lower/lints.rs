@@ -196,6 +196,5 @@ fn relies_on_ambient(lw: &Lowerer<'_>) -> bool {
             .materials
             .entries()
             .iter()
-            .map(|e| &e.value)
-            .any(|m| !m.ambient.is_black() || m.texture.is_some_and(|t| !t.ambient.is_black()))
+            .any(|e| e.value.reflects_ambient())
 }
