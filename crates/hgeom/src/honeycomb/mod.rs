@@ -19,7 +19,8 @@
 //!   folded into the domain matrix only when it is needed; `walk_record`:
 //!   what a walk reports besides its hit; `view_horizon`: where a ray
 //!   from the eye stops, by the width of its pixel; `picture_horizons`:
-//!   both horizons of a picture set at once.
+//!   both horizons of a picture set at once; `parts`: the parts listed
+//!   one by one ([`RegularHoneycomb::explicit_parts`]).
 
 mod cells;
 mod crossings;
@@ -27,6 +28,7 @@ mod cube435;
 mod domain;
 mod domain_ray;
 mod kernels;
+mod parts;
 mod picture_horizons;
 mod schlafli;
 mod simplex;
@@ -40,6 +42,7 @@ pub use cube435::{
     CUBE_435_DIHEDRAL, HoneycombCell, MAX_TESSELLATION_CELLS, SAME_CELL_DISTANCE, cube_435,
     cube_435_circumradius, honeycomb_435, tessellate, tessellation_placements,
 };
+pub use parts::{HoneycombPiece, HoneycombPieces};
 pub use schlafli::{Schlafli, SchlafliError};
 pub use simplex::CoxeterSimplex;
 pub use style::{HoneycombPart, HoneycombStyle, decode_honeycomb_part};

@@ -263,6 +263,11 @@ impl SeedParts {
         ))
     }
 
+    /// The seed: a hyperboloid point, or null with time 1 when ideal.
+    pub(super) fn seed(&self) -> DVec4 {
+        self.seed
+    }
+
     /// `sinh²` of the edge radius (0 without edges).
     pub(super) fn sinh2_edge(&self) -> f64 {
         self.sinh2_edge
@@ -419,7 +424,10 @@ fn half_edge(s: DVec4, ideal: bool, n: &[DVec4; 4], i: usize) -> Option<HalfEdge
 /// The pairs of mirrors `i < j` whose rotations carry the seed round a
 /// face: one of them ringed, and not orthogonal mirrors with only one
 /// ringed (that "polygon" is an edge).
-fn face_pairs(n: &[DVec4; 4], rings: Rings) -> impl Iterator<Item = (usize, usize)> + '_ {
+pub(super) fn face_pairs(
+    n: &[DVec4; 4],
+    rings: Rings,
+) -> impl Iterator<Item = (usize, usize)> + '_ {
     (0..4)
         .flat_map(|i| (i + 1..4).map(move |j| (i, j)))
         .filter(move |&(i, j)| {
@@ -617,7 +625,7 @@ mod tests {
     /// The explicit parts of the uniform honeycomb of `rings` near the
     /// base point: every chamber whose interior point lies within `reach`
     /// of it gives its vertex ball, the rods of its edges and the polygons
-    /// of its faces, each once.
+    /// of its faces, each once ([`RegularHoneycomb::explicit_parts`]).
     fn explicit_parts(
         symbol: Schlafli,
         rings: Rings,
@@ -628,91 +636,32 @@ mod tests {
         Box<dyn crate::shape::Shape>,
     )> {
         use crate::honeycomb::HoneycombPart;
-        use crate::honeycomb::cells::orbit;
-        use crate::point::Vertex;
+        use crate::point::{IdealPoint, Vertex};
         use crate::{ConvexPolygon, HSphere, Rod};
-        use glam::DMat4;
-        use std::collections::HashSet;
-        let simplex = CoxeterSimplex::new(symbol);
-        let (n, v) = (simplex.normals(), simplex.vertices());
-        let refl = [0, 1, 2, 3].map(|i| simplex.reflection(i));
-        let (parts, _) = SeedParts::new(&simplex, rings, style).unwrap();
-        let s = parts.seed;
-        let inner = {
-            let x = v[0] + v[1] + v[2] + v[3];
-            x / (-lorentz::dot(x, x)).sqrt()
+        let honeycomb = RegularHoneycomb::wythoff(symbol, rings, *style).unwrap();
+        let pieces = honeycomb
+            .explicit_parts(|x| lorentz::distance(x, DVec4::W) < reach, 1_000_000)
+            .unwrap();
+        let point = |x: DVec4| -> Vertex {
+            match Point::from_hyperboloid(x) {
+                Some(p) if lorentz::dot(x, x) < -0.5 => p.into(),
+                _ => IdealPoint::from_direction(x.truncate()).unwrap().into(),
+            }
         };
-        let key = |x: DVec4| {
-            let x = x / x.w;
-            [x.x, x.y, x.z].map(|c| (c * 1e7).round() as i64)
-        };
-        let point = |x: DVec4| Vertex::from(Point::from_hyperboloid(x).unwrap());
-        // The faces of the base chamber's seed, as polygons in order round
-        // their centres (the dihedral orbit of the seed, sorted by angle).
-        let mut base_faces = Vec::new();
-        for (i, j) in face_pairs(&n, rings) {
-            let ring = orbit(s, &[refl[i], refl[j]]).unwrap();
-            let centre = ring.iter().fold(DVec4::ZERO, |a, x| a + *x);
-            let centre = centre / (-lorentz::dot(centre, centre)).sqrt();
-            let e1 = ring[0] + lorentz::dot(ring[0], centre) * centre;
-            let e1 = e1 / lorentz::dot(e1, e1).sqrt();
-            let normal = lorentz::orthogonal_complement(ring[0], ring[1], ring[2]);
-            let e2 = lorentz::orthogonal_complement(centre, e1, normal);
-            let e2 = e2 / lorentz::dot(e2, e2).sqrt();
-            let mut sorted = ring.clone();
-            sorted.sort_by(|a, b| {
-                let angle = |x: &DVec4| lorentz::dot(*x, e2).atan2(lorentz::dot(*x, e1));
-                angle(a).total_cmp(&angle(b))
-            });
-            base_faces.push((centre, sorted));
-        }
-        let mut seen = HashSet::new();
-        // Breadth first: each chamber's map is a shortest word of
-        // reflections, the least rounding.
-        let mut queue = std::collections::VecDeque::from([DMat4::IDENTITY]);
-        seen.insert(key(inner));
-        let (mut vertices, mut edges, mut faces) = (HashSet::new(), HashSet::new(), HashSet::new());
         let mut out: Vec<(HoneycombPart, Box<dyn crate::shape::Shape>)> = Vec::new();
-        while let Some(g) = queue.pop_front() {
-            let gs = g * s;
-            if let Some(rho) = style.vertices
-                && vertices.insert(key(gs))
-            {
-                out.push((
-                    HoneycombPart::Vertex,
-                    Box::new(HSphere::new(Point::from_hyperboloid(gs).unwrap(), rho).unwrap()),
-                ));
-            }
-            if let Some(w) = style.edges {
-                for i in rings.nodes() {
-                    let other = g * (refl[i] * s);
-                    let mid = key(gs + other);
-                    if edges.insert(mid) {
-                        out.push((
-                            HoneycombPart::Edge,
-                            Box::new(Rod::new(point(gs), point(other), w).unwrap()),
-                        ));
-                    }
-                }
-            }
-            if style.faces {
-                for (centre, ring) in &base_faces {
-                    if faces.insert(key(g * *centre)) {
-                        let vs = ring.iter().map(|x| point(g * *x)).collect();
-                        out.push((
-                            HoneycombPart::Face,
-                            Box::new(ConvexPolygon::new(vs).unwrap()),
-                        ));
-                    }
-                }
-            }
-            for r in &refl {
-                let h = g * *r;
-                let x = h * inner;
-                if lorentz::distance(x, DVec4::W) < reach && seen.insert(key(x)) {
-                    queue.push_back(h);
-                }
-            }
+        for v in &pieces.vertices {
+            let rho = style.vertices.unwrap();
+            let ball = HSphere::new(Point::from_hyperboloid(v.geometry).unwrap(), rho);
+            out.push((HoneycombPart::Vertex, Box::new(ball.unwrap())));
+        }
+        for e in &pieces.edges {
+            let [a, b] = e.geometry.map(point);
+            let rod = Rod::new(a, b, style.edges.unwrap()).unwrap();
+            out.push((HoneycombPart::Edge, Box::new(rod)));
+        }
+        for f in &pieces.faces {
+            let polygon = ConvexPolygon::new(f.geometry.iter().map(|x| point(*x)).collect());
+            out.push((HoneycombPart::Face, Box::new(polygon.unwrap())));
         }
         out
     }

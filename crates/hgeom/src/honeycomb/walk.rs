@@ -367,6 +367,13 @@ impl RegularHoneycomb {
         self
     }
 
+    /// `cosh` of the radius about the base point (in the honeycomb's own
+    /// frame) that holds every part, when it is finite (a depth-limited
+    /// honeycomb with finite cells and vertices).
+    pub(super) fn reach(&self) -> Option<f64> {
+        self.cosh_reach
+    }
+
     /// The Schläfli symbol.
     pub fn symbol(&self) -> Schlafli {
         self.symbol
@@ -659,7 +666,7 @@ impl RegularHoneycomb {
     }
 
     /// True if one of the cells (local centres mapped by `m`) is drawn.
-    fn present(&self, cells: &[DVec4], m: &DMat4) -> bool {
+    pub(super) fn present(&self, cells: &[DVec4], m: &DMat4) -> bool {
         match &self.cells {
             None => true,
             Some(set) => cells.iter().any(|c| set.layer(*m * *c).is_some()),
@@ -668,7 +675,7 @@ impl RegularHoneycomb {
 
     /// The class of a part with these cells: the least rank of its drawn
     /// cells, modulo the number of classes.
-    fn class(&self, cells: &[DVec4], m: &DMat4) -> u32 {
+    pub(super) fn class(&self, cells: &[DVec4], m: &DMat4) -> u32 {
         let k = self.style.cell_classes;
         if k <= 1 {
             return 0;
