@@ -43,6 +43,9 @@ pub enum Command {
     Render(RenderArgs),
     /// Check scenes for errors and warnings without rendering.
     Check(CheckArgs),
+    /// Export the scene's objects as a mesh of the Poincaré ball: STL or
+    /// 3MF (millimetres, for printing), OBJ or glTF binary (metres).
+    Export(ExportArgs),
     /// Format scenes in the canonical layout (in place, or `-` from stdin to stdout).
     Fmt(FmtArgs),
     /// Run the language server on stdin/stdout (for editors).
@@ -59,6 +62,42 @@ pub enum Command {
     },
     /// Print the man page (roff) to stdout.
     Man,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct ExportArgs {
+    /// The scene file.
+    pub scene: PathBuf,
+    /// Output mesh: .stl, .3mf, .obj (with a .mtl beside it) or .glb.
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// The ball's diameter in the file: 100mm, 10cm, 0.1m, 4in.
+    #[arg(long, default_value = "100mm")]
+    pub size: String,
+    /// The thinnest part kept: thinner tubes are cut there (or thickened
+    /// with --thicken), thinner balls and plates left out.
+    #[arg(long, default_value = "0.8mm")]
+    pub min_feature: String,
+    /// How far a triangle may lie from the exact surface.
+    #[arg(long, default_value = "0.05mm")]
+    pub tolerance: String,
+    /// Thicken tubes (edges, rods) to the minimum feature where they are
+    /// thinner, instead of cutting them there.
+    #[arg(long)]
+    pub thicken: bool,
+    /// The hyperbolic thickness that polygons and honeycomb faces are
+    /// printed with (a render draws them with none).
+    #[arg(long, default_value_t = 0.1)]
+    pub face_thickness: f64,
+    /// The most triangles to write (at most 20000000).
+    #[arg(long, default_value_t = hexport::DEFAULT_MAX_TRIANGLES)]
+    pub max_triangles: usize,
+    /// The animation frame (0-based) to export; default 0.
+    #[arg(long, default_value_t = 0)]
+    pub frame: u32,
+    /// Replace a read-only output.
+    #[arg(long)]
+    pub force: bool,
 }
 
 #[derive(Debug, clap::Args)]

@@ -5,6 +5,7 @@ mod cli;
 mod emit;
 mod exit;
 mod explain;
+mod export_cmd;
 mod fmt_cmd;
 mod input;
 mod lsp;
@@ -35,6 +36,7 @@ fn main() -> ExitCode {
     match cli.command {
         Command::Render(args) => render(&args, color),
         Command::Check(args) => check(&args, color),
+        Command::Export(args) => export_cmd::run(&args, color),
         Command::Fmt(args) => fmt_cmd::run(&args, color),
         Command::Lsp => lsp::run(),
         Command::Explain { code } => explain::run(&code),
@@ -58,14 +60,14 @@ fn main() -> ExitCode {
 }
 
 /// Mesh files are found relative to the scene file.
-fn compile_options(scene: &Path, frame: u32) -> hscene_lang::Options {
+pub(crate) fn compile_options(scene: &Path, frame: u32) -> hscene_lang::Options {
     hscene_lang::Options {
         base_dir: scene.parent().map(Path::to_path_buf),
         frame,
     }
 }
 
-fn read_scene(path: &Path, format: Format) -> Result<String, String> {
+pub(crate) fn read_scene(path: &Path, format: Format) -> Result<String, String> {
     input::read_scene(path).map_err(|e| input::describe_failure(path, &e, format))
 }
 

@@ -57,8 +57,11 @@ pub use image::Image;
 pub use integrator::{Integrator, MAX_PATH_LENGTH, PathTracer, Whitted};
 pub use nets::{PixelNet, Sample, pixel_footprint};
 pub use noise::{ADAPTIVE_BATCH, Adaptive, PixelNoise};
-pub use output::{ImageFormat, PngLevel, SampleDepth, check_depth, write_image, write_image_with};
-pub use output_check::{Overwrite, check_output};
+pub use output::{
+    ImageFormat, PngLevel, SampleDepth, check_depth, write_atomically, write_bytes, write_image,
+    write_image_with,
+};
+pub use output_check::{Overwrite, check_output, check_output_file};
 pub use ray_budget::{MAX_SECONDARY_RAYS, RayBudget};
 pub use sampling::{SampleStream, Sampler};
 pub use scene::{Nearest, PreparedLight, PreparedObject, PreparedScene, T_MIN};

@@ -166,6 +166,34 @@ pub fn write_image_with(
 ) -> Result<(), RenderError> {
     let format = ImageFormat::from_path(path)?;
     check_depth(format, depth)?;
+    write_atomically(path, |out| match format {
+        ImageFormat::Png => encode_png(image, depth, display, png, out, path),
+        ImageFormat::Tiff => encode_tiff(image, depth, display, out, path),
+        ImageFormat::Exr => encode_exr(image, out, path),
+    })
+}
+
+/// Writes `bytes` to `path` as [`write_atomically`] does.
+pub fn write_bytes(path: &Path, bytes: &[u8]) -> Result<(), RenderError> {
+    write_atomically(path, |out| {
+        out.write_all(bytes).map_err(|source| RenderError::Io {
+            path: path.to_path_buf(),
+            source,
+        })
+    })
+}
+
+/// Writes `path` through `write`, atomically: into a temporary file in the
+/// same directory, synced, then renamed over `path`, so a reader sees the
+/// old file or the whole new one and a failed write leaves the old file.
+///
+/// Errors name `path`, never the temporary file. While the temporary file
+/// exists it is listed for [`remove_unfinished_outputs`], which a signal
+/// handler calls before the process exits.
+pub fn write_atomically(
+    path: &Path,
+    write: impl FnOnce(&mut BufWriter<&File>) -> Result<(), RenderError>,
+) -> Result<(), RenderError> {
     let io = |source| RenderError::Io {
         path: path.to_path_buf(),
         source,
@@ -181,15 +209,11 @@ pub fn write_image_with(
         .map_err(|e| io(e.kind().into()))?;
     {
         let mut out = BufWriter::new(tmp.as_file());
-        match format {
-            ImageFormat::Png => encode_png(image, depth, display, png, &mut out, path)?,
-            ImageFormat::Tiff => encode_tiff(image, depth, display, &mut out, path)?,
-            ImageFormat::Exr => encode_exr(image, &mut out, path)?,
-        }
+        write(&mut out)?;
         out.flush().map_err(io)?;
     }
     tmp.as_file().sync_all().map_err(io)?;
-    // Temporary files are created private (0600); an image replacing an
+    // Temporary files are created private (0600); an output replacing an
     // existing one keeps that file's permissions, a new one gets the usual
     // 0644, so the result reads like any file the user wrote.
     let permissions = match std::fs::metadata(path) {

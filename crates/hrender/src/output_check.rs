@@ -33,6 +33,18 @@ pub fn check_output(
 ) -> Result<ImageFormat, RenderError> {
     let format = ImageFormat::from_path(path)?;
     check_depth(format, depth)?;
+    check_output_file(path, inputs, overwrite)?;
+    Ok(format)
+}
+
+/// The checks of [`check_output`] that hold for any file, whatever its
+/// format: not an input, a regular file if it exists, writable unless
+/// forced, and a directory a file can be created in.
+pub fn check_output_file(
+    path: &Path,
+    inputs: &[&Path],
+    overwrite: Overwrite,
+) -> Result<(), RenderError> {
     if let Ok(existing) = std::fs::metadata(path) {
         if inputs.iter().any(|input| same_file(path, input)) {
             return Err(RenderError::OutputIsInput(path.to_path_buf()));
@@ -64,7 +76,7 @@ pub fn check_output(
         .map_err(|e| dir_error(e.kind().into()))?;
     drop(probe);
     drop(listed);
-    Ok(format)
+    Ok(())
 }
 
 /// Whether two paths name the same file (after following links).

@@ -7,9 +7,10 @@
 //! product of the reflections `R_i`; a breadth-first search on `g` (the
 //! neighbours of `g C` are `g R_i C`) reaches the chambers in order of the
 //! fewest reflections, so each `g` is a shortest word and carries the
-//! least rounding. The caller says which chambers to go on from (by their
-//! interior point `g c`, `c` the normalised sum of the simplex's vertices,
-//! which is timelike: a sum of future vectors).
+//! least rounding. The caller says which chambers to go on to (by their
+//! four vertices); chambers are told apart by their interior point `g c`,
+//! `c` the normalised sum of the simplex's vertices (timelike: a sum of
+//! future vectors).
 //!
 //! **The parts of one chamber** (Wythoff's construction, `uniform.rs`):
 //! the vertex `g s`; for each ringed node `i` the edge `g [s, R_i s]`; for
@@ -150,9 +151,10 @@ impl RegularHoneycomb {
     /// The parts this honeycomb draws (its style's vertices, edges and
     /// faces, within its depth), in the world frame, found by a
     /// breadth-first search of the chambers of its Coxeter group from the
-    /// base chamber (module docs): the search goes on from a chamber when
-    /// `go_on(x)` holds for its interior point `x` (world frame, on the
-    /// hyperboloid), and lists the parts of every chamber it visits. The
+    /// base chamber (module docs): the search goes on to a chamber when
+    /// `go_on(corners)` holds for its vertices (world frame: hyperboloid
+    /// points, or null with time 1 where ideal), and lists the parts of
+    /// every chamber it visits. The
     /// order is that of the search, so the same honeycomb and rule give the
     /// same list. A depth-limited honeycomb with finite cells and vertices
     /// needs no rule: the search ends past its last cell by itself.
@@ -162,7 +164,7 @@ impl RegularHoneycomb {
     /// faces cannot be formed (never for a valid honeycomb).
     pub fn explicit_parts(
         &self,
-        mut go_on: impl FnMut(DVec4) -> bool,
+        mut go_on: impl FnMut(&[DVec4; 4]) -> bool,
         max_chambers: usize,
     ) -> Result<HoneycombPieces, GeomError> {
         let style = self.style();
@@ -271,7 +273,7 @@ impl RegularHoneycomb {
                     return Err(too_many);
                 }
                 let reachable = within_reach.is_none_or(|c| x.w <= c);
-                if reachable && go_on(world(x)) && chambers.insert(x) {
+                if reachable && go_on(&v.map(|c| world(h * c))) && chambers.insert(x) {
                     if out.chambers + queue.len() >= max_chambers {
                         return Err(too_many);
                     }
@@ -287,6 +289,11 @@ impl RegularHoneycomb {
 mod tests {
     use super::*;
     use crate::honeycomb::{HoneycombStyle, Schlafli, decode_honeycomb_part};
+
+    /// A chamber's interior point (`centre` drops ideal corners' scale).
+    fn inner(corners: &[DVec4; 4]) -> DVec4 {
+        centre(corners)
+    }
 
     fn everything(depth: Option<u32>, classes: u32) -> HoneycombStyle {
         HoneycombStyle {
@@ -309,7 +316,7 @@ mod tests {
         ] {
             let h = RegularHoneycomb::new(Schlafli::new(p, q, r).unwrap(), everything(Some(0), 1))
                 .unwrap();
-            let parts = h.explicit_parts(|x| x.w < 20.0, 100_000).unwrap();
+            let parts = h.explicit_parts(|c| inner(c).w < 20.0, 100_000).unwrap();
             let got = (parts.vertices.len(), parts.edges.len(), parts.faces.len());
             assert_eq!(got, counts, "{{{p},{q},{r}}}");
             for f in &parts.faces {
@@ -324,7 +331,7 @@ mod tests {
     fn classes_are_the_least_rank_of_the_parts_cells() {
         let h =
             RegularHoneycomb::new(Schlafli::new(4, 3, 5).unwrap(), everything(Some(1), 2)).unwrap();
-        let parts = h.explicit_parts(|x| x.w < 20.0, 100_000).unwrap();
+        let parts = h.explicit_parts(|c| inner(c).w < 20.0, 100_000).unwrap();
         assert_eq!(parts.faces.len(), 36);
         let class = |code: u32| decode_honeycomb_part(code).1;
         let ones = parts.faces.iter().filter(|f| class(f.part) == 1).count();
@@ -356,8 +363,8 @@ mod tests {
     fn the_search_is_bounded() {
         let h =
             RegularHoneycomb::new(Schlafli::new(4, 3, 5).unwrap(), everything(None, 1)).unwrap();
-        let near = h.explicit_parts(|x| x.w < 3.0, 1_000_000).unwrap();
-        let far = h.explicit_parts(|x| x.w < 6.0, 1_000_000).unwrap();
+        let near = h.explicit_parts(|c| inner(c).w < 3.0, 1_000_000).unwrap();
+        let far = h.explicit_parts(|c| inner(c).w < 6.0, 1_000_000).unwrap();
         assert!(near.chambers < far.chambers);
         assert!(matches!(
             h.explicit_parts(|_| true, 1000),

@@ -640,7 +640,13 @@ mod tests {
         use crate::{ConvexPolygon, HSphere, Rod};
         let honeycomb = RegularHoneycomb::wythoff(symbol, rings, *style).unwrap();
         let pieces = honeycomb
-            .explicit_parts(|x| lorentz::distance(x, DVec4::W) < reach, 1_000_000)
+            .explicit_parts(
+                |c| {
+                    let x = c.iter().fold(DVec4::ZERO, |a, v| a + *v);
+                    lorentz::distance(x / (-lorentz::dot(x, x)).sqrt(), DVec4::W) < reach
+                },
+                1_000_000,
+            )
             .unwrap();
         let point = |x: DVec4| -> Vertex {
             match Point::from_hyperboloid(x) {

@@ -1,0 +1,149 @@
+//! `hscene export`: compile the scene, mesh it (hexport), write the files
+//! atomically (hrender's writer, so an interrupted export leaves nothing
+//! behind and an earlier file untouched).
+
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Instant;
+
+use hexport::{ExportOptions, Format, Millimetres, ThinParts};
+
+use crate::cli::{ColorChoice, ExportArgs, Format as ReportFormat};
+use crate::exit::{EXIT_SCENE_ERRORS, EXIT_USAGE_OR_IO};
+use crate::report;
+
+fn fail(message: impl std::fmt::Display) -> ExitCode {
+    eprintln!("error: {message}");
+    ExitCode::from(EXIT_USAGE_OR_IO)
+}
+
+fn options(args: &ExportArgs) -> Result<ExportOptions, hexport::ExportError> {
+    let options = ExportOptions {
+        size: Millimetres::parse(&args.size)?,
+        min_feature: Millimetres::parse(&args.min_feature)?,
+        tolerance: Millimetres::parse(&args.tolerance)?,
+        thin: if args.thicken {
+            ThinParts::Thicken
+        } else {
+            ThinParts::Cut
+        },
+        face_half_thickness: args.face_thickness / 2.0,
+        max_triangles: args.max_triangles,
+    };
+    options.validate()?;
+    Ok(options)
+}
+
+/// The files written for `output` in `format`, beside it.
+fn output_paths(output: &Path, format: Format) -> Vec<PathBuf> {
+    let mut paths = vec![output.to_path_buf()];
+    if format == Format::Obj {
+        paths.insert(0, output.with_extension("mtl"));
+    }
+    paths
+}
+
+pub fn run(args: &ExportArgs, color: ColorChoice) -> ExitCode {
+    let _ = ctrlc::set_handler(|| {
+        hrender::remove_unfinished_outputs();
+        std::process::exit(130);
+    });
+    let options = match options(args) {
+        Ok(o) => o,
+        Err(e) => return fail(e),
+    };
+    let format = match Format::from_path(&args.output) {
+        Ok(f) => f,
+        Err(e) => return fail(e),
+    };
+    let overwrite = if args.force {
+        hrender::Overwrite::Force
+    } else {
+        hrender::Overwrite::Writable
+    };
+    let paths = output_paths(&args.output, format);
+    for path in &paths {
+        if let Err(e) = hrender::check_output_file(path, &[&args.scene], overwrite) {
+            return fail(e);
+        }
+    }
+    let source = match crate::read_scene(&args.scene, ReportFormat::Short) {
+        Ok(s) => s,
+        Err(message) => {
+            eprint!("{message}");
+            return ExitCode::from(EXIT_USAGE_OR_IO);
+        }
+    };
+    let compiled =
+        hscene_lang::compile_with(&source, &crate::compile_options(&args.scene, args.frame));
+    let stderr_tty = std::io::stderr().is_terminal();
+    if !compiled.diagnostics.is_empty() {
+        eprint!(
+            "{}",
+            report::format_diagnostics(
+                &args.scene,
+                &source,
+                &compiled.diagnostics,
+                ReportFormat::Human,
+                color.enabled(stderr_tty)
+            )
+        );
+    }
+    let Some(scene) = compiled.scene else {
+        return ExitCode::from(EXIT_SCENE_ERRORS);
+    };
+    if args.frame >= scene.settings.frames {
+        return fail(format!(
+            "--frame {} is past the scene's last frame ({})",
+            args.frame,
+            scene.settings.frames.saturating_sub(1)
+        ));
+    }
+    let start = Instant::now();
+    let bar = stderr_tty.then(|| {
+        let bar = indicatif::ProgressBar::new(0);
+        bar.set_style(
+            indicatif::ProgressStyle::with_template("meshing {bar:40} {pos}/{len} parts {elapsed}")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        bar
+    });
+    let progress = |done: usize, total: usize| {
+        if let Some(bar) = &bar {
+            bar.set_length(total as u64);
+            bar.set_position(done as u64);
+        }
+    };
+    let model = hexport::export_scene(&scene, &options, &progress);
+    if let Some(bar) = &bar {
+        bar.finish_and_clear();
+    }
+    let model = match model {
+        Ok(m) => m,
+        Err(e) => return fail(e),
+    };
+    let files = match format.encode(&model, &args.output) {
+        Ok(f) => f,
+        Err(e) => return fail(e),
+    };
+    let mut bytes = 0;
+    for (file, path) in files.iter().zip(&paths) {
+        if let Err(e) = hrender::write_bytes(path, &file.bytes) {
+            return fail(e);
+        }
+        bytes += file.bytes.len();
+    }
+    eprintln!(
+        "wrote {}: {} shells, {} triangles, volume {:.1} mm³ (sum of shells), {} parts cut below {} mm, {} bytes, {:.2} s",
+        args.output.display(),
+        model.shells.len(),
+        model.triangle_count(),
+        model.volume(),
+        model.parts_cut,
+        options.min_feature.get(),
+        bytes,
+        start.elapsed().as_secs_f64()
+    );
+    ExitCode::SUCCESS
+}
