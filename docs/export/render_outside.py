@@ -50,7 +50,7 @@ def main():
             "face_normals": True,
             "bsdf": {"type": "diffuse", "reflectance": {"type": "rgb", "value": list(colour)}},
         }
-    eye = np.array([1.9, 1.2, 1.5]) * radius
+    eye = np.array([2.6, 1.7, 2.1]) * radius
     scene_dict = {
         "type": "scene",
         "integrator": {"type": "path", "max_depth": 8},
@@ -61,11 +61,11 @@ def main():
             "film": {"type": "hdrfilm", "width": args.size, "height": args.size},
             "sampler": {"type": "independent", "sample_count": args.spp},
         },
-        "sky": {"type": "constant", "radiance": {"type": "rgb", "value": [0.9, 0.92, 1.0]}},
+        "sky": {"type": "constant", "radiance": {"type": "rgb", "value": [0.35, 0.37, 0.42]}},
         "sun": {
             "type": "directional",
             "direction": (-eye / np.linalg.norm(eye) + np.array([0.3, -0.2, -0.4])).tolist(),
-            "irradiance": {"type": "rgb", "value": [2.5, 2.4, 2.2]},
+            "irradiance": {"type": "rgb", "value": [3.0, 2.9, 2.7]},
         },
         **shapes,
     }

@@ -6,7 +6,8 @@
 //!   and capped there; with [`ThinParts::Thicken`] it keeps its whole
 //!   length, thickened where it is thinner, and only an end at infinity is
 //!   cut, where the axis comes within twice the minimum of the ball's
-//!   boundary; a thickened tube shorter than the minimum is left out.
+//!   boundary; a thickened tube shorter than four times the minimum is
+//!   left out (it would print as a blob).
 //! - A ball (h-sphere, honeycomb vertex, horosphere) is kept whole when
 //!   its diameter is at least the minimum, else left out; a honeycomb's
 //!   vertex ball with cut edges also needs a ball of the edge radius there
@@ -22,6 +23,10 @@ use crate::ball::Ball;
 use crate::options::{ExportOptions, ThinParts};
 use crate::slab::{Outline, Plate, plane_disc};
 use crate::tube::{Axis, Capsule, TubeRadius};
+
+/// A thickened tube is kept when its axis is at least this many minimum
+/// features long: shorter, it would print as a blob, not a rod.
+pub const THICKENED_ASPECT: f64 = 4.0;
 
 /// The largest hyperbolic radius searched for a plane's disc.
 const MAX_DISC_RADIUS: f64 = 30.0;
@@ -50,15 +55,17 @@ pub fn tube(axis: Axis, w: f64, options: &ExportOptions) -> Option<PartSurface> 
             } else {
                 axis.trimmed(|s| 1.0 - axis.ball_radius(s) >= 2.0 * m)?
             };
-            if axis.chord() < m {
+            if axis.chord() < THICKENED_ASPECT * m {
                 return None;
             }
             Capsule::new(axis, TubeRadius::Thickened { base: w, min: m })
         }
     };
-    // A tube cut down to a point is the ball about it.
-    if capsule.axis.to - capsule.axis.from < 1e-9 {
-        let s = capsule.axis.from;
+    // A tube cut down to less than the tolerance is the ball about its
+    // middle: its two cap rows would be closer than any reader's welding
+    // distance.
+    if capsule.axis.chord() < options.tolerance_ball() {
+        let s = 0.5 * (capsule.axis.from + capsule.axis.to);
         return ball_about(capsule.axis.point(s), capsule.radius_at(s), options);
     }
     Some(PartSurface::Capsule(capsule))

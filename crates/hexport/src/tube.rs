@@ -181,15 +181,24 @@ pub struct Capsule {
     /// parameters, interpolated between (the thickening is a choice of
     /// shape, not a surface to follow exactly; an exact tube has none).
     profile: Vec<f64>,
+    /// Where the grid's columns start round the axis: a different angle
+    /// for each tube (from its frame), so that tubes meeting at a vertex
+    /// share no grid point. STL keeps no topology; readers weld equal
+    /// points, and two shells welded at a point are no longer manifold.
+    phase: f64,
 }
 
 impl Capsule {
     /// The capsule about `axis` (finite ends) of this radius.
     pub fn new(axis: Axis, radius: TubeRadius) -> Capsule {
+        let seed = axis.a.dot(DVec4::new(12.9898, 78.233, 37.719, 0.0))
+            + axis.t.dot(DVec4::new(4.898, 7.23, 23.1407, 1.0));
+        let phase = TAU * (seed * 43_758.545_3).rem_euclid(1.0);
         let mut capsule = Capsule {
             axis,
             radius,
             profile: Vec::new(),
+            phase,
         };
         if let TubeRadius::Thickened { base, min } = radius {
             capsule.profile = (0..=PROFILE_SAMPLES)
@@ -242,13 +251,12 @@ impl Capsule {
         }
         b
     }
-
 }
 
 impl PoleSurface for Capsule {
     fn point(&self, u: f64, v: f64) -> DVec3 {
         let (s0, s1) = (self.axis.from, self.axis.to);
-        let theta = TAU * v;
+        let theta = TAU * v + self.phase;
         let (s, psi) = if u <= 1.0 / 3.0 {
             (s0, 3.0 * u * FRAC_PI_2)
         } else if u <= 2.0 / 3.0 {
@@ -269,15 +277,31 @@ impl PoleSurface for Capsule {
     }
 }
 
-/// The unit tangent and normal frame check used by the tests: `N1`, `N2`
-/// are orthogonal to the line's points.
 #[cfg(test)]
-pub(crate) fn frame_is_orthonormal(axis: &Axis) -> bool {
-    use hgeom::lorentz;
-    let close = |x: f64, y: f64| (x - y).abs() < 1e-12;
-    close(lorentz::dot(axis.a, axis.a), -1.0)
-        && close(lorentz::dot(axis.t, axis.t), 1.0)
-        && close(lorentz::dot(axis.n1, axis.a), 0.0)
-        && close(lorentz::dot(axis.n1, axis.t), 0.0)
-        && close(lorentz::dot(axis.n2, axis.n1), 0.0)
+mod tests {
+    use super::*;
+    use hgeom::{Point, lorentz};
+
+    /// The line's basis is the frame the tube's points are built from:
+    /// `A` on the hyperboloid, `T`, `N1`, `N2` unit and orthogonal to it.
+    #[test]
+    fn the_axis_frame_is_orthonormal_and_thickest_nearest_the_centre() {
+        let a = Point::new(0.3, -0.1, 0.2).unwrap();
+        let b = Point::new(-0.4, 0.5, 0.1).unwrap();
+        let line = HLine::through(&a.into(), &b.into()).unwrap();
+        let axis = Axis::of_line(&line, -5.0, 5.0);
+        let close = |x: f64, y: f64| (x - y).abs() < 1e-12;
+        assert!(close(lorentz::dot(axis.a, axis.a), -1.0));
+        assert!(close(lorentz::dot(axis.t, axis.t), 1.0));
+        for n in [axis.n1, axis.n2] {
+            assert!(close(lorentz::dot(n, n), 1.0));
+            assert!(close(lorentz::dot(n, axis.a), 0.0));
+            assert!(close(lorentz::dot(n, axis.t), 0.0));
+        }
+        let mid = axis.nearest_centre();
+        let thick = axis.thickness(mid, 0.1);
+        for ds in [-0.5, -0.1, 0.1, 0.5] {
+            assert!(axis.thickness(mid + ds, 0.1) < thick);
+        }
+    }
 }

@@ -113,10 +113,7 @@ fn cylinders_are_cut_where_they_get_too_thin() {
 #[test]
 fn plates_are_the_polygon_thickened_by_half_the_face_thickness() {
     let options = ExportOptions::default();
-    let model = export(
-        "Polygon (%1, %2, %3), #red;",
-        &options,
-    );
+    let model = export("Polygon (%1, %2, %3), #red;", &options);
     assert_closed(&model);
     let corners = [(0.1, 0.1, 0.2), (-0.3, 0.2, 0.2), (-0.2, -0.3, 0.2)]
         .map(|(x, y, z)| hgeom::Vertex::from(Point::new(x, y, z).unwrap()));
@@ -178,8 +175,14 @@ fn thickened_tubes_are_never_thinner_than_the_minimum() {
     let model = export("Honeycomb {5,3,4}, #red, edges = 0.05;", &options);
     assert_closed(&model);
     for shell in &model.shells {
-        let lo = shell.vertices.iter().fold(DVec3::splat(f64::MAX), |a, v| a.min(*v));
-        let hi = shell.vertices.iter().fold(DVec3::splat(f64::MIN), |a, v| a.max(*v));
+        let lo = shell
+            .vertices
+            .iter()
+            .fold(DVec3::splat(f64::MAX), |a, v| a.min(*v));
+        let hi = shell
+            .vertices
+            .iter()
+            .fold(DVec3::splat(f64::MIN), |a, v| a.max(*v));
         // Vertices are exact; chords between them cut in by at most the
         // tolerance on either side.
         let least = 1.5 - 2.0 * options.tolerance.get();

@@ -148,6 +148,21 @@ fn base_faces(simplex: &CoxeterSimplex, s: DVec4, rings: super::Rings) -> Option
 }
 
 impl RegularHoneycomb {
+    /// The length of its edges (all edges of a uniform honeycomb have one
+    /// length): twice the seed's distance `δ` from a ringed mirror,
+    /// `sinh δ = <s, n_i>` (`uniform.rs`). `None` when the vertices are
+    /// ideal (the edges are infinite).
+    pub fn edge_length(&self) -> Option<f64> {
+        let simplex = CoxeterSimplex::new(self.symbol());
+        let rings = self.rings();
+        if rings.seed_is_ideal(&simplex) {
+            return None;
+        }
+        let (seed, _) = SeedParts::new(&simplex, rings, &self.style()).ok()?;
+        let i = rings.nodes().next()?;
+        Some(2.0 * lorentz::dot(seed.seed(), simplex.normals()[i]).asinh())
+    }
+
     /// The parts this honeycomb draws (its style's vertices, edges and
     /// faces, within its depth), in the world frame, found by a
     /// breadth-first search of the chambers of its Coxeter group from the
@@ -339,6 +354,21 @@ mod tests {
         // The base cube's vertices and edges belong to it: class 0.
         let zero_edges = parts.edges.iter().filter(|e| class(e.part) == 0).count();
         assert_eq!(zero_edges, 12);
+    }
+
+    /// The edge length is the distance between a listed edge's ends.
+    #[test]
+    fn edge_length_is_the_distance_between_an_edges_ends() {
+        for (p, q, r) in [(4, 3, 5), (5, 3, 4), (3, 5, 3), (4, 4, 3)] {
+            let h = RegularHoneycomb::new(Schlafli::new(p, q, r).unwrap(), everything(Some(0), 1))
+                .unwrap();
+            let parts = h.explicit_parts(|c| inner(c).w < 20.0, 100_000).unwrap();
+            let [a, b] = parts.edges[0].geometry;
+            let l = h.edge_length().unwrap();
+            assert!((lorentz::distance(a, b) - l).abs() < 1e-12, "{p}{q}{r}");
+        }
+        let ideal = RegularHoneycomb::new(Schlafli::new(3, 3, 6).unwrap(), everything(Some(0), 1));
+        assert_eq!(ideal.unwrap().edge_length(), None);
     }
 
     /// Placement moves every part: the listed points are the placed ones.
