@@ -46,6 +46,9 @@ pub enum Command {
     /// Export the scene's objects as a mesh of the Poincaré ball: STL or
     /// 3MF (millimetres, for printing), OBJ or glTF binary (metres).
     Export(ExportArgs),
+    /// Open a live window onto the scene: fly with the keys, watch it
+    /// refine, edit the file and see it follow (`--headless` for scripts).
+    View(ViewArgs),
     /// Format scenes in the canonical layout (in place, or `-` from stdin to stdout).
     Fmt(FmtArgs),
     /// Run the language server on stdin/stdout (for editors).
@@ -62,6 +65,50 @@ pub enum Command {
     },
     /// Print the man page (roff) to stdout.
     Man,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct ViewArgs {
+    /// The scene file.
+    pub scene: PathBuf,
+    /// The picture's size WIDTHxHEIGHT (default: the scene's, at most 960
+    /// wide).
+    #[arg(long, value_parser = parse_resolution)]
+    pub resolution: Option<(u32, u32)>,
+    /// Pixel net 0-4, overriding the scene's `net_type`.
+    #[arg(long, value_parser = clap::value_parser!(u8).range(0..=4))]
+    pub net: Option<u8>,
+    /// How light is computed, overriding the scene's `integrator`: whitted
+    /// or path.
+    #[arg(long, value_name = "NAME", value_parser = parse_integrator)]
+    pub integrator: Option<hrender::IntegratorKind>,
+    /// The samples per pixel a still view converges to (default: the
+    /// scene's, at least 16).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    pub samples: Option<u32>,
+    /// Exposure in stops.
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    pub exposure: f64,
+    /// The hyperbolic distance one key press flies (Shift: five times).
+    #[arg(long, default_value_t = 0.05)]
+    pub step: f64,
+    /// Worker threads (default: every core).
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=1024))]
+    pub threads: Option<u64>,
+    /// No window: fly a path (`--path`, or a gentle default flight of
+    /// `--frames` moves), let the last view converge, print the times.
+    #[arg(long)]
+    pub headless: bool,
+    /// Moves of the default headless flight.
+    #[arg(long, default_value_t = 24, requires = "headless")]
+    pub frames: u32,
+    /// A flight path for `--headless`: one move a line, `forward 0.05`,
+    /// `yaw 2`, ... (README, "View").
+    #[arg(long, requires = "headless")]
+    pub path: Option<PathBuf>,
+    /// With `--headless`, write the last, converged view here (PNG).
+    #[arg(short, long, requires = "headless")]
+    pub output: Option<PathBuf>,
 }
 
 #[derive(Debug, clap::Args)]

@@ -10,6 +10,7 @@ mod fmt_cmd;
 mod input;
 mod lsp;
 mod report;
+mod view_cmd;
 
 use std::io::{IsTerminal, Write};
 use std::path::Path;
@@ -37,6 +38,7 @@ fn main() -> ExitCode {
         Command::Render(args) => render(&args, color),
         Command::Check(args) => check(&args, color),
         Command::Export(args) => export_cmd::run(&args, color),
+        Command::View(args) => view_cmd::run(&args, color),
         Command::Fmt(args) => fmt_cmd::run(&args, color),
         Command::Lsp => lsp::run(),
         Command::Explain { code } => explain::run(&code),
@@ -386,6 +388,7 @@ fn render_frame(
                 .max_samples
                 .unwrap_or(hrender::Adaptive::DEFAULT_MAX_SAMPLES),
         }),
+        sample_range: None,
         seed: args.seed,
         exposure: match (args.exposure, auto_ev.get()) {
             (ExposureArg::Stops(ev), _) => Exposure::Stops(ev),

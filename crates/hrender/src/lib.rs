@@ -101,6 +101,11 @@ pub struct RenderOptions {
     pub exposure: Exposure,
     /// How light is computed, instead of the scene's `integrator`.
     pub integrator: Option<IntegratorKind>,
+    /// Only these samples (by index) of each pixel's samples, averaged: a
+    /// progressive viewer renders `0..1`, `1..2`, ... of `samples` and
+    /// averages the passes, which gives the image of all of them at once.
+    /// `None`: all. Ignored with adaptive sampling.
+    pub sample_range: Option<std::ops::Range<u32>>,
 }
 
 impl RenderOptions {
@@ -122,6 +127,14 @@ impl RenderOptions {
         }
         if let Some(a) = self.adaptive {
             a.validate()?;
+        }
+        if let Some(r) = &self.sample_range
+            && (r.is_empty() || r.end > self.samples.unwrap_or(MAX_SAMPLES))
+        {
+            return Err(RenderError::InvalidOption(format!(
+                "the sample range {}..{} must be non-empty and within the samples",
+                r.start, r.end
+            )));
         }
         if let Some(threads) = self.threads
             && !(1..=MAX_THREADS).contains(&threads)
@@ -227,6 +240,10 @@ struct RenderJob<'a> {
     height: u32,
     sampler: Sampler,
     adaptive: Option<Adaptive>,
+    /// The samples of each pixel to take: `first_sample..end_sample` of
+    /// the sampler's (`RenderOptions::sample_range`).
+    first_sample: u32,
+    end_sample: u32,
     scale: f64,
     integrator: Box<dyn Integrator + 'a>,
     background: Rgb,
@@ -270,8 +287,9 @@ impl RenderJob<'_> {
             let mut sum = Rgb::default();
             let mut failed = false;
             let mut noise = PixelNoise::default();
-            let mut k = 0;
-            while k < self.sampler.count() {
+            let (first, end) = (self.first_sample, self.end_sample.min(self.sampler.count()));
+            let mut k = first;
+            while k < end {
                 let (ox, oy) = self.sampler.offset(i, j, k);
                 let sx = (f64::from(i) + ox) / w - 0.5;
                 let sy = 0.5 - (f64::from(j) + oy) / h;
@@ -295,7 +313,7 @@ impl RenderJob<'_> {
                     break;
                 }
             }
-            let c = sum * (self.scale / f64::from(k));
+            let c = sum * (self.scale / f64::from(k - first));
             let px = c.channels().map(|v| v as f32);
             // Exposure or f32 conversion can overflow a finite radiance.
             let px = if px.iter().all(|v| v.is_finite()) {
@@ -305,7 +323,7 @@ impl RenderJob<'_> {
                 [0.0; 3]
             };
             row.failed_pixels += u64::from(failed);
-            row.samples += u64::from(k);
+            row.samples += u64::from(k - first);
             if let Some(e) = noise.relative_error() {
                 row.noise_sum += e;
                 row.noisy_pixels += 1;
@@ -476,6 +494,14 @@ fn render_in_pool(
             ),
         },
         adaptive: options.adaptive,
+        first_sample: match (&options.sample_range, options.adaptive) {
+            (Some(r), None) => r.start,
+            _ => 0,
+        },
+        end_sample: match (&options.sample_range, options.adaptive) {
+            (Some(r), None) => r.end,
+            _ => u32::MAX,
+        },
         scale: options.exposure.render_scale(),
         integrator: integrator::build(
             options.integrator.unwrap_or(scene.settings.integrator),

@@ -1,0 +1,33 @@
+//! `hscene view`: a live window onto a scene. The camera flies by exact
+//! isometries (`pose`), each view is refined by the renderer itself
+//! (`progressive`: a coarse frame, then full-resolution passes that average
+//! to what `hscene render --samples N` gives), shown through winit and
+//! softbuffer (`window`), or driven by a recorded path without a window
+//! (`headless`). The scene comes from the caller, which recompiles it when
+//! its file changes (`SceneSource`).
+
+mod headless;
+mod keys;
+mod pose;
+mod progressive;
+mod window;
+
+pub use headless::{FlightPath, HeadlessReport, run_headless};
+pub use keys::{Action, action_for_key};
+pub use pose::{Axis, Move, Pose, camera_lines};
+pub use progressive::{Frame, Progressive, ViewOptions};
+pub use window::{ViewError, run_window};
+
+/// Where the viewer gets its scene and learns of changes.
+pub trait SceneSource {
+    /// The scene now, compiled; `Err` carries the diagnostics as `check`
+    /// prints them.
+    fn load(&mut self) -> Result<hscene_ir::Scene, String>;
+
+    /// True if the scene's file (or what it reads) changed since the last
+    /// `load`.
+    fn changed(&mut self) -> bool;
+
+    /// A name for the window title.
+    fn name(&self) -> String;
+}

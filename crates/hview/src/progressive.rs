@@ -1,0 +1,171 @@
+//! The progressive pipeline: after a move, a coarse frame at a fraction of
+//! the resolution (one sample per pixel, shown enlarged), then the full
+//! resolution one sample at a time. Pass `k` is sample `k` of the same
+//! `N`-sample sampler `hscene render --samples N` uses
+//! (`RenderOptions::sample_range`), and the passes are averaged, so after
+//! `N` passes the still picture is that render's (to float rounding of the
+//! average: within one 8-bit level).
+
+use hrender::{DisplayTransform, Exposure, RenderError, RenderOptions};
+use hscene_ir::{IntegratorKind, Net, Resolution, Scene};
+
+/// How the viewer renders.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ViewOptions {
+    /// The window's picture size.
+    pub resolution: Resolution,
+    /// A pixel net instead of the scene's.
+    pub net: Option<Net>,
+    /// An integrator instead of the scene's.
+    pub integrator: Option<IntegratorKind>,
+    /// The samples per pixel a still view converges to.
+    pub samples: u32,
+    /// The coarse frame has `1/coarse` of the resolution each way.
+    pub coarse: u32,
+    /// Exposure in stops.
+    pub exposure: f64,
+    /// Worker threads (`None`: all cores).
+    pub threads: Option<usize>,
+}
+
+/// A picture to show: 0RGB pixels, row-major, at the view's resolution.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Frame {
+    /// Columns.
+    pub width: u32,
+    /// Rows.
+    pub height: u32,
+    /// `0x00RRGGBB` per pixel.
+    pub pixels: Vec<u32>,
+    /// Samples per pixel so far (0 for a coarse frame).
+    pub samples: u32,
+}
+
+impl Frame {
+    /// The pixel at column `x`, row `y` as `[r, g, b]`.
+    pub fn rgb(&self, x: u32, y: u32) -> [u8; 3] {
+        let p = self.pixels[(y * self.width + x) as usize];
+        [(p >> 16) as u8, (p >> 8) as u8, p as u8]
+    }
+}
+
+/// Where a view is in its refinement.
+#[derive(Clone, Debug)]
+pub struct Progressive {
+    options: ViewOptions,
+    /// The sum of the passes so far (linear radiance).
+    sum: Vec<[f64; 3]>,
+    passes: u32,
+    coarse_shown: bool,
+}
+
+impl Progressive {
+    /// A view that starts with a coarse frame.
+    pub fn new(options: ViewOptions) -> Progressive {
+        Progressive {
+            options,
+            sum: Vec::new(),
+            passes: 0,
+            coarse_shown: false,
+        }
+    }
+
+    /// The options.
+    pub fn options(&self) -> &ViewOptions {
+        &self.options
+    }
+
+    /// Starts over (the camera moved or the scene changed).
+    pub fn restart(&mut self) {
+        self.sum.clear();
+        self.passes = 0;
+        self.coarse_shown = false;
+    }
+
+    /// Samples per pixel so far.
+    pub fn samples(&self) -> u32 {
+        self.passes
+    }
+
+    /// True once every pass is in: nothing more to render until a change.
+    pub fn is_converged(&self) -> bool {
+        self.passes >= self.options.samples
+    }
+
+    fn render_options(&self, resolution: Resolution, pass: u32) -> RenderOptions {
+        RenderOptions {
+            net: self.options.net,
+            resolution: Some(resolution),
+            threads: self.options.threads,
+            samples: Some(self.options.samples),
+            seed: 0,
+            adaptive: None,
+            exposure: Exposure::Stops(self.options.exposure),
+            integrator: self.options.integrator,
+            sample_range: Some(pass..pass + 1),
+        }
+    }
+
+    /// Renders the next stage of `scene` (its camera is the view's) and
+    /// returns the picture to show: the coarse frame first, then the
+    /// average of the passes so far. After convergence it returns the
+    /// converged picture again without rendering.
+    pub fn step(&mut self, scene: &Scene) -> Result<Frame, RenderError> {
+        let (w, h) = (
+            self.options.resolution.width(),
+            self.options.resolution.height(),
+        );
+        if !self.coarse_shown && self.options.coarse > 1 {
+            self.coarse_shown = true;
+            let c = self.options.coarse;
+            let small =
+                Resolution::new(w.div_ceil(c), h.div_ceil(c)).unwrap_or(self.options.resolution);
+            let image = hrender::render(scene, &self.render_options(small, 0), &|_| {})?.image;
+            let colours = pack(&DisplayTransform::default().to_rgb8(image.pixels()));
+            // Each coarse pixel covers a c x c block.
+            let sw = small.width();
+            let pixels = (0..h)
+                .flat_map(|y| (0..w).map(move |x| (x / c, y / c)))
+                .map(|(x, y)| colours[(y * sw + x) as usize])
+                .collect();
+            return Ok(Frame {
+                width: w,
+                height: h,
+                pixels,
+                samples: 0,
+            });
+        }
+        if !self.is_converged() {
+            let image = hrender::render(
+                scene,
+                &self.render_options(self.options.resolution, self.passes),
+                &|_| {},
+            )?
+            .image;
+            if self.sum.len() != image.pixels().len() {
+                self.sum = vec![[0.0; 3]; image.pixels().len()];
+            }
+            for (s, p) in self.sum.iter_mut().zip(image.pixels()) {
+                for c in 0..3 {
+                    s[c] += f64::from(p[c]);
+                }
+            }
+            self.passes += 1;
+        }
+        let n = f64::from(self.passes.max(1));
+        let mean: Vec<[f32; 3]> = self.sum.iter().map(|s| s.map(|c| (c / n) as f32)).collect();
+        Ok(Frame {
+            width: w,
+            height: h,
+            pixels: pack(&DisplayTransform::default().to_rgb8(&mean)),
+            samples: self.passes,
+        })
+    }
+}
+
+/// Interleaved 8-bit RGB as 0RGB words.
+fn pack(rgb: &[u8]) -> Vec<u32> {
+    rgb.chunks_exact(3)
+        .map(|p| (u32::from(p[0]) << 16) | (u32::from(p[1]) << 8) | u32::from(p[2]))
+        .collect()
+}
