@@ -151,7 +151,8 @@ pub struct ExportArgs {
 pub struct RenderArgs {
     /// The scene file.
     pub scene: PathBuf,
-    /// Output image: .png, .tif, .tiff or .exr.
+    /// Output image: .png, .tif, .tiff or .exr; for an animation also a
+    /// video: .gif, .apng, .mp4 or .webm (the last two through ffmpeg).
     #[arg(short, long)]
     pub output: PathBuf,
     /// Pixel net 0-4, overriding the scene's `net_type`.
@@ -214,6 +215,9 @@ pub struct RenderArgs {
     /// exposure is kept for the whole animation).
     #[arg(long, value_name = "EV|auto", default_value = "0", allow_negative_numbers = true, value_parser = parse_exposure)]
     pub exposure: ExposureArg,
+    /// Frames per second of a video output (.gif, .apng, .mp4, .webm).
+    #[arg(long, default_value_t = 24.0)]
+    pub fps: f64,
     /// Render only this animation frame (0-based) to exactly OUTPUT. Without
     /// it, a scene with `frames = N` (N > 1) renders every frame to
     /// OUTPUT-0000.png, OUTPUT-0001.png, ...

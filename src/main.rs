@@ -178,10 +178,15 @@ fn check_outputs(args: &RenderArgs, outputs: &[std::path::PathBuf]) -> Result<()
         hrender::Overwrite::Writable
     };
     for output in outputs {
-        let checked = hrender::ImageFormat::from_path(output).and_then(|format| {
-            let depth = sample_depth(args.depth, format);
-            hrender::check_output(output, depth, &[&args.scene], overwrite)
-        });
+        let checked = if hrender::VideoFormat::from_path(output).is_some() {
+            hrender::check_video(output)
+                .and_then(|_| hrender::check_output_file(output, &[&args.scene], overwrite))
+        } else {
+            hrender::ImageFormat::from_path(output).and_then(|format| {
+                let depth = sample_depth(args.depth, format);
+                hrender::check_output(output, depth, &[&args.scene], overwrite).map(drop)
+            })
+        };
         if let Err(e) = checked {
             eprintln!("error: {e}");
             return Err(ExitCode::from(EXIT_USAGE_OR_IO));
@@ -208,6 +213,23 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
     {
         eprintln!("error: --noise and --max-samples go with --samples auto");
         return ExitCode::from(EXIT_USAGE_OR_IO);
+    }
+    let video = hrender::VideoFormat::from_path(&args.output);
+    if video.is_some() {
+        if args.frame.is_some() {
+            eprintln!(
+                "error: a video holds every frame: drop --frame, or render the frame to an image"
+            );
+            return ExitCode::from(EXIT_USAGE_OR_IO);
+        }
+        if !matches!(args.depth, None | Some(Depth::Eight)) {
+            eprintln!("error: videos are 8 bits a channel: drop --depth");
+            return ExitCode::from(EXIT_USAGE_OR_IO);
+        }
+        if !(args.fps.is_finite() && (0.1..=240.0).contains(&args.fps)) {
+            eprintln!("error: --fps must be from 0.1 to 240");
+            return ExitCode::from(EXIT_USAGE_OR_IO);
+        }
     }
     // Refuse a bad output before spending time on the scene.
     if let Err(code) = check_outputs(args, std::slice::from_ref(&args.output)) {
@@ -254,15 +276,50 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
         eprintln!("error: {}", frame_past_end(k, frames));
         return ExitCode::from(EXIT_USAGE_OR_IO);
     }
-    if args.frame.is_none() && frames > 1 {
+    if args.frame.is_none() && frames > 1 && video.is_none() {
         let outputs: Vec<_> = (0..frames).map(|k| frame_path(&args.output, k)).collect();
         if let Err(code) = check_outputs(args, &outputs) {
             return code;
         }
     }
-    if args.frame.is_some() || frames == 1 {
-        return render_frame(args, &scene, &args.output, stderr_tty, &auto_ev);
+    if (args.frame.is_some() || frames == 1) && video.is_none() {
+        return render_frame(
+            args,
+            &scene,
+            FrameSink::File(&args.output),
+            stderr_tty,
+            &auto_ev,
+        );
     }
+    let mut writer = match video {
+        Some(_) => {
+            let size = args.crop.map_or_else(
+                || {
+                    let r = args
+                        .resolution
+                        .and_then(|(w, h)| Resolution::new(w, h))
+                        .unwrap_or(scene.settings.resolution);
+                    (r.width(), r.height())
+                },
+                |c| (c.width, c.height),
+            );
+            match hrender::VideoWriter::create(
+                &args.output,
+                size.0,
+                size.1,
+                frames,
+                args.fps,
+                display_transform(args),
+            ) {
+                Ok(w) => Some(w),
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    return ExitCode::from(EXIT_USAGE_OR_IO);
+                }
+            }
+        }
+        None => None,
+    };
     // The scene was compiled once: every frame comes from it
     // (`Scene::frame`), except in a scene whose animated transformations
     // move points, where what is built from them changes shape and each
@@ -297,16 +354,24 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
                 }
             }
         };
-        let code = render_frame(
-            args,
-            frame_scene,
-            &frame_path(&args.output, k),
-            stderr_tty,
-            &auto_ev,
-        );
+        let path = frame_path(&args.output, k);
+        let sink = match writer.as_mut() {
+            Some(w) => FrameSink::Video(w),
+            None => FrameSink::File(&path),
+        };
+        if stderr_tty && frames > 1 {
+            eprintln!("frame {}/{frames}", k + 1);
+        }
+        let code = render_frame(args, frame_scene, sink, stderr_tty, &auto_ev);
         if code != ExitCode::SUCCESS {
             return code;
         }
+    }
+    if let Some(w) = writer
+        && let Err(e) = w.finish()
+    {
+        eprintln!("error: {e}");
+        return ExitCode::from(EXIT_USAGE_OR_IO);
     }
     ExitCode::SUCCESS
 }
@@ -341,6 +406,28 @@ fn warn_if_almost_black(
     );
 }
 
+/// The tone curve and transfer function asked for.
+fn display_transform(args: &RenderArgs) -> DisplayTransform {
+    DisplayTransform {
+        tone: match args.tonemap {
+            ToneMapArg::Clip => ToneMap::Clip,
+            ToneMapArg::Reinhard => ToneMap::Reinhard,
+            ToneMapArg::Aces => ToneMap::Aces,
+        },
+        encoding: match args.encoding {
+            EncodingArg::Srgb => Encoding::Srgb,
+            EncodingArg::Linear => Encoding::Linear,
+        },
+    }
+}
+
+/// Where a rendered frame goes: its own image file, or the next frame of
+/// a video.
+enum FrameSink<'a> {
+    File(&'a Path),
+    Video(&'a mut hrender::VideoWriter),
+}
+
 /// The depth asked for, or the format's own default.
 fn sample_depth(depth: Option<Depth>, format: hrender::ImageFormat) -> SampleDepth {
     match depth {
@@ -367,7 +454,7 @@ fn frame_path(output: &Path, frame: u32) -> std::path::PathBuf {
 fn render_frame(
     args: &RenderArgs,
     scene: &hscene_ir::Scene,
-    output: &Path,
+    sink: FrameSink,
     stderr_tty: bool,
     auto_ev: &std::cell::Cell<Option<f64>>,
 ) -> ExitCode {
@@ -447,30 +534,33 @@ fn render_frame(
     if auto.is_some() {
         auto_ev.set(auto);
     }
-    let depth = match hrender::ImageFormat::from_path(output) {
-        Ok(format) => sample_depth(args.depth, format),
-        Err(e) => {
-            eprintln!("error: {e}");
-            return ExitCode::from(EXIT_USAGE_OR_IO);
+    let display = display_transform(args);
+    let output = match sink {
+        FrameSink::File(output) => {
+            let depth = match hrender::ImageFormat::from_path(output) {
+                Ok(format) => sample_depth(args.depth, format),
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    return ExitCode::from(EXIT_USAGE_OR_IO);
+                }
+            };
+            // The CLI parser bounds the level to 0..=9.
+            let png = hrender::PngLevel::new(args.png_level).unwrap_or_default();
+            if let Err(e) = hrender::write_image_with(&rendered.image, output, depth, display, png)
+            {
+                eprintln!("error: {e}");
+                return ExitCode::from(EXIT_USAGE_OR_IO);
+            }
+            output.to_path_buf()
+        }
+        FrameSink::Video(video) => {
+            if let Err(e) = video.push(&rendered.image) {
+                eprintln!("error: {e}");
+                return ExitCode::from(EXIT_USAGE_OR_IO);
+            }
+            args.output.clone()
         }
     };
-    let display = DisplayTransform {
-        tone: match args.tonemap {
-            ToneMapArg::Clip => ToneMap::Clip,
-            ToneMapArg::Reinhard => ToneMap::Reinhard,
-            ToneMapArg::Aces => ToneMap::Aces,
-        },
-        encoding: match args.encoding {
-            EncodingArg::Srgb => Encoding::Srgb,
-            EncodingArg::Linear => Encoding::Linear,
-        },
-    };
-    // The CLI parser bounds the level to 0..=9.
-    let png = hrender::PngLevel::new(args.png_level).unwrap_or_default();
-    if let Err(e) = hrender::write_image_with(&rendered.image, output, depth, display, png) {
-        eprintln!("error: {e}");
-        return ExitCode::from(EXIT_USAGE_OR_IO);
-    }
     if rendered.stats.numeric_failures > 0 {
         eprintln!(
             "warning: {} pixel(s) had a numeric failure; their failing rays show the background",
@@ -510,7 +600,12 @@ fn render_frame(
     if stderr_tty {
         let secs = started.elapsed().as_secs_f64();
         eprintln!(
-            "wrote {} ({}x{}, {} rays in {secs:.2} s)",
+            "{} {} ({}x{}, {} rays in {secs:.2} s)",
+            if args.output == output && hrender::VideoFormat::from_path(&output).is_some() {
+                "added a frame to"
+            } else {
+                "wrote"
+            },
             output.display(),
             rendered.image.width(),
             rendered.image.height(),

@@ -24,7 +24,9 @@ pub enum RenderError {
     #[error("invalid render option: {0}")]
     InvalidOption(String),
     /// The output extension is not one we write.
-    #[error("unsupported output format `{0}`: use .png, .tif, .tiff or .exr")]
+    #[error(
+        "unsupported output format `{0}`: use .png, .tif, .tiff or .exr (an animation: also .gif, .apng, .mp4 or .webm)"
+    )]
     UnsupportedFormat(String),
     /// The requested sample depth does not exist for the output format.
     #[error("{format} output does not support {depth}")]
@@ -70,4 +72,10 @@ pub enum RenderError {
     /// Building the worker pool failed.
     #[error("cannot start worker threads: {0}")]
     Threads(String),
+    /// A video format that needs ffmpeg, without ffmpeg on the `PATH`.
+    #[error(
+        "writing {0} needs ffmpeg on the PATH (Debian and Ubuntu: apt-get install ffmpeg; \
+         macOS: brew install ffmpeg); .gif and .apng need nothing"
+    )]
+    NoFfmpeg(PathBuf),
 }

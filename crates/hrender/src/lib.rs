@@ -38,6 +38,7 @@ mod tangent;
 mod texture;
 mod trace_stats;
 mod unfinished;
+mod video;
 
 use std::collections::HashMap;
 
@@ -67,6 +68,7 @@ pub use sampling::{SampleStream, Sampler};
 pub use scene::{Nearest, PreparedLight, PreparedObject, PreparedScene, T_MIN};
 pub use trace_stats::TraceStats;
 pub use unfinished::remove_unfinished_outputs;
+pub use video::{VideoFormat, VideoWriter, check_video, ffmpeg_available};
 
 /// Most samples per pixel a render accepts.
 pub use hscene_ir::limits::MAX_SAMPLES;
