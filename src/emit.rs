@@ -180,6 +180,7 @@ fn material(i: usize, m: &Material) -> Value {
         "shininess": m.shininess,
         "refraction": m.refraction,
         "emission": rgb(m.emission),
+        "absorption": rgb(m.absorption),
         "checker": m.texture.map(|t| json!({
             "size": t.scale,
             "diffuse": rgb(t.diffuse),

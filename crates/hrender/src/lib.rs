@@ -15,6 +15,7 @@
 //! hyperboloid can no longer resolve) is counted in [`RenderStats`], never
 //! hidden, and no pixel is ever NaN or infinite.
 
+mod absorption;
 mod accel;
 mod bsdf;
 mod display;

@@ -218,9 +218,16 @@ pub struct PreparedScene {
     surfaces: Vec<SurfaceRef>,
     /// Hierarchy over the surfaces.
     accel: Accel,
+    /// The objects whose material absorbs (`absorption.rs`), in order.
+    absorbing: Vec<usize>,
 }
 
 impl PreparedScene {
+    /// The objects whose own material absorbs light inside them.
+    pub fn absorbing(&self) -> &[usize] {
+        &self.absorbing
+    }
+
     /// Move every object and light by `to_canonical`, and build the
     /// bounding hierarchy.
     ///
@@ -357,6 +364,16 @@ impl PreparedScene {
             });
         }
         let (surfaces, accel) = hierarchy(&objects);
+        // Only solids absorb: an object drawn in several materials (a
+        // honeycomb) is made of sheets with no inside.
+        let absorbing = objects
+            .iter()
+            .enumerate()
+            .filter(|(_, o)| {
+                o.parts.is_none() && !scene.materials[o.material].absorption.is_black()
+            })
+            .map(|(k, _)| k)
+            .collect();
         Ok(PreparedScene {
             objects,
             lights,
@@ -367,6 +384,7 @@ impl PreparedScene {
             max_depth: scene.settings.recursion_depth,
             surfaces,
             accel,
+            absorbing,
         })
     }
 

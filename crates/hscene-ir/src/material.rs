@@ -28,6 +28,10 @@ pub struct Material {
     /// Radiance the surface emits, the same from both of its sides and in
     /// every direction (a Lambertian emitter): it makes the surface a light.
     pub emission: Rgb,
+    /// Beer-Lambert absorption per unit of hyperbolic distance, per
+    /// channel: light that travels `d` inside the object keeps
+    /// `exp(-absorption d)` (tinted glass). Black: none.
+    pub absorption: Rgb,
 }
 
 impl Material {
@@ -53,6 +57,7 @@ impl Default for Material {
             refraction: 1.0,
             texture: None,
             emission: Rgb::BLACK,
+            absorption: Rgb::BLACK,
         }
     }
 }

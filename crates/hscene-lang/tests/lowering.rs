@@ -627,6 +627,7 @@ fn material_fields_default_when_absent() {
             refraction: 1.0,
             texture: None,
             emission: Rgb::BLACK,
+            absorption: Rgb::BLACK,
         }
     );
 }

@@ -76,6 +76,7 @@ pub fn matte(r: f64, g: f64, b: f64) -> Material {
         refraction: 1.0,
         texture: None,
         emission: Rgb::BLACK,
+        absorption: Rgb::BLACK,
     }
 }
 

@@ -26,6 +26,7 @@ use hgeom::{HSphere, Point, Ray};
 use hscene_ir::Rgb;
 
 use super::Integrator;
+use crate::absorption::absorbed;
 use crate::bsdf::{Bsdf, clear_transmission};
 use crate::light_sampling::SphereCone;
 use crate::material::reflectances;
@@ -210,8 +211,9 @@ impl<'s> PathTracer<'s> {
             }
             // A point light of colour Φ has radiant intensity Φ/4 (power
             // πΦ): a Lambertian surface of albedo ρ facing it reflects
-            // exactly Whitted's `ρ Φ / (4π sinh² r)`.
-            let intensity = light.diffuse * 0.25;
+            // exactly Whitted's `ρ Φ / (4π sinh² r)`; clear tinted glass on
+            // the way filters it.
+            let intensity = light.diffuse.tint(self.filtered(p, wi, apart.distance())) * 0.25;
             sum += bsdf.eval(n, wo, wi).tint(intensity) * (cos * shadow / apart.sinh_squared());
         }
         for e in &self.emitters {
@@ -283,6 +285,7 @@ impl<'s> PathTracer<'s> {
         if shadow == 0.0 {
             return Rgb::BLACK;
         }
+        let radiance = radiance.tint(self.filtered(at.p, wi, t_max));
         let w = power_heuristic(pdf, at.bsdf.pdf(at.n, at.wo, wi));
         at.bsdf.eval(at.n, at.wo, wi).tint(radiance) * (cos * shadow * w / pdf)
     }
@@ -399,6 +402,11 @@ impl Integrator for PathTracer<'_> {
                 radiance += beta.tint(m.emission) * w;
             }
             let entering = lorentz::dot(d, hit.normal) < 0.0;
+            // The path segment just traced ran inside this object when it
+            // leaves by this hit: absorbing glass filters it.
+            if !entering && !m.absorption.is_black() {
+                beta = beta.tint(absorbed(m, hit.t));
+            }
             let n = if entering { hit.shading } else { -hit.shading };
             let p = hit.point;
             let wo = -d;
@@ -450,6 +458,16 @@ impl Integrator for PathTracer<'_> {
 }
 
 impl PathTracer<'_> {
+    /// What absorbing objects let through of the shadow segment from `p`
+    /// along `dir` to distance `t_max` (white in a scene without any).
+    fn filtered(&self, p: DVec4, dir: DVec4, t_max: f64) -> Rgb {
+        if self.scene.absorbing().is_empty() {
+            return Rgb::new(1.0, 1.0, 1.0);
+        }
+        self.scene
+            .absorption_along(&Ray { origin: p, dir }, T_MIN, t_max)
+    }
+
     /// Fog over a segment of length `s`: the fog colour it adds to
     /// `radiance` and the throughput left for what lies beyond (the same
     /// depth cue as Whitted's, `docs/rendering.md#fog`).

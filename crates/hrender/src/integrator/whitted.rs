@@ -10,6 +10,8 @@ use hgeom::Ray;
 use hgeom::glam::DVec4;
 use hgeom::lorentz::{self, Separation};
 use hgeom::ray::{reflect, refract};
+
+use crate::absorption::absorbed;
 use hscene_ir::{Material, Rgb};
 
 use super::Integrator;
@@ -180,6 +182,11 @@ impl<'s> Whitted<'s> {
                 color += self.trace(&next, depth + 1, w, budget, stream, stats) * m.transmission;
             }
         }
+        // A ray leaving an absorbing object travelled `hit.t` inside it:
+        // what it brings back is what is left after that much glass.
+        if !entering && !m.absorption.is_black() {
+            color = color.tint(absorbed(m, hit.t));
+        }
         match &self.scene.fog {
             Some(fog) => through_fog(fog, color, hit.t),
             None => color,
@@ -239,7 +246,18 @@ impl<'s> Whitted<'s> {
             return Rgb::default();
         }
         let f_att = 1.0 / (4.0 * PI * apart.sinh_squared());
-        at.phong(light.diffuse, light.specular, to_light, cos_theta.min(1.0)) * (shadow * f_att)
+        let lit = at.phong(light.diffuse, light.specular, to_light, cos_theta.min(1.0))
+            * (shadow * f_att);
+        // Tinted glass between the point and the light filters it.
+        if self.scene.absorbing().is_empty() {
+            lit
+        } else {
+            let ray = Ray {
+                origin: at.p,
+                dir: to_light,
+            };
+            lit.tint(self.scene.absorption_along(&ray, T_MIN, apart.distance()))
+        }
     }
 
     /// Direct light from a spherical area light: `samples` points on the

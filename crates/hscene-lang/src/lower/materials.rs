@@ -20,6 +20,7 @@ enum Field {
     CheckerDiffuse,
     CheckerAmbient,
     Emission,
+    Absorption,
 }
 
 /// Every material field, in the order the help lists them.
@@ -35,6 +36,7 @@ const FIELDS: &[(&str, Field)] = &[
     ("checker_diffuse", Field::CheckerDiffuse),
     ("checker_ambient", Field::CheckerAmbient),
     ("emission", Field::Emission),
+    ("absorption", Field::Absorption),
 ];
 
 /// The names of the material fields, in the order of [`FIELDS`].
@@ -197,6 +199,7 @@ impl Lowerer<'_> {
             Field::CheckerDiffuse => checker.diffuse = self.rgb(value),
             Field::CheckerAmbient => checker.ambient = self.rgb(value),
             Field::Emission => m.emission = self.rgb(value).unwrap_or(m.emission),
+            Field::Absorption => m.absorption = self.rgb(value).unwrap_or(m.absorption),
         }
     }
 }
