@@ -95,6 +95,12 @@ fn header(path: &Path, scene: &Scene) -> Value {
             "frames": s.frames,
             "fov": s.fov,
             "integrator": s.integrator.name(),
+            "sky": s.sky.map(|sky| match sky {
+                hscene_ir::Sky::Gradient { zenith, horizon } => json!({
+                    "zenith": rgb(zenith),
+                    "horizon": rgb(horizon),
+                }),
+            }),
             "fog": s.fog.map(|f| json!({
                 "color": rgb(f.color),
                 "distance": f.distance,

@@ -33,6 +33,14 @@ pub enum Outline {
         corners: Vec<DVec3>,
         /// Their mean.
         centre: DVec3,
+        /// Points along each side sit at fractions `f + warp f (1 - f)` of
+        /// it (smooth and increasing for `|warp| < 1`): a
+        /// different spacing for each plate (from its corners), so that
+        /// plates meeting along a side (faces of a polyhedron, coplanar
+        /// faces of a honeycomb) never share a grid edge. STL keeps no
+        /// connectivity; readers weld equal points, and two shells sharing
+        /// an edge would no longer be 2-manifold.
+        warp: f64,
     },
     /// A disc of hyperbolic radius `radius` about `centre` in the plane
     /// spanned by the orthonormal tangents `e1`, `e2`.
@@ -53,19 +61,34 @@ impl Outline {
     pub fn polygon(corners: &[DVec4]) -> Outline {
         let corners: Vec<DVec3> = corners.iter().map(|x| x.truncate() / x.w).collect();
         let centre = corners.iter().fold(DVec3::ZERO, |a, c| a + *c) / corners.len() as f64;
-        Outline::Polygon { corners, centre }
+        let seed = corners
+            .iter()
+            .enumerate()
+            .map(|(k, c)| c.dot(DVec3::new(12.9898, 78.233, 37.719)) * (k as f64 + 1.618))
+            .sum::<f64>();
+        let warp = 0.6 * ((seed * 43_758.545_3).rem_euclid(1.0) - 0.5);
+        Outline::Polygon {
+            corners,
+            centre,
+            warp,
+        }
     }
 
     /// The point of the piece at fraction `lambda` from the centre towards
     /// the boundary point at `v`.
     pub fn point(&self, lambda: f64, v: f64) -> DVec4 {
         match self {
-            Outline::Polygon { corners, centre } => {
+            Outline::Polygon {
+                corners,
+                centre,
+                warp,
+            } => {
                 let n = corners.len();
                 let x = v.rem_euclid(1.0) * n as f64;
                 // x is in [0, n): its floor indexes a corner.
                 let k = (x.floor() as usize).min(n - 1);
-                let f = x - k as f64;
+                let f = (x - k as f64).clamp(0.0, 1.0);
+                let f = f + warp * f * (1.0 - f);
                 let edge = along(corners[k], corners[(k + 1) % n], f);
                 from_klein(along(*centre, edge, lambda))
             }
@@ -79,6 +102,14 @@ impl Outline {
                 let phi = TAU * v;
                 r.cosh() * *centre + r.sinh() * (phi.cos() * *e1 + phi.sin() * *e2)
             }
+        }
+    }
+
+    /// The spacing parameter of a polygon's grid (0 for a disc).
+    fn warp(&self) -> f64 {
+        match self {
+            Outline::Polygon { warp, .. } => *warp,
+            Outline::Disc { .. } => 0.0,
         }
     }
 
@@ -170,12 +201,17 @@ impl Plate {
 impl PoleSurface for Plate {
     fn point(&self, u: f64, v: f64) -> DVec3 {
         let h = self.half;
+        // The plate's own spacing (see `Outline::Polygon::warp`) across
+        // the faces and the rim too: two plates on one polygon (faces two
+        // solids share) then meet in isolated points only.
+        let w = self.outline.warp();
+        let warped = |f: f64| f + w * f * (1.0 - f);
         let (lambda, t) = if u <= 1.0 / 3.0 {
-            (3.0 * u, h)
+            (warped(3.0 * u), h)
         } else if u <= 2.0 / 3.0 {
-            (1.0, h - (3.0 * u - 1.0) * 2.0 * h)
+            (1.0, h - warped(3.0 * u - 1.0) * 2.0 * h)
         } else {
-            (3.0 - 3.0 * u, -h)
+            (warped(3.0 - 3.0 * u), -h)
         };
         let x = self.outline.point(lambda, v);
         to_ball(t.cosh() * x + t.sinh() * self.normal)

@@ -254,3 +254,35 @@ fn materials_follow_the_honeycombs_colours() {
         "{names:?}"
     );
 }
+
+/// No two shells share a grid edge, even where their parts meet along a
+/// side (a cube's faces, a honeycomb's coplanar faces across an edge): an
+/// STL reader welds equal points, and a shared edge would join two shells
+/// into a non-manifold one.
+#[test]
+fn no_two_shells_share_an_edge() {
+    use std::collections::HashMap;
+    let options = ExportOptions::default();
+    for objects in [
+        "Cube 0.6, #red;",
+        "Honeycomb {6,3,4}, #red, edges = 0.04, faces = #blue;",
+    ] {
+        let model = export(objects, &options);
+        let key = |v: DVec3| [v.x as f32, v.y as f32, v.z as f32].map(f32::to_bits);
+        let mut owner: HashMap<([u32; 3], [u32; 3]), usize> = HashMap::new();
+        for (k, shell) in model.shells.iter().enumerate() {
+            for t in &shell.triangles {
+                for c in 0..3 {
+                    let (a, b) = (
+                        key(shell.vertices[t[c] as usize]),
+                        key(shell.vertices[t[(c + 1) % 3] as usize]),
+                    );
+                    let edge = if a < b { (a, b) } else { (b, a) };
+                    if let Some(other) = owner.insert(edge, k) {
+                        assert_eq!(other, k, "{objects}: shells {other} and {k} share an edge");
+                    }
+                }
+            }
+        }
+    }
+}

@@ -10,9 +10,9 @@
 
 use hgeom::Shape as Surface;
 use hgeom::glam::{DVec3, DVec4};
-use hgeom::{Hit, Isometry, KleinBox, Point, Ray};
+use hgeom::{Hit, IdealPoint, Isometry, KleinBox, Point, Ray};
 use hscene_ir::view::{CanonicalFrame, PixelFootprint};
-use hscene_ir::{self as ir, Fog, Material, PartMaterials, Rgb, Scene, Surfaces};
+use hscene_ir::{self as ir, Fog, Material, PartMaterials, Rgb, Scene, Sky, Surfaces};
 
 use rayon::prelude::*;
 use smallvec::SmallVec;
@@ -220,6 +220,9 @@ pub struct PreparedScene {
     accel: Accel,
     /// The objects whose material absorbs (`absorption.rs`), in order.
     absorbing: Vec<usize>,
+    /// The sky, and the map from the canonical frame back to the scene's
+    /// (the sky is fixed in the scene, not in the camera).
+    sky: Option<(Sky, Isometry)>,
 }
 
 impl PreparedScene {
@@ -385,7 +388,23 @@ impl PreparedScene {
             surfaces,
             accel,
             absorbing,
+            sky: scene.settings.sky.map(|sky| {
+                let to_canonical = stages
+                    .iter()
+                    .fold(Isometry::IDENTITY, |acc, stage| stage.compose(&acc));
+                (sky, to_canonical.inverse())
+            }),
         })
+    }
+
+    /// What a ray that meets nothing brings from the sky: the radiance of
+    /// the ideal point it runs to, in the scene's frame (`None` without a
+    /// sky, or if the endpoint cannot be formed).
+    pub fn sky_radiance(&self, ray: &Ray) -> Option<Rgb> {
+        let (sky, to_world) = self.sky.as_ref()?;
+        // X(t) = cosh t O + sinh t D runs to the null vector O + D.
+        let end = IdealPoint::from_direction((ray.origin + ray.dir).truncate()).ok()?;
+        Some(sky.radiance(to_world.apply_ideal(&end).coords()))
     }
 
     /// The nearest hit beyond `t_min`.

@@ -25,6 +25,7 @@ mod material;
 mod object;
 mod scene;
 mod shape;
+mod sky;
 pub mod view;
 
 pub use animation::{Animation, FrameError, Motion, Track, TrackBase, compose, frame_time};
@@ -36,3 +37,4 @@ pub use material::{Material, MaterialId, Pattern, Texture};
 pub use object::{Object, move_object};
 pub use scene::{Fog, Light, PointRecord, Scene, Settings};
 pub use shape::{BoxedSurface, MESH_TRIANGLES_PER_PRIMITIVE, Shape, Surfaces, mesh_budget_cost};
+pub use sky::Sky;

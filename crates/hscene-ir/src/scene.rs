@@ -9,6 +9,7 @@ use crate::color::Rgb;
 use crate::integrator::IntegratorKind;
 use crate::material::Material;
 use crate::object::Object;
+use crate::sky::Sky;
 
 /// Global render settings.
 #[derive(Clone, Debug, PartialEq)]
@@ -40,6 +41,9 @@ pub struct Settings {
     pub fog: Option<Fog>,
     /// How light is computed (`integrator = NAME;`).
     pub integrator: IntegratorKind,
+    /// Light from the sphere at infinity for rays that meet nothing
+    /// (`sky = (zenith, horizon)`); `None`: the background colour.
+    pub sky: Option<Sky>,
 }
 
 /// Fog: the radiance carried along a ray segment of hyperbolic length `s`

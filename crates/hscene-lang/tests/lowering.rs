@@ -287,6 +287,7 @@ fn appendix_a_compiles_with_one_warning() {
             fov: None,
             fog: None,
             integrator: hscene_lang::ir::IntegratorKind::Whitted,
+            sky: None,
         }
     );
     assert_eq!(scene.camera.eye, Point::ORIGIN);
@@ -559,6 +560,7 @@ fn empty_file_gets_the_documented_defaults() {
                 fov: None,
                 fog: None,
                 integrator: hscene_lang::ir::IntegratorKind::Whitted,
+                sky: None,
             }
         );
         assert_eq!(

@@ -109,6 +109,7 @@ pub fn settings(net: Net, size: u32, window: f64) -> Settings {
         fov: None,
         fog: None,
         integrator: Default::default(),
+        sky: None,
     }
 }
 

@@ -327,11 +327,15 @@ impl<'s> PathTracer<'s> {
         }
     }
 
-    /// Radiance brought by a ray that leaves the scene.
-    fn leaving(&self) -> Rgb {
+    /// Radiance brought by a ray that leaves the scene: the fog colour in
+    /// fog, else the sky where the ray ends, else the background.
+    fn leaving(&self, ray: &Ray) -> Rgb {
         match &self.scene.fog {
             Some(fog) => fog.color,
-            None => self.scene.background,
+            None => self
+                .scene
+                .sky_radiance(ray)
+                .unwrap_or(self.scene.background),
         }
     }
 
@@ -383,7 +387,7 @@ impl Integrator for PathTracer<'_> {
                 break;
             }
             let Some((hit, index)) = found else {
-                radiance += beta.tint(self.leaving());
+                radiance += beta.tint(self.leaving(&ray));
                 break;
             };
             beta = self.fogged(&mut radiance, beta, hit.t);

@@ -74,7 +74,7 @@ impl<'s> Whitted<'s> {
     ) -> Rgb {
         stats.rays += 1;
         let (hit, index) = match self.scene.nearest(ray, T_MIN) {
-            Nearest::Miss => return self.leaving(),
+            Nearest::Miss => return self.leaving(ray),
             Nearest::Failure => {
                 stats.failures += 1;
                 return self.scene.background;
@@ -194,11 +194,14 @@ impl<'s> Whitted<'s> {
     }
 
     /// What a ray that leaves the scene brings: the fog colour in fog,
-    /// else the background.
-    fn leaving(&self) -> Rgb {
+    /// else the sky's radiance where the ray ends, else the background.
+    fn leaving(&self, ray: &Ray) -> Rgb {
         match &self.scene.fog {
             Some(fog) => fog.color,
-            None => self.scene.background,
+            None => self
+                .scene
+                .sky_radiance(ray)
+                .unwrap_or(self.scene.background),
         }
     }
 

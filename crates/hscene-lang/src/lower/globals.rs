@@ -6,7 +6,7 @@ use super::camera::CameraKey;
 use super::table::{self, Row, SeenKeys, unknown_word, words};
 use super::view_globals::ViewKey;
 use crate::diagnostic::{Code, Diagnostic};
-use crate::ir::{IntegratorKind, Net, Resolution, Rgb, Settings, Window};
+use crate::ir::{IntegratorKind, Net, Resolution, Rgb, Settings, Sky, Window};
 use crate::syntax::{Clause, Ident, Section, Value};
 
 /// Largest accepted image side, to keep allocations sane.
@@ -24,6 +24,7 @@ enum Global {
     Samples,
     Frames,
     Background,
+    Sky,
     Ambient,
     Integrator,
     Camera(CameraKey),
@@ -71,6 +72,7 @@ const KEYS: &[GlobalKey] = &[
     key("to", Global::Camera(CameraKey::Target)),
     key("up", Global::Camera(CameraKey::Up)),
     key("background", Global::Background),
+    key("sky", Global::Sky),
     key("ambient", Global::Ambient),
     key("integrator", Global::Integrator),
     key("fog_color", Global::View(ViewKey::FogColor)),
@@ -114,6 +116,7 @@ pub(super) fn default_settings() -> Settings {
         fov: None,
         fog: None,
         integrator: IntegratorKind::Whitted,
+        sky: None,
     }
 }
 
@@ -196,12 +199,46 @@ impl Lowerer<'_> {
             Global::Background => {
                 self.settings.background = self.rgb(value).unwrap_or(self.settings.background)
             }
+            Global::Sky => self.sky(value),
             Global::Ambient => {
                 self.settings.ambient = self.rgb(value).unwrap_or(self.settings.ambient)
             }
             Global::Integrator => self.integrator(value),
             Global::View(key) => self.view_global(key, value),
             Global::Camera(key) => self.camera_global(key, value),
+        }
+    }
+
+    /// `sky = ((r, g, b), (r, g, b))`: the zenith's colour, then the
+    /// horizon's.
+    fn sky(&mut self, value: &Value) {
+        let Value::Tuple { items, .. } = value else {
+            self.report(
+                Diagnostic::new(
+                    Code::WrongType,
+                    value.span(),
+                    format!("expected two colours, found {}", value.describe()),
+                )
+                .with_help("write `sky = ((0.3, 0.5, 0.9), (0.9, 0.9, 1.0));`: the zenith's colour, then the horizon's"),
+            );
+            return;
+        };
+        if items.len() != 2 {
+            self.report(
+                Diagnostic::new(
+                    Code::WrongType,
+                    value.span(),
+                    format!(
+                        "`sky` takes two colours (zenith, horizon), found {}",
+                        items.len()
+                    ),
+                )
+                .with_help("write `sky = ((0.3, 0.5, 0.9), (0.9, 0.9, 1.0));`"),
+            );
+            return;
+        }
+        if let (Some(zenith), Some(horizon)) = (self.rgb(&items[0]), self.rgb(&items[1])) {
+            self.settings.sky = Some(Sky::Gradient { zenith, horizon });
         }
     }
 
