@@ -279,3 +279,78 @@ mod tests {
         }
     }
 }
+
+#[cfg(test)]
+mod measures {
+    use super::*;
+    use crate::honeycomb::Schlafli;
+
+    /// The table of docs/honeycombs.md ("Measures"): edge length, inradius,
+    /// circumradius, midradius and face width of the fifteen, to 1e-6
+    /// (infinite where a vertex or a cell centre is ideal).
+    #[test]
+    fn the_measures_table_of_the_docs() {
+        let inf = f64::INFINITY;
+        let table = [
+            (
+                (4, 3, 5),
+                [1.616922, 0.530638, 1.226457, 0.842482, 1.253739],
+            ),
+            (
+                (5, 3, 4),
+                [1.061275, 0.808461, 1.226457, 1.061275, 1.253739],
+            ),
+            (
+                (5, 3, 5),
+                [1.992769, 0.996384, 1.902847, 1.439106, 1.827264],
+            ),
+            (
+                (3, 5, 3),
+                [1.736596, 0.868298, 1.382571, 0.972659, 0.788307],
+            ),
+            ((6, 3, 3), [0.693147, inf, inf, inf, 1.098612]),
+            ((3, 3, 6), [inf, 0.346574, inf, 0.658479, 1.098612]),
+            ((4, 3, 6), [inf, 0.658479, inf, 1.146216, 1.762747]),
+            ((6, 3, 4), [1.316958, inf, inf, inf, 1.762747]),
+            ((5, 3, 6), [inf, 1.083937, inf, 1.690197, 2.248354]),
+            ((6, 3, 5), [2.167874, inf, inf, inf, 2.248354]),
+            ((6, 3, 6), [inf, inf, inf, inf, 2.633916]),
+            ((3, 6, 3), [inf, inf, inf, inf, 1.098612]),
+            ((4, 4, 3), [1.316958, inf, inf, inf, 1.098612]),
+            ((3, 4, 4), [inf, 0.658479, inf, 0.881374, 1.098612]),
+            ((4, 4, 4), [inf, inf, inf, inf, 1.762747]),
+        ];
+        for ((p, q, r), want) in table {
+            let s = CoxeterSimplex::new(Schlafli::new(p, q, r).unwrap());
+            let (n, v, ideal) = (s.normals(), s.vertices(), s.ideal());
+            let d = |a: usize, b: usize| {
+                if ideal[a] || ideal[b] {
+                    inf
+                } else {
+                    lorentz::distance(v[a], v[b])
+                }
+            };
+            // Half an edge is the vertex's distance from mirror 0; the
+            // inradius the cell centre's from its face's mirror 3.
+            let edge = if ideal[0] {
+                inf
+            } else {
+                2.0 * lorentz::dot(v[0], n[0]).asinh()
+            };
+            let inradius = if ideal[3] {
+                inf
+            } else {
+                lorentz::dot(v[3], n[3]).asinh()
+            };
+            let got = [edge, inradius, d(3, 0), d(3, 1), 2.0 * d(1, 2)];
+            for (g, w) in got.iter().zip(want) {
+                let ok = if w.is_infinite() {
+                    g.is_infinite()
+                } else {
+                    (g - w).abs() < 1e-6
+                };
+                assert!(ok, "{{{p},{q},{r}}}: {got:?} against {want:?}");
+            }
+        }
+    }
+}
