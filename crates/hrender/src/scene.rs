@@ -185,6 +185,31 @@ pub struct PreparedLight {
     pub samples: u32,
 }
 
+impl PreparedLight {
+    /// The radiance an area light's sphere emits, from both sides: a light
+    /// of colour Φ has the power πΦ (as a point light of that colour
+    /// would, `1/(4π sinh² r)` from it), spread over the sphere's area
+    /// `4π sinh² a` as Lambertian emission of radiance `L`: power
+    /// `π L 4π sinh² a`, so `L = Φ / (4π sinh² a)`. Black for a point
+    /// light, which has no surface to see.
+    pub fn radiance(&self) -> Rgb {
+        if self.radius > 0.0 {
+            self.diffuse * (1.0 / (4.0 * std::f64::consts::PI * self.radius.sinh().powi(2)))
+        } else {
+            Rgb::BLACK
+        }
+    }
+
+    /// An area light's sphere (`None` for a point light).
+    pub fn sphere(&self) -> Option<hgeom::HSphere> {
+        if !(self.radius > 0.0) {
+            return None;
+        }
+        Point::from_hyperboloid(self.position)
+            .and_then(|c| hgeom::HSphere::new(c, self.radius).ok())
+    }
+}
+
 /// The outcome of looking for the nearest hit.
 #[derive(Clone, Copy, Debug)]
 pub enum Nearest {

@@ -96,7 +96,9 @@ fn a_tiny_area_light_is_the_point_light() {
 /// the point light's `1/(4 pi sinh^2 D)` on the axis (the flux through the
 /// concentric sphere of radius `D`), for small and large radii; with 1024
 /// stratified samples to 1e-4 (measured 3e-6). A shading point inside the
-/// light gets nothing from it.
+/// light gets nothing from it. The eye looks at the plane's point on the
+/// axis from beside it, so that its ray does not pass the light (lights
+/// are seen: `visible_lights.rs`).
 #[test]
 fn an_area_light_gives_a_facing_surface_the_point_lights_irradiance() {
     for (plane_at, light_at, radius) in [(1.5, 0.2, 0.05), (1.5, 0.2, 0.8), (3.0, 1.0, 1.5)] {
@@ -107,9 +109,20 @@ fn an_area_light_gives_a_facing_surface_the_point_lights_irradiance() {
             diffuse: Rgb::new(1.0, 1.0, 1.0),
             ..flat(0.0, 0.0, 0.0)
         };
+        let target = at(DVec3::Z, plane_at);
+        let beside = |s: f64| {
+            hgeom::HLine::from_point_direction(&target, DVec3::new(1.0, 0.0, -0.4))
+                .and_then(|l| l.point_at(s))
+                .expect("a point beside the target")
+        };
+        let camera = hscene_ir::Camera {
+            eye: beside(0.2),
+            target,
+            up: Some(at(DVec3::Y, 0.5)),
+        };
         let s = scene(
             settings(Net::Euclidean, 3, 0.01),
-            default_camera(0.1),
+            camera,
             vec![white],
             vec![area_light(at(DVec3::Z, light_at), 1.0, radius, 1024)],
             vec![obj(Shape::Plane(plane), 0)],

@@ -22,7 +22,7 @@
 
 use hgeom::glam::DVec4;
 use hgeom::lorentz::{self, Separation};
-use hgeom::{HSphere, Point, Ray};
+use hgeom::{HSphere, Ray};
 use hscene_ir::Rgb;
 
 use super::Integrator;
@@ -85,18 +85,12 @@ impl<'s> PathTracer<'s> {
     pub fn new(scene: &'s PreparedScene) -> PathTracer<'s> {
         let mut emitters = Vec::new();
         for light in scene.lights.iter().filter(|l| l.radius > 0.0) {
-            // A light of colour Φ has the power πΦ (see `point_lights`),
-            // spread over the sphere's area 4π sinh² a as Lambertian
-            // emission of radiance L: power π L 4π sinh² a.
-            let radiance =
-                light.diffuse * (1.0 / (4.0 * std::f64::consts::PI * light.radius.sinh().powi(2)));
-            let surface = Point::from_hyperboloid(light.position)
-                .and_then(|c| HSphere::new(c, light.radius).ok());
+            let surface = light.sphere();
             if surface.is_some() {
                 emitters.push(SphereEmitter {
                     centre: light.position,
                     radius: light.radius,
-                    radiance,
+                    radiance: light.radiance(),
                     surface,
                     object: None,
                 });

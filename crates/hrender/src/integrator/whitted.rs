@@ -6,6 +6,7 @@
 
 use std::f64::consts::PI;
 
+use hgeom::HSphere;
 use hgeom::Ray;
 use hgeom::glam::DVec4;
 use hgeom::lorentz::{self, Separation};
@@ -30,6 +31,9 @@ const MIN_WEIGHT: f64 = 1e-3;
 /// Whitted's integrator over a prepared scene.
 pub struct Whitted<'s> {
     scene: &'s PreparedScene,
+    /// The area lights' spheres and their radiance: seen directly and in
+    /// mirrors (a point light has no surface to see).
+    visible: Vec<(HSphere, Rgb)>,
 }
 
 impl Integrator for Whitted<'_> {
@@ -58,7 +62,28 @@ fn passes(m: &Material) -> f64 {
 impl<'s> Whitted<'s> {
     /// The integrator over `scene`.
     pub fn new(scene: &'s PreparedScene) -> Whitted<'s> {
-        Whitted { scene }
+        let visible = scene
+            .lights
+            .iter()
+            .filter_map(|l| Some((l.sphere()?, l.radiance())))
+            .collect();
+        Whitted { scene, visible }
+    }
+
+    /// The radiance of the nearest area light the ray sees before `t_max`,
+    /// and where: from outside only, since a light's emission faces
+    /// outward (a point inside the sphere is not lit by it either).
+    fn light_seen(&self, ray: &Ray, t_max: f64) -> Option<(Rgb, f64)> {
+        let mut best: Option<(Rgb, f64)> = None;
+        for (sphere, radiance) in &self.visible {
+            let limit = best.map_or(t_max, |b| b.1);
+            if let Some(hit) = sphere.intersect(ray, T_MIN, limit)
+                && lorentz::dot(ray.tangent_at(hit.t), hit.normal) < 0.0
+            {
+                best = Some((*radiance, hit.t));
+            }
+        }
+        best
     }
 
     /// One ray of the tree, `depth` bounces from the eye and weighing
@@ -73,7 +98,21 @@ impl<'s> Whitted<'s> {
         stats: &mut TraceStats,
     ) -> Rgb {
         stats.rays += 1;
-        let (hit, index) = match self.scene.nearest(ray, T_MIN) {
+        let found = self.scene.nearest(ray, T_MIN);
+        // An area light nearer than what the ray meets is what it sees.
+        if !self.visible.is_empty() {
+            let t_max = match &found {
+                Nearest::Hit(hit, _) => hit.t,
+                _ => f64::INFINITY,
+            };
+            if let Some((radiance, t)) = self.light_seen(ray, t_max) {
+                return match &self.scene.fog {
+                    Some(fog) => through_fog(fog, radiance, t),
+                    None => radiance,
+                };
+            }
+        }
+        let (hit, index) = match found {
             Nearest::Miss => return self.leaving(ray),
             Nearest::Failure => {
                 stats.failures += 1;
