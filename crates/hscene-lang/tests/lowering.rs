@@ -1581,3 +1581,45 @@ Objects { Sphere %1, 0.05, #1; Sphere %2, 0.05, #1; }";
 Objects { Sphere %1, 0.05, #1; Sphere %99999999999999999999, 0.05, #1; }";
     expect_only(src, "HSC0004", Severity::Error, "%99999999999999999999", 0);
 }
+
+/// `Translate(L, d)` moves by the hyperbolic distance `d` along L's
+/// direction: the origin along the x axis lands at `tanh(d/2)`; a point on
+/// a general line moves `d` along it (negative: backwards); a zero or too
+/// large distance is refused at the number.
+#[test]
+fn translate_by_distance_moves_by_that_distance() {
+    let c = compile_checked(
+        "Points { (0, 0, 0); (0.5, 0, 0); (0.2, 0.1, 0); (0.3, 0.4, 0.1); (0.2, 0.1, 0); }\n\
+         Transformations { hline (%1, %2); hline (%3, %4); %1->Translate(%1, 1.3); %5->Translate(%2, -0.7); }",
+    );
+    assert!(c.diagnostics.is_empty(), "{:#?}", c.diagnostics);
+    let scene = c.scene.unwrap();
+    let p = |k: usize| match scene.points[k].position {
+        hgeom::Vertex::Interior(p) => p,
+        other => panic!("{other:?}"),
+    };
+    let moved = p(0).coords();
+    assert!(
+        (moved.x - 0.65f64.tanh()).abs() < 1e-15 && moved.y == 0.0,
+        "{moved:?}"
+    );
+    let (a, b) = (p(2), p(3));
+    let q = p(4);
+    assert!((q.distance(a) - 0.7).abs() < 1e-13);
+    // On the line, on the side away from the second point.
+    let line = hgeom::HLine::through(&a.into(), &b.into()).unwrap();
+    assert!(line.distance_to(&q) < 1e-13);
+    assert!(q.distance(b) > a.distance(b));
+    for bad in ["0", "40"] {
+        let c = compile(&format!(
+            "Points {{ (0, 0, 0); (0.5, 0, 0); }}\nTransformations {{ hline (%1, %2); %1->Translate(%1, {bad}); }}"
+        ));
+        assert!(
+            c.diagnostics
+                .iter()
+                .any(|d| d.code == hscene_lang::Code::InvalidValue),
+            "{bad}: {:#?}",
+            c.diagnostics
+        );
+    }
+}

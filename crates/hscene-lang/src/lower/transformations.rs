@@ -4,7 +4,9 @@
 //! objects, lights and the camera are built here and applied later
 //! (`moves.rs`).
 
-use hgeom::{HPlane, Isometry, Segment, Vertex};
+use hgeom::{HPlane, Isometry, Point, Segment, Vertex};
+
+use super::ranges::MAX_LENGTH;
 
 use super::Lowerer;
 use super::moves::PendingMove;
@@ -67,7 +69,7 @@ impl Lowerer<'_> {
             else {
                 self.report(
                     Diagnostic::new(Code::WrongType, st.span, "expected a transformation statement")
-                        .with_help("write `hline (%A, %B);`, `hplane (%A, %B, %C);`, `%P->Rotate(L, angle);`, `%P->Translate(L);` or `%P->Reflect(S);`; a rotation or translation may end in `, animate`"),
+                        .with_help("write `hline (%A, %B);`, `hplane (%A, %B, %C);`, `%P->Rotate(L, angle);`, `%P->Translate(L);`, `%P->Translate(L, d);` or `%P->Reflect(S);`; a rotation or translation may end in `, animate`"),
                 );
                 continue;
             };
@@ -273,8 +275,15 @@ impl Lowerer<'_> {
                     Motion::Fixed(Isometry::rotation_about_segment_unchecked(&axis, angle))
                 })
             }
-            (Transformation::Translate, [line]) => {
-                let along = self.resolve_line(line)?;
+            (Transformation::Translate, [line, ..]) if items.len() <= 2 => {
+                let along = match items.get(1) {
+                    None => self.resolve_line(line)?,
+                    Some(distance) => {
+                        let line = self.resolve_line(line);
+                        let d = self.number(distance);
+                        self.by_distance(line?, d?, distance.span())?
+                    }
+                };
                 let motion = Motion::Translate { along };
                 match motion.at(if animated { self.time } else { 1.0 }) {
                     Ok(_) if animated => Some(motion),
@@ -306,7 +315,7 @@ impl Lowerer<'_> {
                         "`%P->Rotate(L, angle);` (L: an h-line number, angle in radians)"
                     }
                     Transformation::Translate => {
-                        "`%P->Translate(L);` (along h-line L, from its first point to its second)"
+                        "`%P->Translate(L);` (along h-line L, from its first point to its second) or `%P->Translate(L, d);` (by hyperbolic distance d along L's direction)"
                     }
                     _ => "`%P->Reflect(S);` (S: an h-plane number)",
                 };
@@ -314,6 +323,42 @@ impl Lowerer<'_> {
                     span,
                     format!("wrong number of arguments to `{}`", name.text),
                     format!("write {usage}"),
+                );
+                None
+            }
+        }
+    }
+
+    /// The segment from `line`'s first point to the point at hyperbolic
+    /// distance `d` from it along the line (towards its second point;
+    /// backwards for a negative `d`): translating along it moves by `d`.
+    fn by_distance(&mut self, line: Segment, d: f64, span: Span) -> Option<Segment> {
+        if !(d != 0.0 && d.abs() <= MAX_LENGTH) {
+            self.error(
+                Code::InvalidValue,
+                span,
+                format!(
+                    "a translation distance must be non-zero and at most {MAX_LENGTH} in size, not {}",
+                    hgeom::Compact(d)
+                ),
+            );
+            return None;
+        }
+        let start = line.start();
+        let end = hgeom::HLine::through(&start.into(), &line.end().into())
+            .and_then(|l| l.point_at(d))
+            .ok()
+            .filter(Point::is_representable);
+        match end.and_then(|e| Segment::new(start, e).ok()) {
+            Some(segment) => Some(segment),
+            None => {
+                self.error(
+                    Code::NumericFailure,
+                    span,
+                    format!(
+                        "the point {} along this line leaves what f64 can represent",
+                        hgeom::Compact(d)
+                    ),
                 );
                 None
             }
