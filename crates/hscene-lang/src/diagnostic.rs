@@ -160,6 +160,7 @@ codes! {
     DegenerateTriangles = "HSC1009", Warning, "degenerate mesh triangles";
     AmbientUnderPath = "HSC1010", Warning, "ambient light under the path integrator";
     SqueezedDisk = "HSC1011", Warning, "great disk squeezed into the middle";
+    UpRoll = "HSC1012", Warning, "up point written as a direction";
 }
 
 impl Code {
@@ -346,7 +347,7 @@ mod tests {
     #[test]
     fn code_table_is_consistent() {
         assert_eq!(Code::ALL.len(), CODES.len());
-        assert_eq!(Code::ALL.len(), 49);
+        assert_eq!(Code::ALL.len(), 50);
         let mut strings = HashSet::new();
         for &(code, s, sev, title) in CODES {
             assert_eq!(code.as_str(), s);

@@ -29,6 +29,7 @@ mod suggest;
 mod table;
 mod text;
 mod transformations;
+mod up_lint;
 mod values;
 mod view_globals;
 mod view_lint;
@@ -181,6 +182,7 @@ pub(crate) fn lower(
         lw.lint_scene(camera);
         lw.lint_outside_view(camera);
         lw.lint_squeezed_disk(camera);
+        lw.lint_up_roll(camera);
     }
     lw.mark_failed_references(file);
     lw.lint_unused();

@@ -53,6 +53,11 @@ impl Lowerer<'_> {
 
     /// The camera, with its defaults; `None` if a part failed or the parts
     /// do not fix a view.
+    /// Where `up` was given, if it was.
+    pub(super) fn up_span(&self) -> Option<Span> {
+        self.camera_parts.up.map(|(_, span)| span)
+    }
+
     /// Where `to` was given, if it was.
     pub(super) fn target_span(&self) -> Option<Span> {
         self.camera_parts.target.map(|(_, span)| span)
