@@ -8,10 +8,12 @@
 //! in the view plane, the up the point gives with the up its coordinates
 //! give read as a direction at the eye; it warns when they differ by more
 //! than [`ROLL_WARNING_DEGREES`] while the coordinates read as a direction
-//! name (within that angle) the default up, `+y` carried to the eye: the
-//! mark of a direction written where a point belongs. An up point placed
-//! deliberately (near the eye in the wanted direction, or off to roll the
-//! picture on purpose) is not linted.
+//! name (within that angle) the default up, `+y` carried to the eye, and
+//! the point lies nearer the origin's side than the eye's (at least half as
+//! far from the eye as the origin is): the mark of a direction written
+//! where a point belongs. An up point placed deliberately (near the eye in
+//! the wanted direction, or off to roll the picture on purpose, or a whole
+//! scene moved far from the origin) is not linted.
 
 use hgeom::glam::DVec3;
 use hgeom::{HLine, Isometry};
@@ -32,6 +34,10 @@ impl Lowerer<'_> {
         };
         let written = up.coords();
         if !(written.length() > 0.0) {
+            return;
+        }
+        // A point placed near the eye was placed as a point.
+        if up.distance(camera.eye) < 0.5 * camera.eye.distance_from_origin() {
             return;
         }
         let to_origin = Isometry::transvection_from_origin(camera.eye).inverse();
