@@ -74,12 +74,12 @@ pub fn parts(
     if options.thin == ThinParts::Thicken
         && let Some(w) = style.edges
     {
-        // A kept thickened edge is at least THICKENED_ASPECT minimum
+        // A kept thickened edge is at least THICKENED_MIN_LENGTH minimum
         // features long; an edge of hyperbolic length l is at most
         // 2 (1 - ρ) sinh(l) long at ρ (the bound of `measure`, for a ball
         // of radius l about its end), so none lies wholly beyond this.
         let edge = h.edge_length().unwrap_or(f64::INFINITY).min(20.0);
-        let long_enough = 1.0 - crate::rules::THICKENED_ASPECT * m / (2.0 * edge.sinh());
+        let long_enough = 1.0 - crate::rules::THICKENED_MIN_LENGTH * m / (2.0 * edge.sinh());
         rho = rho
             .max(long_enough.min(1.0 - 2.0 * m))
             .max(thick_enough_radius(w, m));

@@ -26,7 +26,7 @@ use crate::tube::{Axis, Capsule, TubeRadius};
 
 /// A thickened tube is kept when its axis is at least this many minimum
 /// features long: shorter, it would print as a blob, not a rod.
-pub const THICKENED_ASPECT: f64 = 4.0;
+pub const THICKENED_MIN_LENGTH: f64 = 4.0;
 
 /// The largest hyperbolic radius searched for a plane's disc.
 const MAX_DISC_RADIUS: f64 = 30.0;
@@ -55,7 +55,7 @@ pub fn tube(axis: Axis, w: f64, options: &ExportOptions) -> Option<PartSurface> 
             } else {
                 axis.trimmed(|s| 1.0 - axis.ball_radius(s) >= 2.0 * m)?
             };
-            if axis.chord() < THICKENED_ASPECT * m {
+            if axis.chord() < THICKENED_MIN_LENGTH * m {
                 return None;
             }
             Capsule::new(axis, TubeRadius::Thickened { base: w, min: m })
