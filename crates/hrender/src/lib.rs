@@ -22,6 +22,7 @@ mod display;
 mod error;
 mod exposure;
 mod fog;
+mod horizon_fill;
 mod icc;
 mod image;
 mod integrator;

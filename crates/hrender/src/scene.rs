@@ -19,6 +19,7 @@ use smallvec::SmallVec;
 
 use crate::accel::{Accel, Leaf, Step};
 use crate::error::RenderError;
+use crate::horizon_fill::{average_appearance, bucket_of};
 
 /// An object ready for tracing.
 pub struct PreparedObject {
@@ -48,6 +49,10 @@ pub struct PreparedObject {
     /// its faces as triangles in the canonical frame: the path integrator
     /// samples them by solid angle. Empty for every other object.
     pub faces: Vec<[DVec4; 3]>,
+    /// For a honeycomb, the materials of its horizon hits: its average
+    /// appearance along the rest of the way to distance 12, by that rest
+    /// (`horizon_fill.rs`). Empty for every other object.
+    pub horizon: Vec<usize>,
 }
 
 /// Rays that leave a surface ignore hits closer than this (hyperbolic
@@ -75,11 +80,15 @@ impl std::fmt::Debug for PreparedObject {
 }
 
 impl PreparedObject {
-    /// The index of the material of the part a hit met (`hit.part`).
-    pub fn material_of(&self, part: u32) -> usize {
+    /// The index of the material of the part a hit met (`hit.part`; for
+    /// a honeycomb's horizon hit, by where it is).
+    pub fn material_of(&self, hit: &Hit) -> usize {
         match &self.parts {
             None => self.material,
-            Some(p) => p.material(part, self.material),
+            Some(_) if is_horizon(hit.part) && !self.horizon.is_empty() => {
+                self.horizon[bucket_of(hit, self.horizon.len())]
+            }
+            Some(p) => p.material(hit.part, self.material),
         }
     }
 
@@ -116,6 +125,13 @@ impl PreparedObject {
             footprint.and_then(|f| moved.as_ref().unwrap_or(shape).for_footprint(f))
         {
             moved = Some(nearer);
+        }
+        // A honeycomb's walk reports where its horizon stops a ray, which
+        // is drawn in the honeycomb's average appearance (`horizon_fill.rs`).
+        if let ir::Shape::Honeycomb(h) = moved.as_ref().unwrap_or(shape) {
+            let mut h = h.clone();
+            h.surface = h.surface.with_horizon_hits(true);
+            moved = Some(ir::Shape::Honeycomb(h));
         }
         let ball = |s: &ir::Shape| {
             s.sphere()
@@ -344,10 +360,32 @@ impl PreparedScene {
                         .inverse(),
                     ball,
                     faces,
+                    horizon: Vec::new(),
                 })
             })
             .collect();
-        let objects = prepared.into_iter().collect::<Result<Vec<_>, _>>()?;
+        let mut objects = prepared.into_iter().collect::<Result<Vec<_>, _>>()?;
+        let mut materials = scene.materials.clone();
+        for (o, source) in objects.iter_mut().zip(&scene.objects) {
+            if !matches!(source.shape, ir::Shape::Honeycomb(_)) {
+                continue;
+            }
+            // The same honeycomb walked to distance 12 whatever the
+            // picture's pixels, for the average (`horizon_fill.rs`).
+            let sampler = PreparedObject {
+                surfaces: PreparedObject::moved(&source.shape, stages, None, false).0,
+                material: o.material,
+                parts: o.parts.clone(),
+                opaque: o.opaque,
+                to_local: o.to_local,
+                ball: None,
+                faces: Vec::new(),
+                horizon: Vec::new(),
+            };
+            let beyond = average_appearance(&sampler, &materials, scene.settings.recursion_depth);
+            o.horizon = (materials.len()..materials.len() + beyond.len()).collect();
+            materials.extend(beyond);
+        }
         for (index, m) in scene.materials.iter().enumerate() {
             let bad_scale = m
                 .texture
@@ -405,7 +443,7 @@ impl PreparedScene {
         Ok(PreparedScene {
             objects,
             lights,
-            materials: scene.materials.clone(),
+            materials,
             background: scene.settings.background,
             fog: scene.settings.fog,
             ambient: scene.settings.ambient,
@@ -529,11 +567,15 @@ impl PreparedScene {
         let mut s = 1.0;
         let mut from = t_min;
         for _ in 0..MAX_PART_CROSSINGS {
-            let Some(hit) = surface.intersect(ray, from, t_max) else {
+            // Past the horizon nothing is known: the light goes on.
+            let Some(hit) = surface
+                .intersect(ray, from, t_max)
+                .filter(|h| !is_horizon(h.part))
+            else {
                 return s;
             };
             // PreparedScene::new checked every material index of the parts.
-            s *= pass(&self.materials[o.material_of(hit.part)]);
+            s *= pass(&self.materials[o.material_of(&hit)]);
             if s < MIN_TRANSMITTANCE {
                 return 0.0;
             }
@@ -541,6 +583,11 @@ impl PreparedScene {
         }
         s
     }
+}
+
+/// True for the `part` of a honeycomb's horizon hit.
+fn is_horizon(part: u32) -> bool {
+    hgeom::decode_honeycomb_part(part).0 == hgeom::HoneycombPart::Horizon
 }
 
 /// The hierarchy over every surface of every object: one leaf per Klein

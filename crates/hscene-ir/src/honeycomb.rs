@@ -68,6 +68,10 @@ impl PartMaterials {
                 Some(_) => coloured.unwrap_or(own),
                 None => own,
             },
+            // Beyond the walk's horizon: no part, so no material of its
+            // own; the renderer draws it in the honeycomb's average
+            // appearance.
+            HoneycombPart::Horizon => own,
         }
     }
 }

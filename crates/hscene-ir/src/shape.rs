@@ -234,7 +234,8 @@ impl Shape {
     /// the smallest pixel (`RegularHoneycomb::horizon_for_pixel`), and on a
     /// flat image plane each ray from the eye no farther than where they
     /// shrink below its own pixel (`RegularHoneycomb::with_view_horizon`);
-    /// beyond, the background shows (docs/honeycombs.md). Every other
+    /// beyond, the renderer draws the honeycomb's average appearance
+    /// (docs/honeycombs.md). Every other
     /// shape is unchanged, and `None` says so (without a copy).
     pub fn for_footprint(&self, footprint: &PixelFootprint) -> Option<Shape> {
         let Shape::Honeycomb(h) = self else {

@@ -64,7 +64,14 @@ pub enum HoneycombPart {
     Face,
     /// The ball about a vertex.
     Vertex,
+    /// No part: the walk reached its horizon before meeting one (reported
+    /// only by a honeycomb that asks for it,
+    /// [`RegularHoneycomb::with_horizon_hits`](super::RegularHoneycomb::with_horizon_hits)).
+    Horizon,
 }
+
+/// The `part` of a horizon hit: a code no part of a cell class has.
+const HORIZON_PART: u32 = u32::MAX;
 
 impl HoneycombPart {
     fn code(self) -> u32 {
@@ -72,6 +79,7 @@ impl HoneycombPart {
             HoneycombPart::Edge => 0,
             HoneycombPart::Face => 1,
             HoneycombPart::Vertex => 2,
+            HoneycombPart::Horizon => HORIZON_PART,
         }
     }
 }
@@ -79,6 +87,11 @@ impl HoneycombPart {
 /// The [`Hit::part`](crate::Hit::part) of a honeycomb hit: the kind of part
 /// and the class of its cell.
 pub(crate) fn encode_part(kind: HoneycombPart, class: u32) -> u32 {
+    if kind == HoneycombPart::Horizon {
+        return HORIZON_PART;
+    }
+    // Classes are below `cell_classes`, a small number: a part of a cell
+    // class never reaches the horizon's code.
     class.saturating_mul(3).saturating_add(kind.code())
 }
 
@@ -89,6 +102,9 @@ pub(crate) fn encode_part(kind: HoneycombPart, class: u32) -> u32 {
 /// modulo the number of classes). For hits of other shapes (`part = 0`) it
 /// reads `(Edge, 0)`, which means nothing there.
 pub fn decode_honeycomb_part(part: u32) -> (HoneycombPart, u32) {
+    if part == HORIZON_PART {
+        return (HoneycombPart::Horizon, 0);
+    }
     let kind = match part % 3 {
         0 => HoneycombPart::Edge,
         1 => HoneycombPart::Face,
@@ -115,6 +131,10 @@ mod tests {
                 );
             }
         }
+        assert_eq!(
+            decode_honeycomb_part(encode_part(HoneycombPart::Horizon, 5)),
+            (HoneycombPart::Horizon, 0)
+        );
     }
 
     #[test]

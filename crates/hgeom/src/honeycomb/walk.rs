@@ -59,8 +59,10 @@
 //! which in a renderer is the eye; [`RegularHoneycomb::with_horizon`]
 //! changes it), where a depth-limited honeycomb can reach no listed cell
 //! any more (a ball about the base cell holding all of them), or after
-//! [`MAX_WALK_STEPS`] steps. Nothing is drawn beyond: the ray misses and
-//! the background shows. At distance 12 a cell of size 1 subtends
+//! [`MAX_WALK_STEPS`] steps. Nothing is met beyond: the ray misses, or,
+//! with [`RegularHoneycomb::with_horizon_hits`], reports where the horizon
+//! (or the step limit) stopped it, so that a renderer can draw the
+//! honeycomb's average appearance there rather than a hole. At distance 12 a cell of size 1 subtends
 //! `1/sinh 12 ≈ 1.2e-5` rad, a hundredth of a pixel of a 1000-pixel image
 //! with a 90° field; [`RegularHoneycomb::horizon_for_pixel`] gives the
 //! distance where a cell's features fall below a given pixel, and
@@ -167,6 +169,10 @@ pub struct RegularHoneycomb {
     /// `cosh` of the radius of a ball about the base point holding every
     /// part of a depth-limited honeycomb with finite cells and vertices.
     cosh_reach: Option<f64>,
+    /// Report a ray that reaches the horizon as a hit on
+    /// [`HoneycombPart::Horizon`](super::HoneycombPart::Horizon)
+    /// ([`RegularHoneycomb::with_horizon_hits`]).
+    horizon_hits: bool,
 }
 
 impl RegularHoneycomb {
@@ -238,6 +244,7 @@ impl RegularHoneycomb {
             cosh_horizon: DEFAULT_HORIZON.cosh(),
             view: None,
             cosh_reach,
+            horizon_hits: false,
         }
     }
 
@@ -284,6 +291,25 @@ impl RegularHoneycomb {
     /// regular honeycomb).
     pub fn rings(&self) -> Rings {
         self.rings
+    }
+
+    /// With `on`, a ray that the horizon stops (not `t_max`, not a
+    /// depth's last cell) reports a hit there, at the distance where the
+    /// walk gave up, on the part
+    /// [`HoneycombPart::Horizon`](super::HoneycombPart::Horizon) with the
+    /// normal facing the ray: a renderer can draw what lies beyond (the
+    /// honeycomb's average appearance) instead of the background. A shadow
+    /// test ([`RegularHoneycomb::blocks`]) never reports one. Off by
+    /// default: the walk then says only what it met.
+    pub fn with_horizon_hits(mut self, on: bool) -> RegularHoneycomb {
+        self.horizon_hits = on;
+        self
+    }
+
+    /// True if rays the horizon stops report a hit there
+    /// ([`RegularHoneycomb::with_horizon_hits`]).
+    pub fn horizon_hits(&self) -> bool {
+        self.horizon_hits
     }
 
     /// The same honeycomb walked only out to `distance` from the origin of
@@ -476,8 +502,8 @@ impl RegularHoneycomb {
     /// The arc lengths of the original ray inside the horizon and (with a
     /// depth) the ball that holds every listed cell, clipped to
     /// `(t_min, t_max)`, as `(e^lo, e^hi)`: the walk needs no logarithm
-    /// of them.
-    fn window(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<(f64, f64)> {
+    /// of them; and whether the horizon is what ends it.
+    fn window(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<(f64, f64, bool)> {
         let mut lo = if t_min > 0.0 { t_min.exp() } else { 1.0 };
         // A primary ray's arc is unbounded: e^inf is inf, without the call.
         let mut hi = if t_max == f64::INFINITY {
@@ -487,23 +513,26 @@ impl RegularHoneycomb {
         };
         // -<X(t),C> = a cosh t + b sinh t = k is (a+b) u² - 2k u + (a-b) = 0
         // in u = e^t; a ± b > 0 for a future C (<O ± D, C> of null vectors).
-        let mut clip = |c: DVec4, k: f64| {
+        let roots = |c: DVec4, k: f64| {
             let a = -lorentz::dot(ray.origin, c);
             let b = -lorentz::dot(ray.dir, c);
-            let (u_in, u_out) = exp_roots_lazy(a + b, k, a - b)?.exp();
-            lo = lo.max(u_in);
-            hi = hi.min(u_out);
-            Some(())
+            exp_roots_lazy(a + b, k, a - b).map(|r| r.exp())
         };
         let cosh_horizon = match &self.view {
             Some(view) => view.cosh_for(ray, self.cosh_horizon),
             None => self.cosh_horizon,
         };
-        clip(DVec4::W, cosh_horizon)?;
+        let (u_in, u_out) = roots(DVec4::W, cosh_horizon)?;
+        lo = lo.max(u_in);
+        let mut at_horizon = u_out < hi;
+        hi = hi.min(u_out);
         if let Some(k) = self.cosh_reach {
-            clip(self.to_world.col(3), k)?;
+            let (u_in, u_out) = roots(self.to_world.col(3), k)?;
+            lo = lo.max(u_in);
+            at_horizon &= u_out >= hi;
+            hi = hi.min(u_out);
         }
-        (lo < hi).then_some((lo, hi))
+        (lo < hi).then_some((lo, hi, at_horizon))
     }
 
     /// The walk, compiled apart for a uniform honeycomb's seed parts: in
@@ -537,7 +566,10 @@ impl RegularHoneycomb {
         stats: &mut WalkStats,
         mut trace: Option<(&mut Vec<WalkStep>, usize)>,
     ) -> Option<Hit> {
-        let (u_lo, u_hi) = self.window(ray, t_min, t_max)?;
+        let (u_lo, u_hi, at_horizon) = self.window(ray, t_min, t_max)?;
+        // Where the horizon stops the walk, a horizon hit if asked for.
+        let report = self.horizon_hits && at_horizon && !any && trace.is_none();
+        let beyond = |t: f64| report.then(|| horizon_hit(ray, t));
         let domain = &*self.domain;
         let walls = domain.walls();
         let nw = walls.len();
@@ -624,7 +656,12 @@ impl RegularHoneycomb {
                 }
                 return Some(self.hit(ray, t, &here, v, (&m, &pending), part, any));
             }
-            let exit = exit.filter(|_| v_exit < span)?;
+            let Some(exit) = exit.filter(|_| v_exit < span) else {
+                // Out of the window: past t_max or the depth's reach (a
+                // miss), or at the horizon. A ray with no exit runs inside
+                // this cell to its ideal centre, beyond any horizon.
+                return beyond(arc(v_span));
+            };
             // The exit point and tangent, both scaled by cosh τ: the walk
             // keeps o and d with a common scale λ (`<o,o> = -λ²`), which
             // the exit ratios ignore and the part tests divide out, and
@@ -662,7 +699,7 @@ impl RegularHoneycomb {
                 });
             }
         }
-        None
+        beyond(arc(u_acc))
     }
 
     /// True if one of the cells (local centres mapped by `m`) is drawn.
@@ -736,5 +773,18 @@ impl RegularHoneycomb {
             shading: normal,
             part: encode_part(part.kind(), class),
         }
+    }
+}
+
+/// The hit a ray that the horizon stopped at arc length `t` reports: the
+/// ray's point there, the normal facing back along it.
+fn horizon_hit(ray: &Ray, t: f64) -> Hit {
+    let facing = -ray.tangent_at(t);
+    Hit {
+        t,
+        point: ray.at(t),
+        normal: facing,
+        shading: facing,
+        part: encode_part(super::HoneycombPart::Horizon, 0),
     }
 }

@@ -391,7 +391,7 @@ impl Integrator for PathTracer<'_> {
                 return self.scene.background;
             }
             let object = &self.scene.objects[index];
-            let m = &self.scene.materials[object.material_of(hit.part)];
+            let m = &self.scene.materials[object.material_of(&hit)];
             if !m.emission.is_black() {
                 let w = match self.emitter_of(index) {
                     Some(k) => self.emission_weight(k, last),

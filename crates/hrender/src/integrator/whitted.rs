@@ -122,7 +122,7 @@ impl<'s> Whitted<'s> {
         };
         let object = &self.scene.objects[index];
         // PreparedScene::new checked every material index.
-        let m = &self.scene.materials[object.material_of(hit.part)];
+        let m = &self.scene.materials[object.material_of(&hit)];
         let d = ray.tangent_at(hit.t);
         // The hyperboloid loses unit tangent vectors far from the eye (its
         // f64 range ends near distance 19, docs/geometry.md section 16). Along a ray the error of
