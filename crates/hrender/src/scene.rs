@@ -199,9 +199,18 @@ pub struct PreparedLight {
     pub radius: f64,
     /// Shadow rays per shading point for an area light (at least 1).
     pub samples: u32,
+    /// `sinh²` of the light's `near` distance: a point light's fall-off
+    /// `1/(4π sinh² r)` uses `max(sinh² r, near_sinh2)`.
+    pub near_sinh2: f64,
 }
 
 impl PreparedLight {
+    /// The `sinh² r` a point light's fall-off divides by, at `r` from it
+    /// (given as `sinh² r`): never less than at its `near` distance.
+    pub fn falloff_sinh2(&self, sinh2: f64) -> f64 {
+        sinh2.max(self.near_sinh2)
+    }
+
     /// The radiance an area light's sphere emits, from both sides: a light
     /// of colour Φ has the power πΦ (as a point light of that colour
     /// would, `1/(4π sinh² r)` from it), spread over the sphere's area
@@ -412,10 +421,16 @@ impl PreparedScene {
             let out_of_range = || RenderError::OutOfRange {
                 what: format!("light {}", index + 1),
             };
-            let p = stages
-                .iter()
-                .try_fold(l.position, |p, iso| iso.checked_apply(&p))
-                .map_err(|_| out_of_range())?;
+            // A camera light is at the eye, the canonical frame's origin,
+            // in every frame of an animation.
+            let p = if l.on_camera {
+                Point::ORIGIN
+            } else {
+                stages
+                    .iter()
+                    .try_fold(l.position, |p, iso| iso.checked_apply(&p))
+                    .map_err(|_| out_of_range())?
+            };
             // Every point of an area light must be placeable too.
             if l.radius > 0.0 {
                 Point::at_distance_from_origin(DVec3::Z, p.distance_from_origin() + l.radius)
@@ -427,6 +442,7 @@ impl PreparedScene {
                 specular: l.specular,
                 radius: l.radius,
                 samples: l.samples,
+                near_sinh2: l.near.sinh().powi(2),
             });
         }
         let (surfaces, accel) = hierarchy(&objects);

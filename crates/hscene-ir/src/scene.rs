@@ -75,6 +75,13 @@ pub struct Light {
     /// Shadow rays per shading point for an area light (`samples = n`);
     /// 1 for a point light. Invariant: at least 1.
     pub samples: u32,
+    /// `near = D`: nearer than this hyperbolic distance the light's
+    /// fall-off stops growing (a surface there receives what it would at
+    /// `D`); 0 for none. Invariant: finite and non-negative.
+    pub near: f64,
+    /// The light is at the eye wherever the camera goes (`camera` as its
+    /// position); `position` is then the camera's eye.
+    pub on_camera: bool,
 }
 
 /// The final position of a declared point, for inspection (`--emit ir`).

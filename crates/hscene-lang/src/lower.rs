@@ -191,9 +191,13 @@ pub(crate) fn lower(
     if lw.diags.iter().any(Diagnostic::is_error) {
         return None;
     }
+    let camera = camera?;
+    for (light, _) in lw.lights.iter_mut().filter(|(l, _)| l.on_camera) {
+        light.position = camera.eye;
+    }
     Some(Scene {
         settings: lw.settings,
-        camera: camera?,
+        camera,
         materials: lw.materials.into_values().collect(),
         lights: lw.lights.into_iter().map(|(l, _)| l).collect(),
         objects: lw.objects.into_iter().map(|(o, _)| o).collect(),

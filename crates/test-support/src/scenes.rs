@@ -131,6 +131,8 @@ pub fn light(at: Point, intensity: f64) -> Light {
         name: None,
         radius: 0.0,
         samples: 1,
+        near: 0.0,
+        on_camera: false,
     }
 }
 

@@ -208,7 +208,8 @@ impl<'s> PathTracer<'s> {
             // exactly Whitted's `ρ Φ / (4π sinh² r)`; clear tinted glass on
             // the way filters it.
             let intensity = light.diffuse.tint(self.filtered(p, wi, apart.distance())) * 0.25;
-            sum += bsdf.eval(n, wo, wi).tint(intensity) * (cos * shadow / apart.sinh_squared());
+            sum += bsdf.eval(n, wo, wi).tint(intensity)
+                * (cos * shadow / light.falloff_sinh2(apart.sinh_squared()));
         }
         for e in &self.emitters {
             let (u1, u2) = (stream.next_unit(), stream.next_unit());

@@ -287,7 +287,7 @@ impl<'s> Whitted<'s> {
         if shadow == 0.0 {
             return Rgb::default();
         }
-        let f_att = 1.0 / (4.0 * PI * apart.sinh_squared());
+        let f_att = 1.0 / (4.0 * PI * light.falloff_sinh2(apart.sinh_squared()));
         let lit = at.phong(light.diffuse, light.specular, to_light, cos_theta.min(1.0))
             * (shadow * f_att);
         // Tinted glass between the point and the light filters it.

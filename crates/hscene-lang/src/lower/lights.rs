@@ -16,6 +16,9 @@ const MAX_LIGHT_RADIUS: f64 = 20.0;
 /// Most shadow rays per shading point for an area light.
 const MAX_LIGHT_SAMPLES: u32 = 4096;
 
+/// Largest `near` distance (as `irradiance_at`'s bound).
+const MAX_LIGHT_NEAR: f64 = 30.0;
+
 /// Shadow rays per shading point when an area light gives no `samples`.
 const DEFAULT_LIGHT_SAMPLES: u32 = 16;
 
@@ -24,6 +27,7 @@ const DEFAULT_LIGHT_SAMPLES: u32 = 16;
 enum LightKey {
     Radius,
     Samples,
+    Near,
     /// Handled by `light_strength.rs`.
     IrradianceAt,
 }
@@ -39,6 +43,11 @@ const OPTIONS: &[(&str, LightKey, &str)] = &[
         "samples",
         LightKey::Samples,
         "shadow rays per shading point",
+    ),
+    (
+        "near",
+        LightKey::Near,
+        "nearer than this the fall-off stops growing",
     ),
     (
         light_strength::KEY,
@@ -74,10 +83,15 @@ impl Lowerer<'_> {
 
     /// Lowers one light; returns its index, or `None` after reporting why not.
     fn light_statement(&mut self, st: &Statement) -> Option<usize> {
-        const USAGE: &str = "write `%P, (diffuse r, g, b), (specular r, g, b);`, optionally followed by `radius = r, samples = n` for an area light";
+        const USAGE: &str = "write `%P, (diffuse r, g, b), (specular r, g, b);` (or `camera` for the point: a light at the eye), optionally followed by `radius = r, samples = n` for an area light or `near = d`";
         let mut values: Vec<&Value> = Vec::new();
         let mut options: Vec<(&Ident, &Value)> = Vec::new();
-        for clause in &st.clauses {
+        // `camera` in place of the point: the light goes where the eye goes.
+        let on_camera = matches!(
+            st.clauses.first(),
+            Some(Clause::Apply { target: None, name, arg: None, .. }) if name.text == "camera"
+        );
+        for clause in st.clauses.iter().skip(usize::from(on_camera)) {
             match clause {
                 Clause::Value(v) if options.is_empty() => values.push(v),
                 Clause::Assign { key, .. } if values.len() < 3 && option(&key.text).is_none() => {
@@ -105,22 +119,38 @@ impl Lowerer<'_> {
                 }
             }
         }
-        if values.len() != 3 {
+        let given = values.len() + usize::from(on_camera);
+        if given != 3 {
             self.wrong_arity(
                 st.span,
-                format!(
-                    "a light takes 3 values (a point and two colours), got {}",
-                    values.len()
-                ),
+                format!("a light takes 3 values (a point and two colours), got {given}"),
                 USAGE,
             );
             return None;
         }
-        let position = self.point_arg(values[0], "a light");
-        let diffuse = self.rgb(values[1]);
-        let specular = self.rgb(values[2]);
+        // A camera light's position is the eye's, set once the camera is
+        // known (`Lowerer::place_camera_lights`).
+        let position = if on_camera {
+            Some(hgeom::Point::ORIGIN)
+        } else {
+            self.point_arg(values[0], "a light")
+        };
+        let colours = &values[values.len() - 2..];
+        let diffuse = self.rgb(colours[0]);
+        let specular = self.rgb(colours[1]);
         let (options, strength) = self.take_irradiance_at(options);
-        let (radius, samples) = self.light_options(&options)?;
+        let (radius, samples, near) = self.light_options(&options)?;
+        if on_camera && radius > 0.0 {
+            self.report(
+                Diagnostic::new(
+                    Code::InvalidValue,
+                    st.span,
+                    "a camera light cannot be an area light: the eye would be inside its sphere",
+                )
+                .with_help("remove `radius` and bound the fall-off with `near = d` instead"),
+            );
+            return None;
+        }
         let (position, (diffuse, specular)) = (position?, strength.apply(diffuse?, specular?)?);
         if !self.light_fits(st.span) {
             return None;
@@ -133,6 +163,8 @@ impl Lowerer<'_> {
                 name: st.label.as_ref().map(|l| l.text.clone()),
                 radius,
                 samples,
+                near,
+                on_camera,
             },
             st.span,
         ));
@@ -141,8 +173,9 @@ impl Lowerer<'_> {
 
     /// The area-light options `radius = r` and `samples = n`: a point light
     /// (radius 0, one sample) when neither is given, 16 samples when only
-    /// the radius is.
-    fn light_options(&mut self, options: &[(&Ident, &Value)]) -> Option<(f64, u32)> {
+    /// the radius is; and `near = d` (0 when absent).
+    fn light_options(&mut self, options: &[(&Ident, &Value)]) -> Option<(f64, u32, f64)> {
+        let mut near = 0.0;
         let mut radius: Option<(f64, Span)> = None;
         let mut samples: Option<(u32, Span)> = None;
         let mut seen = SeenKeys::default();
@@ -178,6 +211,24 @@ impl Lowerer<'_> {
                         None => ok = false,
                     }
                 }
+                Some(LightKey::Near) => match self.number(value) {
+                    Some(d) if d > 0.0 && d <= MAX_LIGHT_NEAR => near = d,
+                    Some(d) => {
+                        ok = false;
+                        self.report(
+                            Diagnostic::new(
+                                Code::InvalidValue,
+                                value.span(),
+                                format!(
+                                    "a light's `near` must be above 0 and at most {MAX_LIGHT_NEAR}, got {}",
+                                    hgeom::Compact(d)
+                                ),
+                            )
+                            .with_help("`near` is a hyperbolic distance: nearer than it the light's fall-off stops growing"),
+                        );
+                    }
+                    None => ok = false,
+                },
                 // `irradiance_at` was taken out before (`light_strength.rs`).
                 Some(LightKey::IrradianceAt) | None => {
                     ok = false;
@@ -205,11 +256,11 @@ impl Lowerer<'_> {
                     )
                     .with_help("add `radius = 0.05` (a hyperbolic radius) to make it an area light, or remove `samples`"),
                 );
-                Some((0.0, 1))
+                Some((0.0, 1, near))
             }
-            Some((n, _)) => Some((r, n)),
-            None if r > 0.0 => Some((r, DEFAULT_LIGHT_SAMPLES)),
-            None => Some((0.0, 1)),
+            Some((n, _)) => Some((r, n, near)),
+            None if r > 0.0 => Some((r, DEFAULT_LIGHT_SAMPLES, near)),
+            None => Some((0.0, 1, near)),
         }
     }
 }
