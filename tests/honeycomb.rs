@@ -317,3 +317,40 @@ fn shadow_rays_cross_faces_by_their_transmission() {
         "opaque faces cast a shadow: {dark} of {open}"
     );
 }
+
+/// The looping fly-through of `{4,3,5}` (scenes/video): stepping the whole
+/// way to the next cube's centre, twice the inradius, in 25 frames, the
+/// last frame is the first (the step is a symmetry of the honeycomb), so
+/// the scene's 24 frames of 23/24 of the step loop seamlessly.
+#[test]
+fn the_flythrough_loops() {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let source = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/video/flythrough-435.hsc"),
+    )
+    .expect("the fly-through scene is in the repository");
+    assert!(source.contains("frames = 24;") && source.contains("1.017055"));
+    let whole_step = source
+        .replace("frames = 24;", "frames = 25;")
+        .replace("resolution = (240, 240);", "resolution = (64, 64);")
+        .replace("1.017055", "1.061275");
+    let scene = dir.path().join("loop.hsc");
+    std::fs::write(&scene, whole_step).expect("temporary directory is writable");
+    let frame = |k: u32| {
+        let out = dir.path().join(format!("frame{k}.png"));
+        hscene()
+            .arg("render")
+            .arg(&scene)
+            .args(["--frame", &k.to_string(), "-o"])
+            .arg(&out)
+            .assert()
+            .success();
+        pixels(&out)
+    };
+    let (first, last) = (frame(0), frame(24));
+    let share = agreement(&first, &last, 6);
+    assert!(share >= AGREE, "first and last frames agree on {share}");
+    // And the frames between differ: the camera moves.
+    let middle = frame(12);
+    assert!(agreement(&first, &middle, 6) < 0.9);
+}
