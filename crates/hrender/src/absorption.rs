@@ -12,6 +12,14 @@
 //! positive). Shadow rays cross whole objects: their length inside each
 //! absorbing object is summed from its entries and exits along the
 //! segment ([`PreparedScene::absorption_along`]).
+//!
+//! **Sheets.** A honeycomb's faces are sheets with no inside: light crosses
+//! each and goes on. On a sheet `absorption` is per crossing, as for a thin
+//! slab whose thickness is the unit: at normal incidence a crossing keeps
+//! `exp(-σ)`, at an angle `θ` to the normal `exp(-σ / |cos θ|)` (the path
+//! through a thin slab grows as `1/|cos θ|`). Layers of tinted faces then
+//! multiply, as stacked coloured glass does, instead of adding their own
+//! colours ([`sheet_filter`]).
 
 use hgeom::Ray;
 use hgeom::lorentz;
@@ -30,6 +38,17 @@ pub fn absorbed(m: &Material, d: f64) -> Rgb {
     Rgb::new((-a.r * d).exp(), (-a.g * d).exp(), (-a.b * d).exp())
 }
 
+/// What is left of light that crosses a sheet of `m` at `cos θ` to its
+/// normal (module docs, "Sheets"); white for a material that does not
+/// absorb.
+pub fn sheet_filter(m: &Material, cos: f64) -> Rgb {
+    if m.absorption.is_black() {
+        return Rgb::new(1.0, 1.0, 1.0);
+    }
+    // Grazing crossings keep nothing; the floor keeps 1/|cos θ| finite.
+    absorbed(m, 1.0 / cos.abs().max(1e-9))
+}
+
 impl PreparedScene {
     /// The product over the absorbing objects of what they let through of
     /// the segment `(t_min, t_max)` of `ray` (white without any):
@@ -38,6 +57,10 @@ impl PreparedScene {
         let mut left = Rgb::new(1.0, 1.0, 1.0);
         for &k in self.absorbing() {
             let o = &self.objects[k];
+            if o.parts.is_some() {
+                left = left.tint(self.sheets_along(k, ray, t_min, t_max));
+                continue;
+            }
             let m = &self.materials[o.material];
             let mut crossings: Vec<(f64, bool)> = Vec::new();
             for surface in o.surfaces.iter() {
@@ -72,6 +95,27 @@ impl PreparedScene {
                 length += t_max - start;
             }
             left = left.tint(absorbed(m, length));
+        }
+        left
+    }
+
+    /// What the sheets (faces) of object `k`, drawn in several materials,
+    /// let through of the segment: [`sheet_filter`] for each part it
+    /// crosses.
+    fn sheets_along(&self, k: usize, ray: &Ray, t_min: f64, t_max: f64) -> Rgb {
+        let o = &self.objects[k];
+        let mut left = Rgb::new(1.0, 1.0, 1.0);
+        for surface in o.surfaces.iter() {
+            let mut from = t_min;
+            for _ in 0..MAX_CROSSINGS {
+                let Some(hit) = surface.intersect(ray, from, t_max) else {
+                    break;
+                };
+                let m = &self.materials[o.material_of(&hit)];
+                let cos = lorentz::dot(ray.tangent_at(hit.t), hit.normal);
+                left = left.tint(sheet_filter(m, cos));
+                from = hit.t + 1e-9;
+            }
         }
         left
     }

@@ -21,7 +21,8 @@
 //! not decide; at that distance the starts fall all over the cells) and
 //! are walked to distance 12. Each takes the ambient reflectance and
 //! emission of the parts it meets within `Δ`, through a transparent part
-//! `trans` times what it meets next, up to the recursion depth. The mean,
+//! `trans` times what it meets next (filtered by a tinted face,
+//! `absorption.rs`), up to the recursion depth. The mean,
 //! for `Δ` in steps of [`STEP`], is a material with those ambient and
 //! emission terms and nothing else (no diffuse, specular, mirror or glass
 //! term); a horizon hit at distance `h` from the eye takes the one for
@@ -37,6 +38,7 @@ use hgeom::glam::DVec3;
 use hgeom::{DEFAULT_HORIZON, Hit, HoneycombPart, Ray, decode_honeycomb_part};
 use hscene_ir::{Material, Rgb};
 
+use crate::absorption::sheet_filter;
 use crate::material::reflectances;
 use crate::scene::{PreparedObject, T_MIN};
 
@@ -119,7 +121,7 @@ fn seen_along(
     max_depth: u32,
 ) -> Vec<Met> {
     let mut met = Vec::new();
-    let mut weight = 1.0;
+    let mut weight = Rgb::new(1.0, 1.0, 1.0);
     let mut t_min = T_MIN;
     for _ in 0..=max_depth {
         let Some(hit) = object
@@ -132,11 +134,12 @@ fn seen_along(
         let (a, _) = reflectances(object, m, &hit);
         met.push(Met {
             s: hit.t,
-            ambient: a * weight,
-            emission: m.emission * weight,
+            ambient: a.tint(weight),
+            emission: m.emission.tint(weight),
         });
-        weight *= m.transmission;
-        if weight == 0.0 {
+        let cos = hgeom::lorentz::dot(line.tangent_at(hit.t), hit.normal);
+        weight = weight.tint(sheet_filter(m, cos)) * m.transmission;
+        if weight.is_black() {
             break;
         }
         t_min = hit.t + T_MIN;

@@ -446,13 +446,17 @@ impl PreparedScene {
             });
         }
         let (surfaces, accel) = hierarchy(&objects);
-        // Only solids absorb: an object drawn in several materials (a
-        // honeycomb) is made of sheets with no inside.
+        // Solids absorb along their inside; an object drawn in several
+        // materials (a honeycomb) is made of sheets with no inside, which
+        // absorb per crossing (`absorption.rs`).
         let absorbing = objects
             .iter()
             .enumerate()
-            .filter(|(_, o)| {
-                o.parts.is_none() && !scene.materials[o.material].absorption.is_black()
+            .filter(|(_, o)| match &o.parts {
+                None => !scene.materials[o.material].absorption.is_black(),
+                Some(parts) => std::iter::once(o.material)
+                    .chain(parts.ids().map(|m| m.index()))
+                    .any(|m| !scene.materials[m].absorption.is_black()),
             })
             .map(|(k, _)| k)
             .collect();

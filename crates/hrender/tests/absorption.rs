@@ -98,3 +98,43 @@ fn shadow_rays_through_tinted_glass_are_filtered() {
         );
     }
 }
+
+/// Tinted honeycomb faces are sheets: each crossing at normal incidence
+/// keeps `exp(-σ)`, and layers multiply. Along the axis of `{4,3,5}`
+/// through face centres (perpendicular to every face it crosses), a
+/// `depth = 1` honeycomb puts two faces in the way: `exp(-2σ)` of the
+/// white background comes through, in both integrators.
+#[test]
+fn tinted_faces_filter_per_crossing() {
+    let sigma: [f64; 3] = [0.1, 0.5, 1.5];
+    for integrator in ["whitted", "path"] {
+        let source = format!(
+            "Globals {{ resolution = (33, 33); from = (0, 0, 0); to = (0, 0, 0.3); \
+             background = (1, 1, 1); integrator = {integrator}; recursion_depth = 8; \
+             ambient = (0, 0, 0); }}\n\
+             BRDFs {{ tint: ambient = (0, 0, 0), diffuse = (0, 0, 0), specular = (0, 0, 0), \
+             trans = 1, absorption = ({}, {}, {}); }}\n\
+             Objects {{ Honeycomb {{4,3,5}}, #tint, faces = #tint, depth = 1; }}\n",
+            sigma[0], sigma[1], sigma[2]
+        );
+        let out = hscene_lang::compile(&source);
+        let scene = out.scene.unwrap_or_else(|| panic!("{:?}", out.diagnostics));
+        // Not one pixel: a pixel of 60° would stop the walk (its pixel
+        // horizon) before the second face.
+        let options = RenderOptions {
+            samples: Some(1),
+            ..RenderOptions::default()
+        };
+        let got = hrender::render(&scene, &options, &|_| {})
+            .unwrap()
+            .image
+            .get(16, 16);
+        for (g, s) in got.iter().zip(sigma) {
+            let want = (-2.0 * s).exp();
+            assert!(
+                (f64::from(*g) - want).abs() < 1e-5,
+                "{integrator}: {got:?}, want exp(-2 {s}) = {want}"
+            );
+        }
+    }
+}

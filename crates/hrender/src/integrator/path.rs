@@ -26,7 +26,7 @@ use hgeom::{HSphere, Ray};
 use hscene_ir::Rgb;
 
 use super::Integrator;
-use crate::absorption::absorbed;
+use crate::absorption::{absorbed, sheet_filter};
 use crate::bsdf::{Bsdf, clear_transmission};
 use crate::light_sampling::SphereCone;
 use crate::material::reflectances;
@@ -403,7 +403,8 @@ impl Integrator for PathTracer<'_> {
             let entering = lorentz::dot(d, hit.normal) < 0.0;
             // The path segment just traced ran inside this object when it
             // leaves by this hit: absorbing glass filters it.
-            if !entering && !m.absorption.is_black() {
+            let sheet = object.parts.is_some();
+            if !sheet && !entering && !m.absorption.is_black() {
                 beta = beta.tint(absorbed(m, hit.t));
             }
             let n = if entering { hit.shading } else { -hit.shading };
@@ -429,6 +430,10 @@ impl Integrator for PathTracer<'_> {
                 break;
             };
             beta = beta.tint(scatter.weight);
+            // A tinted sheet (a honeycomb's face) filters what crosses it.
+            if sheet && scatter.passed_through {
+                beta = beta.tint(sheet_filter(m, lorentz::dot(d, hit.normal)));
+            }
             if !scatter.passed_through {
                 last = scatter.pdf.map(|pdf| (p, index, pdf));
             }

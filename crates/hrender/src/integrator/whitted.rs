@@ -12,7 +12,7 @@ use hgeom::glam::DVec4;
 use hgeom::lorentz::{self, Separation};
 use hgeom::ray::{reflect, refract};
 
-use crate::absorption::absorbed;
+use crate::absorption::{absorbed, sheet_filter};
 use hscene_ir::{Material, Rgb};
 
 use super::Integrator;
@@ -136,6 +136,9 @@ impl<'s> Whitted<'s> {
             return self.scene.background;
         }
         let entering = lorentz::dot(d, hit.normal) < 0.0;
+        // An object drawn in several materials (a honeycomb) is sheets,
+        // with no inside: its absorption acts per crossing.
+        let sheet = object.parts.is_some();
         // The normal on the side the ray came from, for shading.
         let n = if entering { hit.normal } else { -hit.normal };
         // A smoothed mesh's interpolated normal lights the surface; it is
@@ -218,12 +221,17 @@ impl<'s> Whitted<'s> {
                     dir: renormalize(p, dir),
                 };
                 let w = weight * m.transmission;
-                color += self.trace(&next, depth + 1, w, budget, stream, stats) * m.transmission;
+                let mut through = self.trace(&next, depth + 1, w, budget, stream, stats);
+                // A tinted sheet (a honeycomb's face) filters what passes.
+                if sheet {
+                    through = through.tint(sheet_filter(m, lorentz::dot(d, hit.normal)));
+                }
+                color += through * m.transmission;
             }
         }
         // A ray leaving an absorbing object travelled `hit.t` inside it:
         // what it brings back is what is left after that much glass.
-        if !entering && !m.absorption.is_black() {
+        if !sheet && !entering && !m.absorption.is_black() {
             color = color.tint(absorbed(m, hit.t));
         }
         match &self.scene.fog {
