@@ -1623,3 +1623,51 @@ fn translate_by_distance_moves_by_that_distance() {
         );
     }
 }
+
+// ----- points by direction and distance --------------------------------------
+
+/// `(x, y, z), distance = d` in `Points` is the point `d` from the origin
+/// along `(x, y, z)` (any length): its ball radius is `tanh(d/2)`.
+#[test]
+fn points_by_direction_and_distance() {
+    let src = format!(
+        "Points {{ a: (0, 2, 0), distance = 0.5; b = (1, 1, 1), distance = 3; \
+         (0, 0, -0.1), distance = 0; }}\n{MATTE}\nObjects {{ Sphere %a, 0.1, #1; }}"
+    );
+    let c = compile_checked(&src);
+    assert!(!c.has_errors(), "{:?}", c.diagnostics);
+    let scene = c.scene.expect("compiles");
+    assert_close(
+        interior(&scene, 1),
+        DVec3::new(0.0, 0.25f64.tanh(), 0.0),
+        1e-15,
+        "a",
+    );
+    let b = interior(&scene, 2);
+    assert_close(b, DVec3::ONE.normalize() * 1.5f64.tanh(), 1e-15, "b");
+    let at = Point::from_coords(b).expect("inside");
+    assert!((at.distance(Point::ORIGIN) - 3.0).abs() < 1e-13);
+    assert_close(interior(&scene, 3), DVec3::ZERO, 0.0, "distance 0");
+}
+
+/// The idiom for resting an object on a plane (docs/language.md): a floor
+/// through `(0, -1, 0), distance = h` orthogonal to the y axis, and a ball
+/// of radius `r` centred at `(0, -1, 0), distance = h - r`, touch: the
+/// centre is exactly `r` from the plane.
+#[test]
+fn a_ball_placed_by_distance_rests_on_the_floor() {
+    let (h, r) = (0.9, 0.25);
+    let src = format!(
+        "Points {{ foot: (0, -1, 0), distance = {h}; centre: (0, -1, 0), distance = {}; }}\n{MATTE}\n\
+         Objects {{ Sphere %centre, {r}, #1; }}",
+        h - r
+    );
+    let c = compile_checked(&src);
+    assert!(!c.has_errors(), "{:?}", c.diagnostics);
+    let scene = c.scene.expect("compiles");
+    let foot = Point::from_coords(interior(&scene, 1)).expect("inside");
+    let centre = Point::from_coords(interior(&scene, 2)).expect("inside");
+    // The floor is orthogonal to the y axis at `foot`, and the centre is on
+    // that axis: its distance to the floor is its distance to the foot.
+    assert!((centre.distance(foot) - r).abs() < 1e-14);
+}

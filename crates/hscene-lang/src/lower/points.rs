@@ -1,6 +1,7 @@
 //! The `Points` section, and points written as literals anywhere:
 //! `(x, y, z)` is an h-point inside the ball or an ideal point on the
-//! absolute.
+//! absolute. In `Points`, `(x, y, z), distance = d` is the point at
+//! hyperbolic distance `d` from the origin in the direction `(x, y, z)`.
 
 use hgeom::glam::DVec3;
 use hgeom::{IdealPoint, Point, Vertex};
@@ -16,6 +17,10 @@ const NEAR_ABSOLUTE_GAP: f64 = 1e-10;
 /// How far from the unit sphere a typed point may be and still count as ideal.
 const IDEAL_TOLERANCE: f64 = 1e-12;
 
+/// The largest `distance = d` of a point by direction and distance: as for
+/// `Translate(L, d)`, beyond 36 f64 holds no ball point.
+const MAX_POINT_DISTANCE: f64 = 36.0;
+
 /// A declared point: its name as written (also when another point took the
 /// name first) and its position, `None` if it was refused.
 pub(super) struct DeclaredPoint {
@@ -30,7 +35,15 @@ impl Lowerer<'_> {
             while let Some(b) = broken.next_if(|b| b.span.start < st.span.start) {
                 self.broken_point(b);
             }
-            let (name, value) = match (st.label.as_ref(), st.clauses.as_slice()) {
+            // `..., distance = d` after the coordinates: by direction and
+            // distance.
+            let (clauses, distance) = match st.clauses.as_slice() {
+                [first, Clause::Assign { key, value, .. }] if key.text == "distance" => {
+                    (std::slice::from_ref(first), Some(value))
+                }
+                all => (all, None),
+            };
+            let (name, value) = match (st.label.as_ref(), clauses) {
                 (label, [Clause::Value(v)]) => (label.cloned(), v),
                 (None, [Clause::Assign { key, value, .. }]) => (Some(key.clone()), value),
                 _ => {
@@ -38,7 +51,7 @@ impl Lowerer<'_> {
                         Diagnostic::new(
                             Code::WrongType,
                             st.span,
-                            "a point is written `(x, y, z);` or `name = (x, y, z);`",
+                            "a point is written `(x, y, z);` or `name = (x, y, z);`, or by direction and distance `(x, y, z), distance = d;`",
                         )
                         .with_label("not a point declaration"),
                     );
@@ -51,9 +64,12 @@ impl Lowerer<'_> {
                     continue;
                 }
             };
-            let position = self
-                .point_literal(value)
-                .and_then(|(v, span)| self.classify_point(v, span));
+            let position = match distance {
+                None => self
+                    .point_literal(value)
+                    .and_then(|(v, span)| self.classify_point(v, span)),
+                Some(d) => self.point_by_distance(value, d),
+            };
             let point = DeclaredPoint {
                 name: name.as_ref().map(|n| n.text.clone()),
                 position,
@@ -77,6 +93,52 @@ impl Lowerer<'_> {
         let index = self.points.push(point, b.span, true);
         if let Some(n) = &name {
             self.points.bind(n, index);
+        }
+    }
+
+    /// `(x, y, z), distance = d`: the point at hyperbolic distance `d` from
+    /// the origin in the direction `(x, y, z)` (any length but zero).
+    fn point_by_distance(&mut self, direction: &Value, distance: &Value) -> Option<Vertex> {
+        let (dir, span) = self.point_literal(direction)?;
+        let d = self.number(distance)?;
+        if !(dir.length() > 0.0 && dir.is_finite()) {
+            self.report(
+                Diagnostic::new(
+                    Code::InvalidValue,
+                    span,
+                    "a point by direction and distance needs a direction: these coordinates are all 0",
+                )
+                .with_help("`(0, 1, 0), distance = 2` is the point 2 from the origin along +y"),
+            );
+            return None;
+        }
+        if !(0.0..=MAX_POINT_DISTANCE).contains(&d) {
+            self.report(
+                Diagnostic::new(
+                    Code::InvalidValue,
+                    distance.span(),
+                    format!(
+                        "a point's distance from the origin must be from 0 to {MAX_POINT_DISTANCE}, got {}",
+                        hgeom::Compact(d)
+                    ),
+                )
+                .with_help("the distance is hyperbolic; beyond 36 no ball point can be told from the absolute in f64"),
+            );
+            return None;
+        }
+        match Point::at_distance_from_origin(dir, d) {
+            Ok(p) => Some(Vertex::Interior(p)),
+            Err(e) => {
+                self.report(Diagnostic::new(
+                    Code::InvalidValue,
+                    span,
+                    format!(
+                        "no point at distance {} in this direction: {e}",
+                        hgeom::Compact(d)
+                    ),
+                ));
+                None
+            }
         }
     }
 
