@@ -39,16 +39,24 @@ pub struct PartMaterials {
     /// `faces = #F`: every face in `#F`.
     pub faces: Option<MaterialId>,
     /// `colors = (#A, #B, ...)`: cell class `k` is drawn in
-    /// `palette[k % len]` — its faces, or, when `faces = #F` is given too,
-    /// its edges and vertices. Empty without `colors`.
+    /// `palette[k % len]` — its faces, or, when `faces = #F` or
+    /// `face_colors` is given too, its edges and vertices. Empty without
+    /// `colors`.
     pub palette: Vec<MaterialId>,
+    /// `face_colors = (#A, #B, ...)`: the faces of cell class `k` are drawn
+    /// in `face_palette[k % len]`, whatever else is given. Empty without it.
+    pub face_palette: Vec<MaterialId>,
 }
 
 impl PartMaterials {
     /// Every material its parts may be drawn in besides the object's own:
     /// the faces' and the palette's.
     pub fn ids(&self) -> impl Iterator<Item = MaterialId> + '_ {
-        self.faces.iter().chain(&self.palette).copied()
+        self.faces
+            .iter()
+            .chain(&self.palette)
+            .chain(&self.face_palette)
+            .copied()
     }
 
     /// The index (into the scene's materials) of the material of the part
@@ -61,10 +69,14 @@ impl PartMaterials {
             // A u32 class always fits in usize on the targets we build for.
             n => self.palette.get(class as usize % n).map(|m| m.index()),
         };
+        let face_coloured = match self.face_palette.len() {
+            0 => None,
+            n => self.face_palette.get(class as usize % n).map(|m| m.index()),
+        };
         let faces = self.faces.map(MaterialId::index);
         match kind {
-            HoneycombPart::Face => faces.or(coloured).unwrap_or(own),
-            HoneycombPart::Edge | HoneycombPart::Vertex => match faces {
+            HoneycombPart::Face => face_coloured.or(faces).or(coloured).unwrap_or(own),
+            HoneycombPart::Edge | HoneycombPart::Vertex => match faces.or(face_coloured) {
                 Some(_) => coloured.unwrap_or(own),
                 None => own,
             },
@@ -88,11 +100,13 @@ mod tests {
         let both = PartMaterials {
             faces: Some(id(2)),
             palette: vec![id(0), id(1)],
+            face_palette: vec![id(3)],
         };
-        assert_eq!(both.ids().collect::<Vec<_>>(), [id(2), id(0), id(1)]);
+        assert_eq!(both.ids().collect::<Vec<_>>(), [id(2), id(0), id(1), id(3)]);
         let bare = PartMaterials {
             faces: None,
             palette: Vec::new(),
+            face_palette: Vec::new(),
         };
         assert_eq!(bare.ids().count(), 0);
     }

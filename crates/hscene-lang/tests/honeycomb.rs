@@ -157,8 +157,9 @@ fn the_formatter_keeps_the_symbol_as_mathematicians_write_it() {
     assert_eq!(out, "Objects {\n    Honeycomb {6,3,3}, #1, depth = 1;\n}\n");
 }
 
-/// Every hit says what it met; faces take `faces = #F` or the palette by
-/// class, edges and vertices `#M` or, with `faces` too, the palette.
+/// Every hit says what it met; faces take `face_colors`, `faces = #F` or
+/// the palette by class, edges and vertices `#M` or, with `faces` or
+/// `face_colors` too, the palette (classes count round both palettes).
 #[test]
 fn each_part_is_drawn_in_its_material() {
     use hgeom::{HoneycombPart, Ray, decode_honeycomb_part};
@@ -173,6 +174,8 @@ fn each_part_is_drawn_in_its_material() {
         "Honeycomb {5,3,4}, #edge, edges = 0.05, vertices = 0.15, colors = (#a, #b);",
         "Honeycomb {5,3,4}, #edge, edges = 0.05, vertices = 0.15, faces = #glass, colors = (#a, #b);",
         "Honeycomb {5,3,4}, #edge, edges = 0.05, vertices = 0.15, faces = #glass;",
+        "Honeycomb {5,3,4}, #edge, edges = 0.05, vertices = 0.15, colors = (#a, #b), \
+         face_colors = (#glass, #edge, #a);",
     ];
     for (case, objects) in cases.iter().enumerate() {
         let s = scene(objects);
@@ -187,19 +190,26 @@ fn each_part_is_drawn_in_its_material() {
             };
             let (kind, class) = decode_honeycomb_part(hit.part);
             let coloured = if class % 2 == 0 { a } else { b };
+            let face_coloured = [glass, edge, a][class as usize % 3];
             let got = h.materials.material(hit.part, own);
             let want = match (case, kind) {
                 (0, HoneycombPart::Face) => coloured,
                 (0, _) => edge,
                 (1, HoneycombPart::Face) => glass,
                 (1, _) => coloured,
-                (_, HoneycombPart::Face) => glass,
-                (_, _) => edge,
+                (2, HoneycombPart::Face) => glass,
+                (2, _) => edge,
+                (_, HoneycombPart::Face) => face_coloured,
+                (_, _) => coloured,
             };
             assert_eq!(got, want, "case {case}: {kind:?} of class {class}");
             seen[kind as usize] = true;
         }
         assert!(seen.iter().all(|s| *s), "case {case}: parts met {seen:?}");
+        if case == 3 {
+            // Classes count round six: 2 and 3 colours together.
+            assert_eq!(h.surface.style().cell_classes, 6);
+        }
     }
 }
 

@@ -312,6 +312,11 @@ impl WalkDomain {
         })
     }
 
+    /// A uniform honeycomb's seed parts.
+    pub(super) fn seed(&self) -> Option<&SeedParts> {
+        self.seed.as_ref()
+    }
+
     /// True for a uniform honeycomb's domain (with seed parts).
     pub(super) fn is_seeded(&self) -> bool {
         self.seed.is_some()

@@ -32,6 +32,14 @@ impl DomainPart {
             DomainPart::Face(_) | DomainPart::Piece(_) => HoneycombPart::Face,
         }
     }
+
+    /// True for a uniform honeycomb's own parts (`uniform.rs`).
+    pub(super) fn is_seeded(self) -> bool {
+        matches!(
+            self,
+            DomainPart::HalfEdge(_) | DomainPart::Cap | DomainPart::Piece(_)
+        )
+    }
 }
 
 /// The ray in one domain: its start and direction in the base frame

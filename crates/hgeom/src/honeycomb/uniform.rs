@@ -160,6 +160,8 @@ struct HalfEdge {
     n2: DVec4,
     u: Option<DVec4>,
     walls: u32,
+    /// The ringed node whose mirror the edge crosses: its colour class.
+    node: usize,
 }
 
 /// One face piece: the normal `p` of its plane, the normals `bounds` of
@@ -172,6 +174,13 @@ struct FacePiece {
     p: DVec4,
     bounds: Vec<DVec4>,
     wall: Option<usize>,
+    /// The kind of cell on each side, where `<X, p>` is positive and where
+    /// it is negative: the simplex vertices `v_k`, `v_l` on the line `L`
+    /// the face is orthogonal to are the cells' centres, one on each side;
+    /// where the plane passes through one of them (a square of the
+    /// rectified `{4,3,5}` is centred on the cube's face centre `v2`), no
+    /// cell is centred there, and the other kind is on both sides.
+    sides: [usize; 2],
 }
 
 /// The parts of a uniform honeycomb inside the characteristic simplex
@@ -364,6 +373,29 @@ impl SeedParts {
         }
     }
 
+    /// The colour class of a part met by a ray that is at `o` in the
+    /// chamber (before the hit): a face takes the kind of cell on the ray's
+    /// side, the index `k` of the simplex vertex `v_k` that is its centre
+    /// (0: the cells around a vertex of `{p,q,r}`, 3: those of its own
+    /// cells); an edge the ringed node whose mirror it crosses; the seed's
+    /// ball 0.
+    pub(super) fn kind_class(&self, part: DomainPart, o: DVec4) -> u32 {
+        let class = match part {
+            DomainPart::HalfEdge(i) => self.half_edges[i].node,
+            DomainPart::Piece(i) => {
+                let piece = &self.pieces[i];
+                if lorentz::dot(o, piece.p) > 0.0 {
+                    piece.sides[0]
+                } else {
+                    piece.sides[1]
+                }
+            }
+            _ => 0,
+        };
+        // A node or vertex index, 0 to 3.
+        class as u32
+    }
+
     /// The outward normal of one of these parts at `x` (tangent there, not
     /// unit); a face's is its plane's normal.
     pub(super) fn local_normal(&self, part: DomainPart, x: DVec4) -> DVec4 {
@@ -418,6 +450,7 @@ fn half_edge(s: DVec4, ideal: bool, n: &[DVec4; 4], i: usize) -> Option<HalfEdge
         n2,
         u,
         walls: walls_through(s, n) & walls_through(f, n),
+        node: i,
     })
 }
 
@@ -466,13 +499,32 @@ fn face_pieces(s: DVec4, n: &[DVec4; 4], v: &[DVec4; 4], rings: Rings) -> Option
         // The plane is a wall's when its normal is that wall's, up to sign
         // (|<p,n>| = 1 alone also holds for planes meeting at the absolute).
         let wall = (0..4).find(|&w| (p - n[w]).length().min((p + n[w]).length()) < 1e-9);
+        let p = wall.map_or(p, |w| n[w]);
         pieces.push(FacePiece {
-            p: wall.map_or(p, |w| n[w]),
+            p,
             bounds,
             wall,
+            sides: sides_of(p, v, k, l),
         });
     }
     Some(pieces)
+}
+
+/// The kinds of cell on the positive and negative sides of the face plane
+/// `p` orthogonal to the line through `v_k` and `v_l` (see `FacePiece`).
+fn sides_of(p: DVec4, v: &[DVec4; 4], k: usize, l: usize) -> [usize; 2] {
+    // The vertices are unit timelike or null with time 1: comparable.
+    const ON_PLANE: f64 = 1e-9;
+    let (dk, dl) = (lorentz::dot(v[k], p), lorentz::dot(v[l], p));
+    if dk.abs() < ON_PLANE {
+        [l, l]
+    } else if dl.abs() < ON_PLANE {
+        [k, k]
+    } else if dk > 0.0 {
+        [k, l]
+    } else {
+        [l, k]
+    }
 }
 
 #[cfg(test)]
@@ -679,6 +731,48 @@ mod tests {
     /// omnitruncation of `{4,3,5}` and others, paracompact ones among them,
     /// with faces and vertex balls, and with edges alone (their caps about
     /// the seed then drawn, and culled by the mirrors through it).
+    /// The rectified `{4,3,5}` has cuboctahedra about the cube centres
+    /// (`v3`) and icosahedra about the cubes' vertices (`v0`): a face met
+    /// from inside one takes that cell's kind, 3 or 0; edges take their
+    /// ringed node, 1.
+    #[test]
+    fn parts_are_classed_by_kind() {
+        let symbol = Schlafli::new(4, 3, 5).unwrap();
+        let style = HoneycombStyle {
+            edges: Some(0.02),
+            faces: true,
+            vertices: None,
+            ..HoneycombStyle::default()
+        };
+        let h = RegularHoneycomb::uniform(symbol, Rings::new(&[1]).unwrap(), style).unwrap();
+        let v = CoxeterSimplex::new(symbol).vertices();
+        let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+        for (centre, kind) in [(v[3], 3), (v[0], 0)] {
+            let mut faces = 0;
+            for _ in 0..200 {
+                let w = rng.direction().extend(rng.unit());
+                let d = w + lorentz::dot(w, centre) * centre;
+                let d = d / lorentz::norm(d);
+                let ray = Ray {
+                    origin: centre,
+                    dir: d,
+                };
+                let hit = h
+                    .intersect(&ray, 0.0, f64::INFINITY)
+                    .expect("inside a cell");
+                let (part, class) = decode_honeycomb_part(hit.part);
+                match part {
+                    crate::honeycomb::HoneycombPart::Face => {
+                        faces += 1;
+                        assert_eq!(class, kind, "a face seen from a cell of kind {kind}");
+                    }
+                    _ => assert_eq!(class, 1, "an edge"),
+                }
+            }
+            assert!(faces > 100, "{faces} faces met from kind {kind}");
+        }
+    }
+
     #[test]
     fn uniform_walks_meet_the_nearest_explicit_part() {
         let with_faces = HoneycombStyle {

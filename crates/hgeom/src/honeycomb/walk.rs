@@ -761,10 +761,12 @@ impl RegularHoneycomb {
         if len > 0.0 && len.is_finite() {
             normal /= len;
         }
-        let class = if shadow {
-            0
-        } else {
-            self.class(self.domain.cells_of(part), m)
+        let class = match self.domain.seed() {
+            _ if shadow => 0,
+            // A uniform honeycomb colours by kind (`uniform.rs`): the ray's
+            // side of a face, in the chamber, says which kind of cell.
+            Some(seed) if part.is_seeded() => seed.kind_class(part, c.o),
+            _ => self.class(self.domain.cells_of(part), m),
         };
         Hit {
             t,

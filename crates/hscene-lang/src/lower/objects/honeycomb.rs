@@ -145,6 +145,7 @@ impl Lowerer<'_> {
             vertices,
             depth,
             colors,
+            face_colors,
             rings,
         } = opts.take_honeycomb();
         let (rings, rings_span) = match rings {
@@ -157,31 +158,27 @@ impl Lowerer<'_> {
             format!("{rings}{symbol}")
         };
         if let Some(span) = rings_span.filter(|_| !rings.is_regular())
-            && (depth.is_some() || colors.is_some())
+            && (depth.is_some()
+                || (rings == Rings::DUAL && (colors.is_some() || face_colors.is_some())))
         {
             // Node 3 alone is the dual, a regular honeycomb of its own.
             let (p, q, r) = (symbol.p(), symbol.q(), symbol.r());
-            let (why, help) = if rings == Rings::DUAL {
+            let (message, help) = if rings == Rings::DUAL {
                 (
                     format!(
-                        "{name} is the regular {{{r},{q},{p}}}, with a vertex where a cell of {symbol} is centred"
+                        "`depth` and `colors` count cells of regular honeycombs; {name} is the regular {{{r},{q},{p}}}, with a vertex where a cell of {symbol} is centred"
                     ),
                     format!("write `Honeycomb {{{r},{q},{p}}}` to count and colour its cells"),
                 )
             } else {
                 (
-                    format!("{name} has cells of several kinds"),
-                    "remove `depth` and `colors`, or ring node 0 alone (`rings = (0)`, the regular honeycomb)".to_string(),
+                    format!(
+                        "`depth` is for regular honeycombs; {name} has cells of several kinds, so it has no layers to count"
+                    ),
+                    "remove `depth` (`colors` colours its parts by kind), or ring node 0 alone (`rings = (0)`, the regular honeycomb)".to_string(),
                 )
             };
-            self.report(
-                Diagnostic::new(
-                    Code::ConflictingOptions,
-                    span,
-                    format!("`depth` and `colors` are for regular honeycombs; {why}"),
-                )
-                .with_help(help),
-            );
+            self.report(Diagnostic::new(Code::ConflictingOptions, span, message).with_help(help));
             return None;
         }
         if let Some((d, span)) = depth.filter(|(d, _)| *d > 0 && symbol.has_ideal_cells()) {
@@ -198,8 +195,12 @@ impl Lowerer<'_> {
             return None;
         }
         let palette = colors.unwrap_or_default();
-        let nothing_asked =
-            edges.is_none() && faces.is_none() && vertices.is_none() && palette.is_empty();
+        let face_palette = face_colors.unwrap_or_default();
+        let nothing_asked = edges.is_none()
+            && faces.is_none()
+            && vertices.is_none()
+            && palette.is_empty()
+            && face_palette.is_empty();
         let ideal_vertices = rings.seed_is_ideal(&CoxeterSimplex::new(symbol));
         if let Some((_, span)) = vertices.filter(|_| ideal_vertices) {
             self.report(
@@ -219,16 +220,26 @@ impl Lowerer<'_> {
             } else {
                 edges.map(|(w, _)| w)
             },
-            faces: faces.is_some() || !palette.is_empty(),
+            faces: faces.is_some() || !palette.is_empty() || !face_palette.is_empty(),
             vertices: vertices.map(|(r, _)| r),
             depth: depth.map(|(d, _)| d),
-            // At most MAX_CELL_COLORS, so it fits.
-            cell_classes: palette.len().max(1) as u32,
+            // Both palettes count round the same classes: as many as the
+            // least common multiple of their lengths (at most 16 · 15). A
+            // uniform honeycomb's classes are its parts' kinds (0 to 3).
+            cell_classes: if rings.is_regular() {
+                lcm(palette.len().max(1), face_palette.len().max(1)) as u32
+            } else {
+                1
+            },
         };
         match RegularHoneycomb::uniform(symbol, rings, style) {
             Ok(surface) => Some(vec![Shape::Honeycomb(Box::new(Honeycomb {
                 surface,
-                materials: PartMaterials { faces, palette },
+                materials: PartMaterials {
+                    faces,
+                    palette,
+                    face_palette,
+                },
             }))]),
             Err(e) => {
                 let span = match &e {
@@ -255,4 +266,12 @@ impl Lowerer<'_> {
             }
         }
     }
+}
+/// The least common multiple of two positive counts.
+fn lcm(a: usize, b: usize) -> usize {
+    let (mut x, mut y) = (a, b);
+    while y != 0 {
+        (x, y) = (y, x % y);
+    }
+    a / x * b
 }

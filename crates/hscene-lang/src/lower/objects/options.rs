@@ -35,6 +35,8 @@ pub(super) enum ObjectOption {
     Depth,
     /// `colors = (#A, #B, ...)`: a honeycomb's cells coloured by class.
     Colors,
+    /// `face_colors = (#A, #B, ...)`: its faces coloured by class apart.
+    FaceColors,
     /// `rings = (0, 1)`: the ringed nodes of a honeycomb's Coxeter diagram
     /// (a uniform honeycomb by Wythoff's construction).
     Rings,
@@ -60,6 +62,7 @@ const OPTIONS: &[(&str, ObjectOption)] = &[
     ("vertices", ObjectOption::Vertices),
     ("depth", ObjectOption::Depth),
     ("colors", ObjectOption::Colors),
+    ("face_colors", ObjectOption::FaceColors),
     ("rings", ObjectOption::Rings),
 ];
 
@@ -89,6 +92,7 @@ pub(super) struct ObjectOptions {
     vertices: Option<(f64, Span)>,
     depth: Option<(u32, Span)>,
     colors: Option<Vec<MaterialId>>,
+    face_colors: Option<Vec<MaterialId>>,
     rings: Option<(Rings, Span)>,
 }
 
@@ -101,6 +105,7 @@ pub(super) struct HoneycombOptions {
     pub(super) vertices: Option<(f64, Span)>,
     pub(super) depth: Option<(u32, Span)>,
     pub(super) colors: Option<Vec<MaterialId>>,
+    pub(super) face_colors: Option<Vec<MaterialId>>,
     /// The ringed nodes and where they were given.
     pub(super) rings: Option<(Rings, Span)>,
 }
@@ -124,6 +129,7 @@ impl ObjectOptions {
             vertices: self.vertices.take(),
             depth: self.depth.take(),
             colors: self.colors.take(),
+            face_colors: self.face_colors.take(),
             rings: self.rings.take(),
         }
     }
@@ -187,8 +193,12 @@ impl Lowerer<'_> {
                         None => ok = false,
                     }
                 }
-                ObjectOption::Colors => match self.cell_colors(value) {
+                ObjectOption::Colors => match self.cell_colors(value, "colors") {
                     Some(c) => out.colors = Some(c),
+                    None => ok = false,
+                },
+                ObjectOption::FaceColors => match self.cell_colors(value, "face_colors") {
+                    Some(c) => out.face_colors = Some(c),
                     None => ok = false,
                 },
                 ObjectOption::Rings => match self.ring_nodes(value) {
@@ -234,8 +244,9 @@ impl Lowerer<'_> {
         ok.then_some(out)
     }
 
-    /// `colors = (#A, #B, ...)`: one to [`MAX_CELL_COLORS`] materials.
-    fn cell_colors(&mut self, value: &Value) -> Option<Vec<MaterialId>> {
+    /// `colors = (#A, #B, ...)` (or `face_colors`, named by `key`): one to
+    /// [`MAX_CELL_COLORS`] materials.
+    fn cell_colors(&mut self, value: &Value, key: &str) -> Option<Vec<MaterialId>> {
         let Value::Tuple { items, span } = value else {
             self.report(
                 Diagnostic::new(
@@ -246,7 +257,7 @@ impl Lowerer<'_> {
                         value.describe()
                     ),
                 )
-                .with_help("write `colors = (#red, #green, #blue)`: cell class k is drawn in the k-th material, counting round"),
+                .with_help(format!("write `{key} = (#red, #green, #blue)`: cell class k is drawn in the k-th material, counting round")),
             );
             return None;
         };
@@ -256,7 +267,7 @@ impl Lowerer<'_> {
                     Code::InvalidValue,
                     *span,
                     format!(
-                        "`colors` lists {} materials; at most {MAX_CELL_COLORS} are used",
+                        "`{key}` lists {} materials; at most {MAX_CELL_COLORS} are used",
                         items.len()
                     ),
                 )
