@@ -254,6 +254,7 @@ mod tests {
             specular: hscene_ir::Rgb::BLACK,
             radius: 0.3,
             samples: 16,
+            near_sinh2: 0.0,
         };
         let p = Point::ORIGIN.to_hyperboloid();
         let mut stream = SampleStream::new(7);
