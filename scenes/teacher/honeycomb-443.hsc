@@ -1,5 +1,6 @@
 // {4,4,3} for the classroom: faces of tinted glass and edges coloured by cell
-// (face_colors and colors count round the same shells about the base cell),
+// (face_colors and colors count round the same shells about the base cell;
+// the base cell's own faces are clear, so that the eye sees out),
 // a light carried by the camera, and the far cells averaged beyond the
 // walk's horizon (docs/honeycombs.md).
 //   hscene render scenes/teacher/honeycomb-443.hsc -o honeycomb-443.png
@@ -9,7 +10,7 @@ Globals {
     to = (-0.25, 0.12, 0.3);
     fov = 100;
     background = (0, 0, 0);
-    ambient = (0.25, 0.25, 0.25);
+    ambient = (0.4, 0.4, 0.4);
     recursion_depth = 10;
 }
 
@@ -20,12 +21,16 @@ BRDFs {
           specular = (1, 1, 1), shininess = 40;
     rose: ambient = (0.35, 0.12, 0.2), diffuse = (0.85, 0.3, 0.5),
           specular = (1, 1, 1), shininess = 40;
-    amber_glass: specular = (0.5, 0.5, 0.5), shininess = 80, trans = 0.9,
-                 absorption = (0.05, 0.25, 0.9);
-    teal_glass: specular = (0.5, 0.5, 0.5), shininess = 80, trans = 0.9,
-                absorption = (0.9, 0.1, 0.2);
-    rose_glass: specular = (0.5, 0.5, 0.5), shininess = 80, trans = 0.9,
-                absorption = (0.1, 0.8, 0.4);
+    clear: specular = (0.4, 0.4, 0.4), shininess = 80, trans = 0.95;
+    amber_glass: ambient = (0.12, 0.08, 0.02), diffuse = (0.3, 0.2, 0.05),
+                 specular = (0.5, 0.5, 0.5), shininess = 80, trans = 0.8,
+                 absorption = (0.02, 0.15, 0.6);
+    teal_glass: ambient = (0.02, 0.1, 0.1), diffuse = (0.05, 0.25, 0.25),
+                specular = (0.5, 0.5, 0.5), shininess = 80, trans = 0.8,
+                absorption = (0.6, 0.05, 0.1);
+    rose_glass: ambient = (0.12, 0.03, 0.07), diffuse = (0.3, 0.08, 0.18),
+                specular = (0.5, 0.5, 0.5), shininess = 80, trans = 0.8,
+                absorption = (0.05, 0.6, 0.3);
 }
 
 Lights {
@@ -35,5 +40,5 @@ Lights {
 Objects {
     Honeycomb {4,4,3}, #gold, edges = 0.025, vertices = 0.045,
         colors = (#gold, #teal, #rose),
-        face_colors = (#amber_glass, #teal_glass, #rose_glass);
+        face_colors = (#clear, #teal_glass, #rose_glass, #amber_glass);
 }
