@@ -101,6 +101,15 @@ pub enum GeomError {
     /// defined for them.
     #[error("depth and cell colours are for regular honeycombs (node 0 ringed alone)")]
     UniformWithCells,
+    /// Colouring by parity asked of a honeycomb with an odd number `r` of
+    /// cells round each edge: that cycle of neighbours cannot alternate.
+    #[error(
+        "{{p,q,{r}}} has {r} cells round each edge, an odd cycle: its cells have no two-colouring"
+    )]
+    OddEdgeCycle {
+        /// The number of cells round an edge.
+        r: u32,
+    },
     /// A mesh triangle refers to a vertex that does not exist.
     #[error("triangle {triangle} refers to vertex {index}, but the mesh has {vertices} vertices")]
     MeshIndexOutOfRange {

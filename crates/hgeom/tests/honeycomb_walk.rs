@@ -588,3 +588,62 @@ fn a_view_horizon_stops_rays_from_the_eye_by_their_pixel() {
     assert!(far.clone().with_view_horizon(DVec3::ZERO, a).is_err());
     assert!(far.with_view_horizon(DVec3::Z, -1.0).is_err());
 }
+
+/// `CellColouring::Parity` two-colours the cells of `{5,3,4}` and
+/// `{4,3,6}` (four and six round each edge): along any ray the faces it
+/// crosses alternate 0, 1, 0, ... from the base cell, and a ray started
+/// in a far cell sees the class that cell has from the base cell's count,
+/// whatever way it takes. `{4,3,5}` (five round each edge) is refused.
+#[test]
+fn parity_two_colours_the_cells_where_r_is_even() {
+    use hgeom::CellColouring;
+    let mut rng = SplitMix64::new(42);
+    for (p, q, r) in [(5, 3, 4), (4, 3, 6)] {
+        let h = honeycomb(p, q, r, faces_only())
+            .with_colouring(CellColouring::Parity)
+            .unwrap();
+        for _ in 0..40 {
+            let ray = Ray::from_origin_unchecked(rng.direction());
+            let mut from = 0.0;
+            let mut classes = Vec::new();
+            for _ in 0..4 {
+                let Some(hit) = h.intersect(&ray, from, 6.0) else {
+                    break;
+                };
+                classes.push(decode_honeycomb_part(hit.part).1);
+                from = hit.t + 1e-9;
+            }
+            assert!(classes.len() >= 2, "{{{p},{q},{r}}}: {classes:?}");
+            for (k, c) in classes.iter().enumerate() {
+                assert_eq!(*c, (k % 2) as u32, "{{{p},{q},{r}}}: {classes:?}");
+            }
+            // From a point just past the second face (in a cell two
+            // crossings out: class 0), any direction sees class 0 first.
+            let second = {
+                let first = h.intersect(&ray, 0.0, 6.0).unwrap();
+                h.intersect(&ray, first.t + 1e-9, 6.0).unwrap()
+            };
+            let inside = ray.at(second.t + 1e-6);
+            for _ in 0..5 {
+                let w = rng.direction().extend(0.0);
+                let d = w + lorentz::dot(w, inside) * inside;
+                let d = d / lorentz::norm(d);
+                let from_far = Ray {
+                    origin: inside,
+                    dir: d,
+                };
+                let hit = h.intersect(&from_far, 1e-7, 6.0).unwrap();
+                assert_eq!(
+                    decode_honeycomb_part(hit.part).1,
+                    0,
+                    "{{{p},{q},{r}}}: a cell two crossings out"
+                );
+            }
+        }
+    }
+    assert!(
+        honeycomb(4, 3, 5, faces_only())
+            .with_colouring(CellColouring::Parity)
+            .is_err()
+    );
+}

@@ -22,12 +22,13 @@ pub struct Honeycomb {
 }
 
 /// Two honeycombs are equal when they have the same symbol, style,
-/// placement and materials: the walk's tables follow from these.
+/// placement, colouring and materials: the walk's tables follow from these.
 impl PartialEq for Honeycomb {
     fn eq(&self, other: &Honeycomb) -> bool {
         self.surface.symbol() == other.surface.symbol()
             && self.surface.style() == other.surface.style()
             && self.surface.placement() == other.surface.placement()
+            && self.surface.colouring() == other.surface.colouring()
             && self.materials == other.materials
     }
 }

@@ -45,7 +45,7 @@ pub use cube435::{
 pub use parts::{HoneycombPiece, HoneycombPieces};
 pub use schlafli::{Schlafli, SchlafliError};
 pub use simplex::CoxeterSimplex;
-pub use style::{HoneycombPart, HoneycombStyle, decode_honeycomb_part};
+pub use style::{CellColouring, HoneycombPart, HoneycombStyle, decode_honeycomb_part};
 pub use uniform::Rings;
 pub use walk::{DEFAULT_HORIZON, MAX_WALK_STEPS, RegularHoneycomb};
 pub use walk_record::{WalkStats, WalkStep};

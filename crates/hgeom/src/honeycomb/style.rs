@@ -55,6 +55,23 @@ impl HoneycombStyle {
     }
 }
 
+/// How a regular honeycomb's parts get their class
+/// ([`RegularHoneycomb::with_colouring`](super::RegularHoneycomb::with_colouring)).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum CellColouring {
+    /// By rank: the layer (with a depth) or shell of the part's cell
+    /// nearest the base cell, modulo the number of classes.
+    #[default]
+    Rank,
+    /// By parity: the two cosets of the index-2 subgroup of the symmetry
+    /// group that counts face crossings modulo 2, a proper two-colouring
+    /// of the cells (neighbours across a face differ). It exists exactly
+    /// when `r` is even (an odd number of cells round an edge is an odd
+    /// cycle). A part is drawn in the class of the cell the ray sees it
+    /// from, 0 or 1.
+    Parity,
+}
+
 /// The kind of honeycomb part a ray met.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum HoneycombPart {

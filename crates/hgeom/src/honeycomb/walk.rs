@@ -169,6 +169,8 @@ pub struct RegularHoneycomb {
     /// `cosh` of the radius of a ball about the base point holding every
     /// part of a depth-limited honeycomb with finite cells and vertices.
     cosh_reach: Option<f64>,
+    /// How parts get their class.
+    colouring: super::CellColouring,
     /// Report a ray that reaches the horizon as a hit on
     /// [`HoneycombPart::Horizon`](super::HoneycombPart::Horizon)
     /// ([`RegularHoneycomb::with_horizon_hits`]).
@@ -244,6 +246,7 @@ impl RegularHoneycomb {
             cosh_horizon: DEFAULT_HORIZON.cosh(),
             view: None,
             cosh_reach,
+            colouring: super::CellColouring::Rank,
             horizon_hits: false,
         }
     }
@@ -304,6 +307,33 @@ impl RegularHoneycomb {
     pub fn with_horizon_hits(mut self, on: bool) -> RegularHoneycomb {
         self.horizon_hits = on;
         self
+    }
+
+    /// The same honeycomb with its parts classed by `colouring` (by rank
+    /// unless asked).
+    ///
+    /// Errors: [`GeomError::OddEdgeCycle`] for
+    /// [`CellColouring::Parity`](super::CellColouring::Parity) when `r` is
+    /// odd; [`GeomError::UniformWithCells`] for it on a uniform honeycomb.
+    pub fn with_colouring(
+        mut self,
+        colouring: super::CellColouring,
+    ) -> Result<RegularHoneycomb, GeomError> {
+        if colouring == super::CellColouring::Parity {
+            if !self.rings.is_regular() {
+                return Err(GeomError::UniformWithCells);
+            }
+            if self.symbol.r() % 2 != 0 {
+                return Err(GeomError::OddEdgeCycle { r: self.symbol.r() });
+            }
+        }
+        self.colouring = colouring;
+        Ok(self)
+    }
+
+    /// How its parts get their class.
+    pub fn colouring(&self) -> super::CellColouring {
+        self.colouring
     }
 
     /// True if rays the horizon stops report a hit there
@@ -588,6 +618,7 @@ impl RegularHoneycomb {
         // its normal and class), so the walls crossed are kept and folded
         // into `m` in batches or at the hit, and a miss or a shadow ray of
         // an unlimited honeycomb never builds it.
+        let mut fold_faces: u32 = 0;
         let mut pending = Pending::new(if self.cells.is_some() {
             Crossings::Eager
         } else if any {
@@ -608,6 +639,11 @@ impl RegularHoneycomb {
                 return None;
             }
             stats.folds += 1;
+            // Folding across a face moves the ray's start to the
+            // neighbouring cell: one more crossing for the parity.
+            if domain.is_face(i) {
+                fold_faces += 1;
+            }
             o = reflect(o, walls[i]);
             d = reflect(d, walls[i]);
             pending.cross(i, &mut m, walls);
@@ -654,7 +690,11 @@ impl RegularHoneycomb {
                 if !any && self.style.cell_classes > 1 {
                     pending.fold_into(&mut m, walls);
                 }
-                return Some(self.hit(ray, t, &here, v, (&m, &pending), part, any));
+                // Faces crossed from the base cell to this one: the folds
+                // and the exits so far (`stats.cells` counts 1 + exits).
+                let crossed = u64::from(fold_faces) + u64::from(stats.cells.saturating_sub(1));
+                let cell = (&m, &pending, crossed);
+                return Some(self.hit(ray, t, &here, v, cell, part, any));
             }
             let Some(exit) = exit.filter(|_| v_exit < span) else {
                 // Out of the window: past t_max or the depth's reach (a
@@ -743,7 +783,7 @@ impl RegularHoneycomb {
         t: f64,
         c: &DomainRay,
         v: f64,
-        (m, pending): (&DMat4, &Pending),
+        (m, pending, crossed): (&DMat4, &Pending, u64),
         part: DomainPart,
         shadow: bool,
     ) -> Hit {
@@ -766,6 +806,7 @@ impl RegularHoneycomb {
             // A uniform honeycomb colours by kind (`uniform.rs`): the ray's
             // side of a face, in the chamber, says which kind of cell.
             Some(seed) if part.is_seeded() => seed.kind_class(part, c.o),
+            _ if self.colouring == super::CellColouring::Parity => (crossed % 2) as u32,
             _ => self.class(self.domain.cells_of(part), m),
         };
         Hit {

@@ -4,7 +4,9 @@
 //! the 15 belongs to), the ringed nodes of a uniform honeycomb, the style
 //! and the materials of the parts, and hgeom's walking surface.
 
-use hgeom::{CoxeterSimplex, GeomError, HoneycombStyle, RegularHoneycomb, Rings, Schlafli};
+use hgeom::{
+    CellColouring, CoxeterSimplex, GeomError, HoneycombStyle, RegularHoneycomb, Rings, Schlafli,
+};
 
 use super::options::{HoneycombOptions, ObjectOptions};
 use crate::diagnostic::{Code, Diagnostic, Span};
@@ -146,6 +148,7 @@ impl Lowerer<'_> {
             depth,
             colors,
             face_colors,
+            color_by,
             rings,
         } = opts.take_honeycomb();
         let (rings, rings_span) = match rings {
@@ -232,7 +235,10 @@ impl Lowerer<'_> {
                 1
             },
         };
-        match RegularHoneycomb::uniform(symbol, rings, style) {
+        let colouring = color_by.map_or(CellColouring::Rank, |(c, _)| c);
+        let built = RegularHoneycomb::uniform(symbol, rings, style)
+            .and_then(|h| h.with_colouring(colouring));
+        match built {
             Ok(surface) => Some(vec![Shape::Honeycomb(Box::new(Honeycomb {
                 surface,
                 materials: PartMaterials {
@@ -244,6 +250,9 @@ impl Lowerer<'_> {
             Err(e) => {
                 let span = match &e {
                     GeomError::TooManyCells { .. } => depth.map(|(_, s)| s),
+                    GeomError::OddEdgeCycle { .. } | GeomError::UniformWithCells => {
+                        color_by.map(|(_, s)| s)
+                    }
                     _ => edges.or(vertices).map(|(_, s)| s),
                 };
                 let span = span.unwrap_or(statement);
@@ -254,6 +263,18 @@ impl Lowerer<'_> {
                         format!("{name} at this depth has more than {limit} cells"),
                     )
                     .with_help("use a smaller depth, or none: without `depth` the whole honeycomb is drawn by walking, at no cost per cell"),
+                    GeomError::OddEdgeCycle { r } => Diagnostic::new(
+                        Code::ConflictingOptions,
+                        span,
+                        format!("{name} has {r} cells round each edge, an odd cycle of neighbours, so its cells cannot be coloured by parity"),
+                    )
+                    .with_help("`color_by = parity` needs an even r (e.g. {5,3,4}, {4,3,6}, {3,4,4}); use `color_by = rank` here"),
+                    GeomError::UniformWithCells => Diagnostic::new(
+                        Code::ConflictingOptions,
+                        span,
+                        format!("{name} has cells of several kinds: `color_by = parity` is for regular honeycombs"),
+                    )
+                    .with_help("remove `color_by`: `colors` colours a uniform honeycomb's parts by kind"),
                     other => Diagnostic::new(
                         Code::ImpossibleFigure,
                         span,

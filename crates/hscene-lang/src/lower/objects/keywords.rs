@@ -91,6 +91,7 @@ const HONEYCOMB: &[ObjectOption] = &[
     ObjectOption::Depth,
     ObjectOption::Colors,
     ObjectOption::FaceColors,
+    ObjectOption::ColorBy,
     ObjectOption::Rings,
 ];
 
@@ -372,7 +373,7 @@ pub(super) const KEYWORDS: &[KeywordRow] = &[
         Signature {
             params: &[Param::Symbol],
             takes: "a Schläfli symbol and a material",
-            usage: "write `Honeycomb {4,3,5}, #M;` (one of the 15 regular honeycombs of hyperbolic space; options edges = w, faces = #F, vertices = r, depth = N, colors = (#A, #B), face_colors = (#C, #D), rings = (0, 1) for a uniform honeycomb, at = %P)",
+            usage: "write `Honeycomb {4,3,5}, #M;` (one of the 15 regular honeycombs of hyperbolic space; options edges = w, faces = #F, vertices = r, depth = N, colors = (#A, #B), face_colors = (#C, #D), color_by = parity, rings = (0, 1) for a uniform honeycomb, at = %P)",
             options: HONEYCOMB,
         },
     ),

@@ -4,7 +4,7 @@
 //! crease angle) and a honeycomb's `faces`, `vertices`, `depth`, `colors`
 //! and `rings`; and placing the built shapes by them.
 
-use hgeom::{GeomError, Isometry, Point, Polyhedron, Rings, Rod, Vertex};
+use hgeom::{CellColouring, GeomError, Isometry, Point, Polyhedron, Rings, Rod, Vertex};
 
 use super::built::Built;
 use crate::diagnostic::{Code, Diagnostic, Span};
@@ -37,6 +37,8 @@ pub(super) enum ObjectOption {
     Colors,
     /// `face_colors = (#A, #B, ...)`: its faces coloured by class apart.
     FaceColors,
+    /// `color_by = rank | parity`: the rule that classes the cells.
+    ColorBy,
     /// `rings = (0, 1)`: the ringed nodes of a honeycomb's Coxeter diagram
     /// (a uniform honeycomb by Wythoff's construction).
     Rings,
@@ -63,6 +65,7 @@ const OPTIONS: &[(&str, ObjectOption)] = &[
     ("depth", ObjectOption::Depth),
     ("colors", ObjectOption::Colors),
     ("face_colors", ObjectOption::FaceColors),
+    ("color_by", ObjectOption::ColorBy),
     ("rings", ObjectOption::Rings),
 ];
 
@@ -93,6 +96,7 @@ pub(super) struct ObjectOptions {
     depth: Option<(u32, Span)>,
     colors: Option<Vec<MaterialId>>,
     face_colors: Option<Vec<MaterialId>>,
+    color_by: Option<(CellColouring, Span)>,
     rings: Option<(Rings, Span)>,
 }
 
@@ -106,6 +110,8 @@ pub(super) struct HoneycombOptions {
     pub(super) depth: Option<(u32, Span)>,
     pub(super) colors: Option<Vec<MaterialId>>,
     pub(super) face_colors: Option<Vec<MaterialId>>,
+    /// The colouring rule and where it was given.
+    pub(super) color_by: Option<(CellColouring, Span)>,
     /// The ringed nodes and where they were given.
     pub(super) rings: Option<(Rings, Span)>,
 }
@@ -130,6 +136,7 @@ impl ObjectOptions {
             depth: self.depth.take(),
             colors: self.colors.take(),
             face_colors: self.face_colors.take(),
+            color_by: self.color_by.take(),
             rings: self.rings.take(),
         }
     }
@@ -201,6 +208,10 @@ impl Lowerer<'_> {
                     Some(c) => out.face_colors = Some(c),
                     None => ok = false,
                 },
+                ObjectOption::ColorBy => match self.colouring_rule(value) {
+                    Some(c) => out.color_by = Some((c, key.span.to(value.span()))),
+                    None => ok = false,
+                },
                 ObjectOption::Rings => match self.ring_nodes(value) {
                     Some(r) => out.rings = Some((r, key.span.to(value.span()))),
                     None => ok = false,
@@ -242,6 +253,26 @@ impl Lowerer<'_> {
             );
         }
         ok.then_some(out)
+    }
+
+    /// `color_by = rank | parity`.
+    fn colouring_rule(&mut self, value: &Value) -> Option<CellColouring> {
+        const HELP: &str = "write `color_by = rank` (layers about the base cell, the default) or `color_by = parity` (a two-colouring: neighbours across a face differ)";
+        match value {
+            Value::Ident(word) if word.text == "rank" => Some(CellColouring::Rank),
+            Value::Ident(word) if word.text == "parity" => Some(CellColouring::Parity),
+            other => {
+                self.report(
+                    Diagnostic::new(
+                        Code::InvalidValue,
+                        other.span(),
+                        format!("expected `rank` or `parity`, found {}", other.describe()),
+                    )
+                    .with_help(HELP),
+                );
+                None
+            }
+        }
     }
 
     /// `colors = (#A, #B, ...)` (or `face_colors`, named by `key`): one to
