@@ -251,6 +251,8 @@ struct RenderJob<'a> {
     scale: f64,
     integrator: Box<dyn Integrator + 'a>,
     background: Rgb,
+    /// Depth of field: each sample starts on the lens (`hscene_ir::Lens`).
+    lens: Option<hscene_ir::Lens>,
 }
 
 impl RenderJob<'_> {
@@ -265,9 +267,13 @@ impl RenderJob<'_> {
         match sample {
             Sample::Ray(dir) => {
                 let before = stats.failures;
-                let c = self
-                    .integrator
-                    .radiance(&Ray::from_origin_unchecked(dir), stream, stats);
+                // With a lens, the sample's first two numbers pick its lens
+                // point; the integrator draws the rest.
+                let ray = match &self.lens {
+                    Some(lens) => lens.ray(dir, stream.next_unit(), stream.next_unit()),
+                    None => Ray::from_origin_unchecked(dir),
+                };
+                let c = self.integrator.radiance(&ray, stream, stats);
                 (c, stats.failures > before)
             }
             Sample::Outside => (self.background, false),
@@ -507,6 +513,7 @@ fn render_in_pool(
             _ => u32::MAX,
         },
         scale: options.exposure.render_scale(),
+        lens: scene.settings.lens,
         integrator: integrator::build(
             options.integrator.unwrap_or(scene.settings.integrator),
             &prepared,

@@ -7,6 +7,7 @@ use crate::animation::Animation;
 use crate::camera::{Camera, Net, Resolution, Window};
 use crate::color::Rgb;
 use crate::integrator::IntegratorKind;
+use crate::lens::Lens;
 use crate::material::Material;
 use crate::object::Object;
 use crate::sky::Sky;
@@ -44,6 +45,9 @@ pub struct Settings {
     /// Light from the sphere at infinity for rays that meet nothing
     /// (`sky = (zenith, horizon)`); `None`: the background colour.
     pub sky: Option<Sky>,
+    /// Depth of field (`aperture = A; focus = D;`): a thin lens at the eye;
+    /// `None`: a pinhole.
+    pub lens: Option<Lens>,
 }
 
 /// Fog: the radiance carried along a ray segment of hyperbolic length `s`

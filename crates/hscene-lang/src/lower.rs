@@ -14,6 +14,7 @@
 mod budget;
 mod camera;
 mod globals;
+mod lens_globals;
 mod light_strength;
 mod lights;
 mod lints;
@@ -81,6 +82,7 @@ struct Lowerer<'d> {
     settings: Settings,
     camera_parts: camera::CameraParts,
     view: view_globals::ViewParts,
+    lens: lens_globals::LensParts,
     /// A point reference failed (undefined, or something else where a point
     /// was needed, or text was skipped): the point meant may look unused.
     point_ref_failed: bool,
@@ -143,6 +145,7 @@ pub(crate) fn lower(
         settings: globals::default_settings(),
         camera_parts: camera::CameraParts::default(),
         view: view_globals::ViewParts::default(),
+        lens: lens_globals::LensParts::default(),
         point_ref_failed: file.incomplete,
         primitives: 0,
         primitive_cap_reported: false,
@@ -178,6 +181,7 @@ pub(crate) fn lower(
     let mut camera = lw.camera();
     lw.apply_moves(&mut camera);
     lw.settle_view(camera.as_ref());
+    lw.settle_lens(camera.as_ref());
     if let Some(camera) = &camera {
         lw.lint_scene(camera);
         lw.lint_outside_view(camera);

@@ -288,6 +288,7 @@ fn appendix_a_compiles_with_one_warning() {
             fog: None,
             integrator: hscene_lang::ir::IntegratorKind::Whitted,
             sky: None,
+            lens: None,
         }
     );
     assert_eq!(scene.camera.eye, Point::ORIGIN);
@@ -561,6 +562,7 @@ fn empty_file_gets_the_documented_defaults() {
                 fog: None,
                 integrator: hscene_lang::ir::IntegratorKind::Whitted,
                 sky: None,
+                lens: None,
             }
         );
         assert_eq!(

@@ -110,6 +110,7 @@ pub fn settings(net: Net, size: u32, window: f64) -> Settings {
         fog: None,
         integrator: Default::default(),
         sky: None,
+        lens: None,
     }
 }
 

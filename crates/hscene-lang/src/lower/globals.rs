@@ -3,6 +3,7 @@
 
 use super::Lowerer;
 use super::camera::CameraKey;
+use super::lens_globals::LensKey;
 use super::table::{self, Row, SeenKeys, unknown_word, words};
 use super::view_globals::ViewKey;
 use crate::diagnostic::{Code, Diagnostic};
@@ -29,6 +30,7 @@ enum Global {
     Integrator,
     Camera(CameraKey),
     View(ViewKey),
+    Lens(LensKey),
 }
 
 /// One key of `Globals`.
@@ -77,6 +79,8 @@ const KEYS: &[GlobalKey] = &[
     key("integrator", Global::Integrator),
     key("fog_color", Global::View(ViewKey::FogColor)),
     key("fog_distance", Global::View(ViewKey::FogDistance)),
+    key("aperture", Global::Lens(LensKey::Aperture)),
+    key("focus", Global::Lens(LensKey::Focus)),
 ];
 
 /// Every global key, aliases included, in the order of [`KEYS`].
@@ -117,6 +121,7 @@ pub(super) fn default_settings() -> Settings {
         fog: None,
         integrator: IntegratorKind::Whitted,
         sky: None,
+        lens: None,
     }
 }
 
@@ -205,6 +210,7 @@ impl Lowerer<'_> {
             }
             Global::Integrator => self.integrator(value),
             Global::View(key) => self.view_global(key, value),
+            Global::Lens(key) => self.lens_global(key, value),
             Global::Camera(key) => self.camera_global(key, value),
         }
     }
