@@ -180,6 +180,13 @@ pub struct RenderArgs {
     #[arg(long, value_name = "0-9", default_value_t = hrender::PngLevel::DEFAULT.get(),
           value_parser = clap::value_parser!(u8).range(0..=i64::from(hrender::PngLevel::MAX)))]
     pub png_level: u8,
+    /// Pixel layers written beside the colour, as extra channels of an
+    /// `.exr` output: a comma-separated list of `depth` (channel Z, the
+    /// hyperbolic distance along the pixel's central ray), `normal` (N.X,
+    /// N.Y, N.Z, in the scene's ball coordinates), `id` (the object's
+    /// number) and `cell` (cell.rank, cell.class of a honeycomb's cell).
+    #[arg(long, value_name = "LAYERS", value_parser = parse_aovs)]
+    pub aov: Option<AovList>,
     /// Worker threads, 1 to 1024 (default: all cores).
     #[arg(long, value_parser = clap::value_parser!(u16).range(1..=hrender::MAX_THREADS as i64))]
     pub threads: Option<u16>,
@@ -402,4 +409,13 @@ pub struct FmtArgs {
     /// The file name to show in messages for a scene read from stdin (`-`).
     #[arg(long, value_name = "PATH")]
     pub stdin_filename: Option<PathBuf>,
+}
+
+/// The pixel layers of `--aov`, each once, in the order given.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct AovList(pub Vec<hrender::Aov>);
+
+/// `--aov depth,normal`.
+fn parse_aovs(list: &str) -> Result<AovList, String> {
+    hrender::Aov::parse_list(list).map(AovList)
 }

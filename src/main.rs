@@ -215,6 +215,17 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
         return ExitCode::from(EXIT_USAGE_OR_IO);
     }
     let video = hrender::VideoFormat::from_path(&args.output);
+    if args.aov.is_some()
+        && !matches!(
+            hrender::ImageFormat::from_path(&args.output),
+            Ok(hrender::ImageFormat::Exr)
+        )
+    {
+        eprintln!(
+            "error: --aov writes its layers as channels of an OpenEXR file: give an .exr output"
+        );
+        return ExitCode::from(EXIT_USAGE_OR_IO);
+    }
     if video.is_some() {
         if args.frame.is_some() {
             eprintln!(
@@ -546,8 +557,15 @@ fn render_frame(
             };
             // The CLI parser bounds the level to 0..=9.
             let png = hrender::PngLevel::new(args.png_level).unwrap_or_default();
-            if let Err(e) = hrender::write_image_with(&rendered.image, output, depth, display, png)
-            {
+            let written = match &args.aov {
+                Some(aovs) => {
+                    hrender::render_aovs(scene, &options, args.crop, &aovs.0).and_then(|layers| {
+                        hrender::write_exr_with_layers(&rendered.image, &layers, output)
+                    })
+                }
+                None => hrender::write_image_with(&rendered.image, output, depth, display, png),
+            };
+            if let Err(e) = written {
                 eprintln!("error: {e}");
                 return ExitCode::from(EXIT_USAGE_OR_IO);
             }

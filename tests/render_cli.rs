@@ -143,3 +143,58 @@ fn failed_renders_leave_existing_output_untouched() {
     names.sort();
     assert_eq!(names, ["broken.hsc", "keep.png"]);
 }
+
+/// `--aov` writes the pixel layers as channels of the `.exr` output, and
+/// refuses any other output before rendering.
+#[test]
+fn aov_layers_go_into_an_exr_and_nowhere_else() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("s.hsc");
+    fs::write(
+        &scene,
+        "Globals { resolution = (9, 9); to = (0, 0, 0.3); }\n\
+         BRDFs { diffuse = (1, 1, 1); }\n\
+         Lights { (0, 0, 0), (1, 1, 1), (1, 1, 1); }\n\
+         Objects { Sphere (0, 0, 0.5), 0.3, #1; }\n",
+    )
+    .unwrap();
+    let exr = dir.path().join("out.exr");
+    hscene()
+        .arg("render")
+        .arg(&scene)
+        .args(["--aov", "depth,normal,id,cell", "-o"])
+        .arg(&exr)
+        .assert()
+        .success();
+    let bytes = fs::read(&exr).unwrap();
+    for channel in ["N.X", "N.Y", "N.Z", "Z", "id", "cell.rank", "cell.class"] {
+        let needle = format!("{channel}\0");
+        assert!(
+            bytes.windows(needle.len()).any(|w| w == needle.as_bytes()),
+            "channel {channel} in the header"
+        );
+    }
+    let png = dir.path().join("out.png");
+    let refused = hscene()
+        .arg("render")
+        .arg(&scene)
+        .args(["--aov", "depth", "-o"])
+        .arg(&png)
+        .assert()
+        .failure();
+    let stderr = String::from_utf8_lossy(&refused.get_output().stderr).into_owned();
+    assert!(stderr.contains(".exr"), "{stderr}");
+    assert!(!png.exists());
+    let unknown = hscene()
+        .arg("render")
+        .arg(&scene)
+        .args(["--aov", "depht", "-o"])
+        .arg(&exr)
+        .assert()
+        .failure();
+    let stderr = String::from_utf8_lossy(&unknown.get_output().stderr).into_owned();
+    assert!(
+        stderr.contains("the layers are depth, normal, id, cell"),
+        "{stderr}"
+    );
+}

@@ -85,9 +85,9 @@ pub use fermi::{fermi_coordinates, from_fermi_coordinates};
 pub use honeycomb::{
     CUBE_435_DIHEDRAL, CellColouring, CoxeterSimplex, DEFAULT_HORIZON, HoneycombCell,
     HoneycombPart, HoneycombPiece, HoneycombPieces, HoneycombStyle, MAX_TESSELLATION_CELLS,
-    MAX_WALK_STEPS, RegularHoneycomb, Rings, SAME_CELL_DISTANCE, Schlafli, SchlafliError,
-    WalkStats, WalkStep, cube_435, cube_435_circumradius, decode_honeycomb_part, honeycomb_435,
-    tessellate, tessellation_placements,
+    MAX_WALK_STEPS, RANK_CLASSES, RegularHoneycomb, Rings, SAME_CELL_DISTANCE, Schlafli,
+    SchlafliError, WalkStats, WalkStep, cube_435, cube_435_circumradius, decode_honeycomb_part,
+    honeycomb_435, tessellate, tessellation_placements,
 };
 pub use horosphere::Horosphere;
 pub use isometry::Isometry;

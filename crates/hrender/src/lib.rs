@@ -17,10 +17,12 @@
 
 mod absorption;
 mod accel;
+mod aov;
 mod bsdf;
 mod display;
 mod error;
 mod exposure;
+mod exr_layers;
 mod fog;
 mod horizon_fill;
 mod icc;
@@ -44,17 +46,19 @@ mod video;
 
 use std::collections::HashMap;
 
-use hgeom::Ray;
+use hgeom::{Isometry, Ray};
 use hscene_ir::view::{CanonicalFrame, FovError};
 use hscene_ir::{Camera, Net, Resolution, Rgb, Scene, Window};
 use rayon::prelude::*;
 
+pub use aov::{Aov, AovLayers, render_aovs};
 pub use display::{DisplayTransform, Encoding, ToneMap, srgb_decode, srgb_encode};
 pub use error::RenderError;
 pub use exposure::{
     AUTO_KEY, DARK_LEVEL, Exposure, MAX_EXPOSURE, auto_exposure, bright_level, is_almost_black,
     is_black, luminance, suggested_exposure,
 };
+pub use exr_layers::write_exr_with_layers;
 pub use hscene_ir::IntegratorKind;
 pub use image::Image;
 pub use integrator::{Integrator, MAX_PATH_LENGTH, PathTracer, Whitted};
@@ -431,6 +435,47 @@ fn view_window(
     })
 }
 
+/// A picture's set-up: its net and window, size, and the scene prepared
+/// for it.
+struct Picture {
+    net: Net,
+    window: Window,
+    width: u32,
+    height: u32,
+    pixel_net: PixelNet,
+    prepared: PreparedScene,
+    /// From the camera's canonical frame back to the scene's.
+    camera_to_scene: Isometry,
+}
+
+/// The set-up of the picture of `scene` that `options` ask for.
+fn picture(scene: &Scene, options: &RenderOptions) -> Result<Picture, RenderError> {
+    let camera = canonical_frame(&scene.camera)?;
+    let net = options.net.unwrap_or(scene.settings.net);
+    let resolution = options.resolution.unwrap_or(scene.settings.resolution);
+    let (width, height) = (resolution.width(), resolution.height());
+    let window = view_window(scene, net, resolution, camera.view_distance)?;
+    let pixel_net = PixelNet::new(net, window, camera.view_distance);
+    let prepared = match pixel_footprint(&pixel_net, width, height) {
+        Some(footprint) => PreparedScene::for_picture(scene, &camera, &footprint)?,
+        None => PreparedScene::for_camera(scene, &camera)?,
+    };
+    let camera_to_scene = camera
+        .stages
+        .iter()
+        .fold(Isometry::IDENTITY, |acc, stage| stage.compose(&acc))
+        .inverse();
+    Ok(Picture {
+        net,
+        window,
+        width,
+        height,
+        pixel_net,
+        prepared,
+        camera_to_scene,
+    })
+}
+
 /// What a row's pixels add to the render's counters.
 #[derive(Clone, Copy, Debug, Default)]
 struct RowStats {
@@ -462,16 +507,15 @@ fn render_in_pool(
     region: Option<Region>,
     progress: &(dyn Fn(u32) + Sync),
 ) -> Result<Rendered, RenderError> {
-    let camera = canonical_frame(&scene.camera)?;
-    let net = options.net.unwrap_or(scene.settings.net);
-    let resolution = options.resolution.unwrap_or(scene.settings.resolution);
-    let (width, height) = (resolution.width(), resolution.height());
-    let window = view_window(scene, net, resolution, camera.view_distance)?;
-    let pixel_net = PixelNet::new(net, window, camera.view_distance);
-    let prepared = match pixel_footprint(&pixel_net, width, height) {
-        Some(footprint) => PreparedScene::for_picture(scene, &camera, &footprint)?,
-        None => PreparedScene::for_camera(scene, &camera)?,
-    };
+    let Picture {
+        net,
+        window,
+        width,
+        height,
+        pixel_net,
+        prepared,
+        ..
+    } = picture(scene, options)?;
     let region = region.unwrap_or(Region {
         x: 0,
         y: 0,

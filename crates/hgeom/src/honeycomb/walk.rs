@@ -116,6 +116,12 @@ use super::uniform::Rings;
 use super::view_horizon::ViewHorizon;
 use super::walk_record::{WalkStats, WalkStep};
 
+/// The cell classes of [`RegularHoneycomb::with_rank_classes`]: far more
+/// than any rank within reach (within distance 36 of the base cell the
+/// shells number under 36 / 0.69 ≈ 52, twice the least inradius being
+/// 0.69; a depth is at most 8), so a class is the rank itself.
+pub const RANK_CLASSES: u32 = 720_720;
+
 /// The default horizon: the walk stops at this distance from the origin of
 /// the frame (module docs).
 pub const DEFAULT_HORIZON: f64 = 12.0;
@@ -329,6 +335,19 @@ impl RegularHoneycomb {
         }
         self.colouring = colouring;
         Ok(self)
+    }
+
+    /// The same honeycomb with as many cell classes as there can be ranks
+    /// ([`RANK_CLASSES`]), so that a hit's class is its cell's rank itself
+    /// (the layer or shell about the base cell, `cells.rs`): for inspecting
+    /// a picture (which word length a pixel shows). The class modulo `k`
+    /// is what `k` classes would give. Unchanged for a uniform honeycomb
+    /// or one coloured by parity, whose classes are not ranks.
+    pub fn with_rank_classes(mut self) -> RegularHoneycomb {
+        if self.rings.is_regular() && self.colouring == super::CellColouring::Rank {
+            self.style.cell_classes = RANK_CLASSES;
+        }
+        self
     }
 
     /// How its parts get their class.

@@ -1,0 +1,223 @@
+//! Pixel layers (arbitrary output variables): what each pixel's primary
+//! ray meets, for inspecting a picture mathematically (`--aov
+//! depth,normal,id,cell`, written as extra OpenEXR channels).
+//!
+//! One ray per pixel, through the pixel's centre, from the eye (the pinhole
+//! ray also with a lens), whatever the integrator: the layers are facts
+//! about the scene along that ray, not estimates, so they are not filtered.
+//!
+//! - `depth` (channel `Z`): the hyperbolic distance from the eye to the
+//!   first surface, `inf` where the ray meets nothing.
+//! - `normal` (`N.X`, `N.Y`, `N.Z`): the shading normal there, turned to
+//!   face the eye, as a unit direction in the ball coordinates of the
+//!   scene (not the camera's frame); 0 where nothing is met.
+//! - `id` (`id`): the object's number, 1 for the first object of the file
+//!   in `Objects` order (as `check --emit ir` lists them), 0 for none.
+//! - `cell` (`cell.rank`, `cell.class`): for a regular honeycomb coloured
+//!   by rank, the rank of the cell the part belongs to (its layer from the
+//!   base cell with `depth`, else its shell; the part's least, as the
+//!   colours use) and its colour class (the rank modulo the number of
+//!   classes); coloured by parity, rank `NaN` and the parity; a uniform
+//!   honeycomb, rank `NaN` and the kind. `NaN` for everything else,
+//!   including a honeycomb's far average beyond its horizon.
+
+use hgeom::glam::DVec3;
+use hgeom::ray::ball_direction;
+use hgeom::{CellColouring, HoneycombPart, Ray, decode_honeycomb_part, lorentz};
+use hscene_ir::{Scene, Shape};
+
+use crate::error::RenderError;
+use crate::nets::Sample;
+use crate::scene::{Nearest, T_MIN};
+use crate::{Region, RenderOptions, picture};
+
+/// A pixel layer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Aov {
+    /// Hyperbolic distance along the primary ray.
+    Depth,
+    /// Shading normal in the scene's ball coordinates.
+    Normal,
+    /// The object's number.
+    Id,
+    /// A honeycomb cell's rank and colour class.
+    Cell,
+}
+
+impl Aov {
+    /// Every layer, by the names `--aov` takes.
+    pub const ALL: [(&'static str, Aov); 4] = [
+        ("depth", Aov::Depth),
+        ("normal", Aov::Normal),
+        ("id", Aov::Id),
+        ("cell", Aov::Cell),
+    ];
+
+    /// The layers of a comma-separated list (`depth,normal`), each once.
+    pub fn parse_list(list: &str) -> Result<Vec<Aov>, String> {
+        let mut out = Vec::new();
+        for word in list.split(',').map(str::trim) {
+            let Some((_, aov)) = Aov::ALL.iter().find(|(name, _)| *name == word) else {
+                let names: Vec<&str> = Aov::ALL.iter().map(|(n, _)| *n).collect();
+                return Err(format!(
+                    "unknown pixel layer `{word}`: the layers are {}",
+                    names.join(", ")
+                ));
+            };
+            if !out.contains(aov) {
+                out.push(*aov);
+            }
+        }
+        Ok(out)
+    }
+
+    /// The OpenEXR channels it writes.
+    pub fn channels(self) -> &'static [&'static str] {
+        match self {
+            Aov::Depth => &["Z"],
+            Aov::Normal => &["N.X", "N.Y", "N.Z"],
+            Aov::Id => &["id"],
+            Aov::Cell => &["cell.rank", "cell.class"],
+        }
+    }
+}
+
+/// The layers of a picture: named channels of `width × height` samples,
+/// row by row from the top.
+#[derive(Clone, Debug, PartialEq)]
+pub struct AovLayers {
+    /// Columns.
+    pub width: u32,
+    /// Rows.
+    pub height: u32,
+    /// Each channel's name and samples.
+    pub channels: Vec<(&'static str, Vec<f32>)>,
+}
+
+impl AovLayers {
+    /// The samples of channel `name`, if it was rendered.
+    pub fn channel(&self, name: &str) -> Option<&[f32]> {
+        self.channels
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, v)| v.as_slice())
+    }
+}
+
+/// The layers `which` of the picture `render_region` would make of `scene`
+/// with `options` and `region`.
+pub fn render_aovs(
+    scene: &Scene,
+    options: &RenderOptions,
+    region: Option<Region>,
+    which: &[Aov],
+) -> Result<AovLayers, RenderError> {
+    options.validate()?;
+    // Ranks, not classes, where a honeycomb's classes are ranks.
+    let ranked;
+    let scene = if which.contains(&Aov::Cell) {
+        let mut s = scene.clone();
+        for o in &mut s.objects {
+            if let Shape::Honeycomb(h) = &mut o.shape {
+                h.surface = h.surface.clone().with_rank_classes();
+            }
+        }
+        ranked = s;
+        &ranked
+    } else {
+        scene
+    };
+    let picture = picture(scene, options)?;
+    let region = region.unwrap_or(Region {
+        x: 0,
+        y: 0,
+        width: picture.width,
+        height: picture.height,
+    });
+    let to_scene = picture.camera_to_scene.to_lorentz();
+    let n = (region.width as usize) * (region.height as usize);
+    let names: Vec<&'static str> = which.iter().flat_map(|a| a.channels()).copied().collect();
+    let mut channels: Vec<(&'static str, Vec<f32>)> =
+        names.iter().map(|name| (*name, vec![0.0; n])).collect();
+    let (w, h) = (f64::from(picture.width), f64::from(picture.height));
+    for row in 0..region.height {
+        for col in 0..region.width {
+            let (i, j) = (region.x + col, region.y + row);
+            let sx = (f64::from(i) + 0.5) / w - 0.5;
+            let sy = 0.5 - (f64::from(j) + 0.5) / h;
+            let found = match picture.pixel_net.sample(sx, sy) {
+                Sample::Ray(dir) => {
+                    let ray = Ray::from_origin_unchecked(dir);
+                    match picture.prepared.nearest(&ray, T_MIN) {
+                        Nearest::Hit(hit, index) => Some((ray, hit, index)),
+                        _ => None,
+                    }
+                }
+                Sample::Outside => None,
+            };
+            let k = (row as usize) * (region.width as usize) + col as usize;
+            let mut put = |name: &str, v: f64| {
+                if let Some((_, c)) = channels.iter_mut().find(|(n, _)| *n == name) {
+                    c[k] = v as f32;
+                }
+            };
+            let Some((ray, hit, index)) = found else {
+                put("Z", f64::INFINITY);
+                put("cell.rank", f64::NAN);
+                put("cell.class", f64::NAN);
+                continue;
+            };
+            put("Z", hit.t);
+            let d = ray.tangent_at(hit.t);
+            let facing = if lorentz::dot(d, hit.shading) > 0.0 {
+                -hit.shading
+            } else {
+                hit.shading
+            };
+            let normal: DVec3 = ball_direction(to_scene * hit.point, to_scene * facing);
+            put("N.X", normal.x);
+            put("N.Y", normal.y);
+            put("N.Z", normal.z);
+            put("id", (index + 1) as f64);
+            let (rank, class) = cell_of(scene, index, hit.part);
+            put("cell.rank", rank);
+            put("cell.class", class);
+        }
+    }
+    Ok(AovLayers {
+        width: region.width,
+        height: region.height,
+        channels,
+    })
+}
+
+/// A honeycomb hit's rank and colour class (module docs), `NaN` for
+/// anything else.
+fn cell_of(scene: &Scene, index: usize, part: u32) -> (f64, f64) {
+    let Some(Shape::Honeycomb(h)) = scene.objects.get(index).map(|o| &o.shape) else {
+        return (f64::NAN, f64::NAN);
+    };
+    let (kind, class) = decode_honeycomb_part(part);
+    if kind == HoneycombPart::Horizon {
+        return (f64::NAN, f64::NAN);
+    }
+    let ranked = h.surface.rings().is_regular() && h.surface.colouring() == CellColouring::Rank;
+    if !ranked {
+        return (f64::NAN, f64::from(class));
+    }
+    // The palettes count round their lengths' least common multiple.
+    let k = lcm(
+        h.materials.palette.len().max(1),
+        h.materials.face_palette.len().max(1),
+    );
+    (f64::from(class), f64::from(class) % k as f64)
+}
+
+/// The least common multiple of two positive counts.
+fn lcm(a: usize, b: usize) -> usize {
+    let (mut x, mut y) = (a, b);
+    while y != 0 {
+        (x, y) = (y, x % y);
+    }
+    a / x * b
+}
