@@ -95,10 +95,13 @@ fn header(path: &Path, scene: &Scene) -> Value {
             "frames": s.frames,
             "fov": s.fov,
             "integrator": s.integrator.name(),
-            "sky": s.sky.map(|sky| match sky {
+            "sky": s.sky.as_ref().map(|sky| match sky {
                 hscene_ir::Sky::Gradient { zenith, horizon } => json!({
-                    "zenith": rgb(zenith),
-                    "horizon": rgb(horizon),
+                    "zenith": rgb(*zenith),
+                    "horizon": rgb(*horizon),
+                }),
+                hscene_ir::Sky::Image(image) => json!({
+                    "image": [image.width(), image.height()],
                 }),
             }),
             "fog": s.fog.map(|f| json!({
@@ -191,6 +194,11 @@ fn material(i: usize, m: &Material) -> Value {
             "size": t.scale,
             "diffuse": rgb(t.diffuse),
             "ambient": rgb(t.ambient),
+        })),
+        "texture": m.image.as_ref().map(|t| json!({
+            "file": t.path,
+            "size": [t.image.width(), t.image.height()],
+            "rotate": t.rotate,
         })),
     })
 }

@@ -27,6 +27,7 @@ mod fog;
 mod horizon_fill;
 mod icc;
 mod image;
+mod image_texture;
 mod integrator;
 mod light_sampling;
 mod material;

@@ -16,9 +16,13 @@ use crate::texture::texture_colours;
 /// pay for finding out where.
 #[inline]
 pub fn reflectances(object: &PreparedObject, m: &Material, hit: &Hit) -> (Rgb, Rgb) {
-    match &m.texture {
+    let own = match &m.texture {
         None => (m.ambient, m.diffuse),
         Some(t) => texture_colours(object, m, t, hit),
+    };
+    match (&m.image, &object.mapping) {
+        (Some(image), Some(mapping)) => mapping.colours(image, own, hit),
+        _ => own,
     }
 }
 

@@ -20,6 +20,7 @@ use smallvec::SmallVec;
 use crate::accel::{Accel, Leaf, Step};
 use crate::error::RenderError;
 use crate::horizon_fill::{average_appearance, bucket_of};
+use crate::image_texture::TextureMapping;
 
 /// An object ready for tracing.
 pub struct PreparedObject {
@@ -53,6 +54,10 @@ pub struct PreparedObject {
     /// appearance along the rest of the way to distance 12, by that rest
     /// (`horizon_fill.rs`). Empty for every other object.
     pub horizon: Vec<usize>,
+    /// Where its own material's image texture lands on it
+    /// (`image_texture.rs`); `None` without one, or for a shape with no
+    /// mapping.
+    pub mapping: Option<TextureMapping>,
 }
 
 /// Rays that leave a surface ignore hits closer than this (hyperbolic
@@ -370,6 +375,19 @@ impl PreparedScene {
                     ball,
                     faces,
                     horizon: Vec::new(),
+                    mapping: scene.materials[o.material.index()]
+                        .image
+                        .as_ref()
+                        .and_then(|_| {
+                            let to_local = stages
+                                .iter()
+                                .fold(o.placement, |f, iso| iso.compose(&f))
+                                .inverse();
+                            // Without a footprint (a picture of no two
+                            // neighbouring rays) the finest level is used.
+                            let angle = footprint.map_or(0.0, |f| f.smallest);
+                            TextureMapping::of(&o.shape, &o.placement, &to_local, angle)
+                        }),
                 })
             })
             .collect();
@@ -390,6 +408,7 @@ impl PreparedScene {
                 ball: None,
                 faces: Vec::new(),
                 horizon: Vec::new(),
+                mapping: None,
             };
             let beyond = average_appearance(&sampler, &materials, scene.settings.recursion_depth);
             o.horizon = (materials.len()..materials.len() + beyond.len()).collect();
@@ -471,7 +490,7 @@ impl PreparedScene {
             surfaces,
             accel,
             absorbing,
-            sky: scene.settings.sky.map(|sky| {
+            sky: scene.settings.sky.clone().map(|sky| {
                 let to_canonical = stages
                     .iter()
                     .fold(Isometry::IDENTITY, |acc, stage| stage.compose(&acc));

@@ -97,3 +97,37 @@ fn a_mirror_shows_the_sky_its_reflected_rays_reach() {
     );
     assert_colour(pixel(&scene), expected(DVec3::Y), "mirror");
 }
+
+/// `sky = "file"`: an equirectangular image, its top half red and bottom
+/// half blue: straight up is red, straight down blue, in both integrators.
+#[test]
+fn an_image_sky_by_the_ideal_endpoint() {
+    let dir = tempfile::tempdir().unwrap();
+    let img = image::RgbImage::from_fn(64, 32, |_, j| {
+        image::Rgb(if j < 16 { [255, 0, 0] } else { [0, 0, 255] })
+    });
+    img.save(dir.path().join("sky.png")).unwrap();
+    for integrator in ["whitted", "path"] {
+        for (to, up, red) in [
+            ("(0, 0.3, 0)", "up = (0, 0, 0.3);", true),
+            ("(0, -0.3, 0)", "up = (0, 0, 0.3);", false),
+        ] {
+            let source = format!(
+                "Globals {{ resolution = (1, 1); from = (0, 0, 0); to = {to}; {up} \
+                 sky = \"sky.png\"; integrator = {integrator}; }}\n"
+            );
+            let options = hscene_lang::Options {
+                base_dir: Some(dir.path().to_path_buf()),
+                ..hscene_lang::Options::default()
+            };
+            let out = hscene_lang::compile_with(&source, &options);
+            let scene = out.scene.unwrap_or_else(|| panic!("{:?}", out.diagnostics));
+            let px = pixel(&scene);
+            if red {
+                assert!(px[0] > 0.99 && px[2] < 0.01, "{integrator} up: {px:?}");
+            } else {
+                assert!(px[2] > 0.99 && px[0] < 0.01, "{integrator} down: {px:?}");
+            }
+        }
+    }
+}

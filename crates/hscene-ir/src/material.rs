@@ -25,6 +25,9 @@ pub struct Material {
     /// A pattern that replaces the diffuse and ambient reflectances in part
     /// of the surface; `None` for a uniform material.
     pub texture: Option<Texture>,
+    /// An image texture (`texture = "file.png"`): its texels replace the
+    /// ambient and diffuse reflectances where it is mapped.
+    pub image: Option<ImageTexture>,
     /// Radiance the surface emits, the same from both of its sides and in
     /// every direction (a Lambertian emitter): it makes the surface a light.
     pub emission: Rgb,
@@ -56,10 +59,26 @@ impl Default for Material {
             shininess: 1.0,
             refraction: 1.0,
             texture: None,
+            image: None,
             emission: Rgb::BLACK,
             absorption: Rgb::BLACK,
         }
     }
+}
+
+/// An image on a material (`texture = "file.png"`), mapped per surface
+/// (docs/rendering.md, "Image textures"): an h-sphere by latitude and
+/// longitude about its centre, an h-plane or polygon by the Poincaré-disc
+/// coordinates of its plane.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ImageTexture {
+    /// The file as written in the scene.
+    pub path: String,
+    /// Its texels, shared by every material that names the file.
+    pub image: std::sync::Arc<crate::texture_image::TextureImage>,
+    /// `texture_rotate`: a turn of the image about the mapping's centre
+    /// (a longitude offset on a sphere), in radians.
+    pub rotate: f64,
 }
 
 /// The pattern of a [`Texture`].

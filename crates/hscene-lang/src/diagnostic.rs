@@ -146,6 +146,8 @@ codes! {
     // Files.
     MeshFileUnreadable = "HSC0501", Error, "mesh file cannot be read";
     MeshFileInvalid = "HSC0502", Error, "invalid mesh file";
+    ImageFileUnreadable = "HSC0503", Error, "image file cannot be read";
+    ImageFileInvalid = "HSC0504", Error, "invalid image file";
     // Limits.
     TooManyPrimitives = "HSC0601", Error, "too many primitives";
     // Lints.
@@ -347,7 +349,7 @@ mod tests {
     #[test]
     fn code_table_is_consistent() {
         assert_eq!(Code::ALL.len(), CODES.len());
-        assert_eq!(Code::ALL.len(), 50);
+        assert_eq!(Code::ALL.len(), 52);
         let mut strings = HashSet::new();
         for &(code, s, sev, title) in CODES {
             assert_eq!(code.as_str(), s);

@@ -17,6 +17,7 @@
 
 pub mod diagnostic;
 pub mod format;
+pub mod image_file;
 mod lower;
 pub mod mesh_file;
 mod numbers;

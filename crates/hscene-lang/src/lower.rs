@@ -14,6 +14,7 @@
 mod budget;
 mod camera;
 mod globals;
+mod image_textures;
 mod lens_globals;
 mod light_strength;
 mod lights;
@@ -83,6 +84,8 @@ struct Lowerer<'d> {
     camera_parts: camera::CameraParts,
     view: view_globals::ViewParts,
     lens: lens_globals::LensParts,
+    /// The images read so far, by path: a file named twice is read once.
+    images: std::collections::HashMap<std::path::PathBuf, std::sync::Arc<hscene_ir::TextureImage>>,
     /// A point reference failed (undefined, or something else where a point
     /// was needed, or text was skipped): the point meant may look unused.
     point_ref_failed: bool,
@@ -146,6 +149,7 @@ pub(crate) fn lower(
         camera_parts: camera::CameraParts::default(),
         view: view_globals::ViewParts::default(),
         lens: lens_globals::LensParts::default(),
+        images: std::collections::HashMap::new(),
         point_ref_failed: file.incomplete,
         primitives: 0,
         primitive_cap_reported: false,

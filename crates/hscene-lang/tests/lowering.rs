@@ -630,6 +630,7 @@ fn material_fields_default_when_absent() {
             shininess: 1.0,
             refraction: 1.0,
             texture: None,
+            image: None,
             emission: Rgb::BLACK,
             absorption: Rgb::BLACK,
         }

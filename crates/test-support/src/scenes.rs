@@ -75,6 +75,7 @@ pub fn matte(r: f64, g: f64, b: f64) -> Material {
         shininess: 20.0,
         refraction: 1.0,
         texture: None,
+        image: None,
         emission: Rgb::BLACK,
         absorption: Rgb::BLACK,
     }

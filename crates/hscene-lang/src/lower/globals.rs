@@ -218,6 +218,12 @@ impl Lowerer<'_> {
     /// `sky = ((r, g, b), (r, g, b))`: the zenith's colour, then the
     /// horizon's.
     fn sky(&mut self, value: &Value) {
+        if let Value::Str { .. } = value {
+            if let Some((_, image)) = self.image_file(value, "the sky") {
+                self.settings.sky = Some(Sky::Image(image));
+            }
+            return;
+        }
         let Value::Tuple { items, .. } = value else {
             self.report(
                 Diagnostic::new(

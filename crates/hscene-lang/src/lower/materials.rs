@@ -3,7 +3,7 @@
 use super::Lowerer;
 use super::table::{self, SeenKeys, unknown_word, words};
 use crate::diagnostic::{Code, Diagnostic};
-use crate::ir::{Material, Pattern, Rgb, Texture};
+use crate::ir::{ImageTexture, Material, Pattern, Rgb, Texture};
 use crate::syntax::{BrokenStatement, Clause, Section, Value};
 
 /// A material field.
@@ -21,6 +21,8 @@ enum Field {
     CheckerAmbient,
     Emission,
     Absorption,
+    Texture,
+    TextureRotate,
 }
 
 /// Every material field, in the order the help lists them.
@@ -37,6 +39,8 @@ const FIELDS: &[(&str, Field)] = &[
     ("checker_ambient", Field::CheckerAmbient),
     ("emission", Field::Emission),
     ("absorption", Field::Absorption),
+    ("texture", Field::Texture),
+    ("texture_rotate", Field::TextureRotate),
 ];
 
 /// The names of the material fields, in the order of [`FIELDS`].
@@ -46,12 +50,14 @@ fn fields_help() -> String {
     format!("material fields are {}", MATERIAL_FIELDS.join(", "))
 }
 
-/// The checker fields of one material statement, as given.
+/// The checker fields of one material statement, as given (and the image
+/// texture's turn, settled once every field is read).
 #[derive(Default)]
 struct CheckerFields {
     scale: Option<f64>,
     diffuse: Option<Rgb>,
     ambient: Option<Rgb>,
+    rotate: Option<(f64, crate::diagnostic::Span)>,
 }
 
 /// `c` with every channel multiplied by `k`.
@@ -118,6 +124,18 @@ impl Lowerer<'_> {
                         &fields_help(),
                     )),
                 }
+            }
+            match (&mut m.image, checker.rotate) {
+                (Some(image), Some((turn, _))) => image.rotate = turn,
+                (None, Some((_, span))) => self.report(
+                    Diagnostic::new(
+                        Code::IneffectiveOption,
+                        span,
+                        "`texture_rotate` has no effect without `texture = \"file\"`",
+                    )
+                    .with_help("add `texture = \"image.png\"` or remove `texture_rotate`"),
+                ),
+                _ => {}
             }
             m.texture = checker.scale.map(|scale| Texture {
                 pattern: Pattern::Checker,
@@ -200,6 +218,32 @@ impl Lowerer<'_> {
             Field::CheckerAmbient => checker.ambient = self.rgb(value),
             Field::Emission => m.emission = self.rgb(value).unwrap_or(m.emission),
             Field::Absorption => m.absorption = self.rgb(value).unwrap_or(m.absorption),
+            Field::Texture => {
+                if let Some((path, image)) = self.image_file(value, "a texture") {
+                    let rotate = m.image.as_ref().map_or(0.0, |t| t.rotate);
+                    m.image = Some(ImageTexture {
+                        path,
+                        image,
+                        rotate,
+                    });
+                }
+            }
+            Field::TextureRotate => {
+                if let Some(x) = self.number(value) {
+                    if x.is_finite() && x.abs() <= 360.0 {
+                        checker.rotate = Some((x.to_radians(), value.span()));
+                    } else {
+                        self.error(
+                            Code::InvalidValue,
+                            value.span(),
+                            format!(
+                                "texture_rotate is an angle in degrees from -360 to 360, got {}",
+                                hgeom::Compact(x)
+                            ),
+                        );
+                    }
+                }
+            }
         }
     }
 }

@@ -1,0 +1,181 @@
+//! Image textures: where a hit lands in its material's image, by a mapping
+//! that means something in H³ and is fixed in the object's own space (so a
+//! texture follows its object under every isometry).
+//!
+//! - **h-sphere**: latitude and longitude about its centre, in the axes of
+//!   the object's space (`+y` the north pole, the image's middle column
+//!   looking along `+z`), the equirectangular map of the sky
+//!   ([`hscene_ir::equirectangular`]).
+//! - **h-plane and polygon**: the Poincaré-disc coordinates of the plane in
+//!   its own frame: the plane is moved, by the transvection along the
+//!   perpendicular, so that its centre is at the origin, and turned so
+//!   that its normal is `+z`; its points are then the disc `z = 0`, whose
+//!   ball coordinates `(x, y)` are the Poincaré-disc model of the plane.
+//!   The image's inscribed circle is that disc (`u = (1 + x)/2`,
+//!   `v = (1 - y)/2`), so a tiling drawn in the disc lands on the plane as
+//!   that exact tiling, its straight edges on the plane's geodesics. The
+//!   centre is the foot of the perpendicular from the object's origin for
+//!   a plane, the Klein-model centroid of the vertices for a polygon; the
+//!   disc's `x` axis is the object's `+x` seen in the plane (or `+y` when
+//!   `+x` is the plane's normal).
+//! - Other surfaces show the material's own colours.
+//!
+//! The texel's colour multiplies the material's ambient and diffuse
+//! reflectances (white keeps the image's colours). The mipmap level
+//! follows the pixel's footprint at the hit: a pixel `α` wide at the eye
+//! spreads to `α sinh d` at distance `d`, over `W / (2π sinh r)` texels per
+//! unit length round a sphere of radius `r`, `W (1 - |x|²) / 4` at the disc
+//! point `x` (the Poincaré metric `2|dx| / (1 - |x|²)`).
+
+use hgeom::glam::{DMat3, DMat4, DVec3, DVec4};
+use hgeom::{Hit, Isometry, Point, Vertex, lorentz};
+use hscene_ir::{ImageTexture, Rgb, Shape, equirectangular};
+
+/// How an object's image texture is laid on it.
+#[derive(Clone, Copy, Debug)]
+pub struct TextureMapping {
+    /// From the canonical frame to the mapping's frame (Lorentz matrix).
+    to_frame: DMat4,
+    kind: MapKind,
+    /// The angle between neighbouring pixels at the eye.
+    pixel_angle: f64,
+}
+
+#[derive(Clone, Copy, Debug)]
+enum MapKind {
+    /// Latitude and longitude about the origin of the frame; `sinh r`.
+    Sphere(f64),
+    /// The Poincaré disc `z = 0` of the frame.
+    Disc,
+}
+
+impl TextureMapping {
+    /// The mapping of `shape` (in the scene's frame) for an object whose
+    /// own space is `to_local` away from the canonical frame, where
+    /// `placement` put it; `None` for a shape that has none.
+    pub fn of(
+        shape: &Shape,
+        placement: &Isometry,
+        to_local: &Isometry,
+        pixel_angle: f64,
+    ) -> Option<TextureMapping> {
+        let local = shape.transformed(&placement.inverse());
+        let (frame, kind) = match &local {
+            Shape::Sphere(s) => (
+                Isometry::transvection_from_origin(s.center()).inverse(),
+                MapKind::Sphere(s.radius().sinh()),
+            ),
+            Shape::Plane(p) => {
+                let n = p.normal();
+                let o = DVec4::W;
+                let foot = o - lorentz::dot(o, n) * n;
+                (disc_frame(foot, n)?, MapKind::Disc)
+            }
+            Shape::Polygon(p) => {
+                let klein: Vec<DVec3> = p
+                    .vertices()
+                    .iter()
+                    .map(|v| match v {
+                        Vertex::Interior(q) => {
+                            let x = q.to_hyperboloid();
+                            x.truncate() / x.w
+                        }
+                        Vertex::Ideal(i) => i.coords(),
+                    })
+                    .collect();
+                let mean = klein.iter().sum::<DVec3>() / klein.len().max(1) as f64;
+                (
+                    disc_frame(mean.extend(1.0), p.plane().normal())?,
+                    MapKind::Disc,
+                )
+            }
+            _ => return None,
+        };
+        Some(TextureMapping {
+            to_frame: frame.compose(to_local).to_lorentz(),
+            kind,
+            pixel_angle,
+        })
+    }
+
+    /// The ambient and diffuse reflectances of material colours `own` with
+    /// the texture `t` at `hit`.
+    pub fn colours(&self, t: &ImageTexture, own: (Rgb, Rgb), hit: &Hit) -> (Rgb, Rgb) {
+        let q = self.to_frame * hit.point;
+        let width = t.image.width() as f64;
+        let spread = self.pixel_angle * hit.point.w.max(1.0).acosh().sinh();
+        let (u, v, texels_per_length) = match self.kind {
+            MapKind::Sphere(sinh_r) => {
+                let d = q.truncate();
+                let len = d.length();
+                if !(len > 0.0 && len.is_finite()) {
+                    return own;
+                }
+                let (u, v) = equirectangular(d / len);
+                let u = u + t.rotate / std::f64::consts::TAU;
+                (u, v, width / (std::f64::consts::TAU * sinh_r))
+            }
+            MapKind::Disc => {
+                let b = q.truncate() / (1.0 + q.w);
+                let (s, c) = t.rotate.sin_cos();
+                let (x, y) = (c * b.x + s * b.y, -s * b.x + c * b.y);
+                let gap = (1.0 - b.x * b.x - b.y * b.y).max(0.0);
+                (0.5 + 0.5 * x, 0.5 - 0.5 * y, width * gap / 4.0)
+            }
+        };
+        let [r, g, b] = t.image.sample(u, v, spread * texels_per_length);
+        let texel = Rgb::new(r, g, b);
+        (own.0.tint(texel), own.1.tint(texel))
+    }
+}
+
+/// The isometry that takes the plane of Lorentz normal `n` to the plane
+/// `z = 0` through the origin, its point `centre` (any positive multiple of
+/// a point of the plane, or of the Klein model's `(k, 1)`) to the origin;
+/// `None` for a degenerate plane.
+fn disc_frame(centre: DVec4, n: DVec4) -> Option<Isometry> {
+    let norm2 = -lorentz::dot(centre, centre);
+    if !(norm2 > 0.0 && norm2.is_finite()) {
+        return None;
+    }
+    let c = centre / norm2.sqrt();
+    let to_origin = Isometry::transvection_from_origin(Point::from_hyperboloid(c)?).inverse();
+    let v = (to_origin.to_lorentz() * n).truncate();
+    let z = v.try_normalize()?;
+    let x = [DVec3::X, DVec3::Y]
+        .into_iter()
+        .map(|a| a - a.dot(z) * z)
+        .find(|a| a.length() > 1e-6)?
+        .normalize();
+    let y = z.cross(x);
+    let turn = Isometry::orthogonal_unchecked(DMat3::from_cols(x, y, z).transpose());
+    Some(turn.compose(&to_origin))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use hgeom::HPlane;
+
+    /// A plane's frame puts its foot at the origin and its points on
+    /// `z = 0`.
+    #[test]
+    fn disc_frames_flatten_their_plane() {
+        let a = Vertex::Interior(Point::new(0.1, 0.5, 0.2).unwrap());
+        let b = Vertex::Interior(Point::new(-0.3, 0.4, 0.1).unwrap());
+        let c = Vertex::Interior(Point::new(0.2, 0.45, -0.4).unwrap());
+        let plane = HPlane::through(&a, &b, &c).unwrap();
+        let n = plane.normal();
+        let foot = DVec4::W - lorentz::dot(DVec4::W, n) * n;
+        let frame = disc_frame(foot, n).unwrap().to_lorentz();
+        for v in [a, b, c] {
+            let Vertex::Interior(p) = v else {
+                unreachable!()
+            };
+            let q = frame * p.to_hyperboloid();
+            assert!(q.z.abs() < 1e-12, "{q}");
+        }
+        let f = frame * (foot / (-lorentz::dot(foot, foot)).sqrt());
+        assert!((f - DVec4::W).length() < 1e-12, "{f}");
+    }
+}
