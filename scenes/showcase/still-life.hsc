@@ -8,14 +8,15 @@
 //   hscene render scenes/showcase/still-life.hsc -o still-life.png
 Globals {
     resolution = (640, 480);
-    fov = 80;
+    fov = 75;
     from = %eye;
     to = %target;
     ambient = (0.25, 0.25, 0.27);
     recursion_depth = 6;
     samples = 49;
     sky = ((0.25, 0.45, 0.85), (0.9, 0.85, 0.75));
-    aperture = 0.02;
+    aperture = 0.025;
+    focus = 1.2;
 }
 
 BRDFs {
@@ -33,29 +34,27 @@ BRDFs {
 }
 
 Points {
-    eye = (0, -0.05, -0.25);
-    target = (0, -0.3, 0.3);
-    // The floor: the h-plane orthogonal to the y axis 0.9 below the origin.
-    floor_foot: (0, -1, 0), distance = 0.9;
-    // Balls resting on it: centres on verticals through the floor, placed
-    // with the floor at the origin and carried by the same translation.
-    mirror_at = (0, 0, 0.32);
-    glass_at = (-0.3, 0, 0.22);
-    globe_at = (0.22, 0, 0.06);
-    lamp_at = (0.35, 0.55, 0.2);
+    eye = (0, -0.3, -0.25);
+    target = (0, -0.41, 0.2);
+    // Each ball first rests on the plane y = 0 at the origin (its centre
+    // its radius up the y axis), then slides within that plane along a line
+    // through the origin (an isometry that keeps the plane), and the whole
+    // arrangement is lowered 0.9 onto the floor (docs/language.md, "Resting
+    // an object on a plane").
+    mirror_at: (0, 1, 0), distance = 0.18;
+    glass_at: (0, 1, 0), distance = 0.13;
+    globe_at: (0, 1, 0), distance = 0.1;
+    lamp_at = (0.2, -0.18, 0.32);
 }
 
 Transformations {
     down: hline ((0, 0, 0), (0, -0.5, 0));
-    up: hline ((0, 0, 0), (0, 0.5, 0));
-    // Each ball's centre: its foot on the plane y = 0 lifted by its radius,
-    // then the whole arrangement lowered 0.9 onto the floor.
-    m_up: hline (%mirror_at, (0, 0.5, 0.32));
-    %mirror_at->Translate(%m_up, 0.18);
-    g_up: hline (%glass_at, (-0.3, 0.5, 0.22));
-    %glass_at->Translate(%g_up, 0.13);
-    b_up: hline (%globe_at, (0.22, 0.5, 0.06));
-    %globe_at->Translate(%b_up, 0.1);
+    to_mirror: hline ((0, 0, 0), (0, 0, 0.5));
+    to_glass: hline ((0, 0, 0), (-0.4, 0, 0.25));
+    to_globe: hline ((0, 0, 0), (0.4, 0, 0.1));
+    %mirror_at->Translate(%to_mirror, 0.75);
+    %glass_at->Translate(%to_glass, 0.7);
+    %globe_at->Translate(%to_globe, 0.45);
     %mirror_at->Translate(%down, 0.9);
     %glass_at->Translate(%down, 0.9);
     %globe_at->Translate(%down, 0.9);
@@ -63,7 +62,7 @@ Transformations {
 }
 
 Lights {
-    %lamp_at, (3, 2.8, 2.5), (1.5, 1.5, 1.4), irradiance_at = 1, radius = 0.08, samples = 4;
+    %lamp_at, (3, 2.8, 2.5), (1.5, 1.5, 1.4), irradiance_at = 0.8, radius = 0.04, samples = 4;
 }
 
 Objects {

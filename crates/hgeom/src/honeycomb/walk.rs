@@ -329,7 +329,7 @@ impl RegularHoneycomb {
             if !self.rings.is_regular() {
                 return Err(GeomError::UniformWithCells);
             }
-            if self.symbol.r() % 2 != 0 {
+            if !self.symbol.r().is_multiple_of(2) {
                 return Err(GeomError::OddEdgeCycle { r: self.symbol.r() });
             }
         }
