@@ -43,10 +43,13 @@ pub struct Hit {
     /// ([`TriangleMesh::smoothed`](crate::TriangleMesh::smoothed)). Only
     /// lighting uses it; ray offsets and inside/outside use `normal`.
     pub shading: DVec4,
-    /// Which part of a composite surface was hit: 0 for every shape except
-    /// [`RegularHoneycomb`](crate::RegularHoneycomb), where it encodes the
-    /// kind of part (edge, face, vertex) and the class of its cell; read it
-    /// with [`decode_honeycomb_part`](crate::decode_honeycomb_part).
+    /// Which part of a composite surface was hit: for a
+    /// [`RegularHoneycomb`](crate::RegularHoneycomb) the kind of part
+    /// (edge, face, vertex) and the class of its cell, read with
+    /// [`decode_honeycomb_part`](crate::decode_honeycomb_part); for a
+    /// [`TriangleMesh`](crate::TriangleMesh) the index of the triangle
+    /// (into its `triangles()`, saturating at `u32::MAX`); 0 for every
+    /// other shape.
     pub part: u32,
 }
 

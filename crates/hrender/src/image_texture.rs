@@ -18,7 +18,12 @@
 //!   a plane, the Klein-model centroid of the vertices for a polygon; the
 //!   disc's `x` axis is the object's `+x` seen in the plane (or `+y` when
 //!   `+x` is the plane's normal).
-//! - Other surfaces show the material's own colours.
+//! - **mesh**: each triangle by the barycentric coordinates of the hit in
+//!   the Klein model (where the h-triangle is flat, so they are the
+//!   geodesic ones): its first vertex at the image's lower left, the second
+//!   at its lower right, the third at the top middle.
+//! - Other surfaces (rods, cylinders, horospheres, honeycombs) show the
+//!   material's own colours.
 //!
 //! The texel's colour multiplies the material's ambient and diffuse
 //! reflectances (white keeps the image's colours). The mipmap level
@@ -32,7 +37,7 @@ use hgeom::{Hit, Isometry, Point, Vertex, lorentz};
 use hscene_ir::{ImageTexture, Rgb, Shape, equirectangular};
 
 /// How an object's image texture is laid on it.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct TextureMapping {
     /// From the canonical frame to the mapping's frame (Lorentz matrix).
     to_frame: DMat4,
@@ -41,12 +46,15 @@ pub struct TextureMapping {
     pixel_angle: f64,
 }
 
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 enum MapKind {
     /// Latitude and longitude about the origin of the frame; `sinh r`.
     Sphere(f64),
     /// The Poincaré disc `z = 0` of the frame.
     Disc,
+    /// A mesh's triangles, each by barycentric coordinates: the Klein
+    /// coordinates of its vertices in the frame (the object's space).
+    Triangles(std::sync::Arc<Vec<[DVec3; 3]>>),
 }
 
 impl TextureMapping {
@@ -89,6 +97,22 @@ impl TextureMapping {
                     MapKind::Disc,
                 )
             }
+            Shape::Mesh(m) => {
+                let vertices = m.vertices();
+                let klein = |i: u32| {
+                    let x = vertices[i as usize].to_hyperboloid();
+                    x.truncate() / x.w
+                };
+                let triangles = m
+                    .triangles()
+                    .iter()
+                    .map(|t| t.map(klein))
+                    .collect::<Vec<_>>();
+                (
+                    Isometry::IDENTITY,
+                    MapKind::Triangles(std::sync::Arc::new(triangles)),
+                )
+            }
             _ => return None,
         };
         Some(TextureMapping {
@@ -104,8 +128,24 @@ impl TextureMapping {
         let q = self.to_frame * hit.point;
         let width = t.image.width() as f64;
         let spread = self.pixel_angle * hit.point.w.max(1.0).acosh().sinh();
-        let (u, v, texels_per_length) = match self.kind {
-            MapKind::Sphere(sinh_r) => {
+        let (u, v, texels_per_length) = match &self.kind {
+            MapKind::Triangles(triangles) => {
+                let Some(&[a, b, c]) = triangles.get(hit.part as usize) else {
+                    return own;
+                };
+                let k = q.truncate() / q.w;
+                let n = (b - a).cross(c - a);
+                let n2 = n.length_squared();
+                if !(n2 > 0.0) {
+                    return own;
+                }
+                let wb = (k - a).cross(c - a).dot(n) / n2;
+                let wc = (b - a).cross(k - a).dot(n) / n2;
+                // Klein lengths near the triangle are its size's scale.
+                let size = (b - a).length().max((c - a).length()).max(1e-12);
+                (wb + 0.5 * wc, 1.0 - wc, width / size)
+            }
+            &MapKind::Sphere(sinh_r) => {
                 let d = q.truncate();
                 let len = d.length();
                 if !(len > 0.0 && len.is_finite()) {

@@ -132,17 +132,23 @@ fn a_heptagonal_tiling_lands_on_a_plane_as_that_tiling() {
     );
 }
 
-/// A textured sphere and plane, the eye and the light, all moved by a
-/// translation of hyperbolic length 20: the picture is the same.
+/// A textured sphere, plane and mesh, the eye and the light, all moved by
+/// a translation of hyperbolic length 20: the picture is the same.
 #[test]
 fn textured_objects_look_the_same_after_a_translation_of_20() {
     let dir = tempfile::tempdir().unwrap();
     write_tiling(&dir.path().join("tiling.png"), 256);
+    std::fs::write(
+        dir.path().join("tet.obj"),
+        "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n",
+    )
+    .unwrap();
     let picture = |moved: bool| {
         let moves = if moved {
             "Transformations { far: hline ((0, 0, 0), (0.3, 0.1, 0.2)); \
              @camera->Translate(%far, 20); @ball->Translate(%far, 20); \
-             @floor->Translate(%far, 20); @lamp->Translate(%far, 20); }"
+             @floor->Translate(%far, 20); @lamp->Translate(%far, 20); \
+             @tet->Translate(%far, 20); }"
         } else {
             ""
         };
@@ -153,7 +159,8 @@ fn textured_objects_look_the_same_after_a_translation_of_20() {
              texture = \"tiling.png\", texture_rotate = 20; }}\n\
              Lights {{ lamp: (0, 0.4, -0.3), (2, 2, 2), (0, 0, 0); }}\n\
              Objects {{ ball: Sphere (-0.15, 0.05, 0), 0.3, #tex; \
-             floor: Plane (0, -0.3, 0), (0.3, -0.3, 0), (0, -0.3, 0.3), #tex; }}\n"
+             floor: Plane (0, -0.3, 0), (0.3, -0.3, 0), (0, -0.3, 0.3), #tex; \
+             tet: Mesh \"tet.obj\", 0.15, #tex, at = (0.2, -0.1, 0.05); }}\n"
         );
         hrender::render(
             &compile_in(dir.path(), &source),

@@ -252,7 +252,8 @@ impl TriangleMesh {
             point,
             normal: c.normal,
             shading,
-            part: 0,
+            // Which triangle: a renderer maps textures by it.
+            part: u32::try_from(c.triangle).unwrap_or(u32::MAX),
         }
     }
 }

@@ -185,24 +185,14 @@ impl Lowerer<'_> {
                 self.report(twice);
             }
             match option(&key.text) {
-                Some(LightKey::Radius) => match self.number(value) {
-                    Some(r) if (0.0..=MAX_LIGHT_RADIUS).contains(&r) => {
-                        radius = Some((r, key.span))
-                    }
-                    Some(r) => {
-                        ok = false;
-                        self.report(
-                            Diagnostic::new(
-                                Code::InvalidValue,
-                                value.span(),
-                                format!(
-                                    "a light's radius must be from 0 to {MAX_LIGHT_RADIUS}, got {}",
-                                    hgeom::Compact(r)
-                                ),
-                            )
-                            .with_help("the radius is a hyperbolic length; 0 makes a point light"),
-                        );
-                    }
+                Some(LightKey::Radius) => match self.light_length(
+                    value,
+                    0.0,
+                    MAX_LIGHT_RADIUS,
+                    "a light's radius must be from 0 to",
+                    "the radius is a hyperbolic length; 0 makes a point light",
+                ) {
+                    Some(r) => radius = Some((r, key.span)),
                     None => ok = false,
                 },
                 Some(LightKey::Samples) => {
@@ -211,22 +201,14 @@ impl Lowerer<'_> {
                         None => ok = false,
                     }
                 }
-                Some(LightKey::Near) => match self.number(value) {
-                    Some(d) if d > 0.0 && d <= MAX_LIGHT_NEAR => near = d,
-                    Some(d) => {
-                        ok = false;
-                        self.report(
-                            Diagnostic::new(
-                                Code::InvalidValue,
-                                value.span(),
-                                format!(
-                                    "a light's `near` must be above 0 and at most {MAX_LIGHT_NEAR}, got {}",
-                                    hgeom::Compact(d)
-                                ),
-                            )
-                            .with_help("`near` is a hyperbolic distance: nearer than it the light's fall-off stops growing"),
-                        );
-                    }
+                Some(LightKey::Near) => match self.light_length(
+                    value,
+                    f64::MIN_POSITIVE,
+                    MAX_LIGHT_NEAR,
+                    "a light's `near` must be above 0 and at most",
+                    "`near` is a hyperbolic distance: nearer than it the light's fall-off stops growing",
+                ) {
+                    Some(d) => near = d,
                     None => ok = false,
                 },
                 // `irradiance_at` was taken out before (`light_strength.rs`).
@@ -262,5 +244,30 @@ impl Lowerer<'_> {
             None if r > 0.0 => Some((r, DEFAULT_LIGHT_SAMPLES, near)),
             None => Some((0.0, 1, near)),
         }
+    }
+
+    /// A light's length option in `lo..=hi`, or `None` after reporting
+    /// `message` (completed with the bound and the value) and `help`.
+    fn light_length(
+        &mut self,
+        value: &Value,
+        lo: f64,
+        hi: f64,
+        message: &str,
+        help: &'static str,
+    ) -> Option<f64> {
+        let x = self.number(value)?;
+        if (lo..=hi).contains(&x) {
+            return Some(x);
+        }
+        self.report(
+            Diagnostic::new(
+                Code::InvalidValue,
+                value.span(),
+                format!("{message} {hi}, got {}", hgeom::Compact(x)),
+            )
+            .with_help(help),
+        );
+        None
     }
 }
