@@ -22,8 +22,14 @@
 //!   the Klein model (where the h-triangle is flat, so they are the
 //!   geodesic ones): its first vertex at the image's lower left, the second
 //!   at its lower right, the third at the top middle.
-//! - Other surfaces (rods, cylinders, horospheres, honeycombs) show the
-//!   material's own colours.
+//! - **horosphere**: its flat (Euclidean) coordinates, the image repeated
+//!   once per unit of flat length. The frame moves the horosphere's point
+//!   nearest the object's origin to the origin (along the diameter to its
+//!   centre `ξ`, which stays put) and turns `ξ` to `+y`; the horosphere is
+//!   then `w - y = 1`, whose points `(s, y, t; w)` have `w + y = 1 + s² + t²`
+//!   and the induced metric `ds² + dt²`: `(s, t)` are its flat coordinates.
+//! - Other surfaces (rods, cylinders, honeycombs) show the material's own
+//!   colours.
 //!
 //! The texel's colour multiplies the material's ambient and diffuse
 //! reflectances (white keeps the image's colours). The mipmap level
@@ -52,6 +58,8 @@ enum MapKind {
     Sphere(f64),
     /// The Poincaré disc `z = 0` of the frame.
     Disc,
+    /// The horosphere `w - y = 1` of the frame, by its flat coordinates.
+    Flat,
     /// A mesh's triangles, each by barycentric coordinates: the Klein
     /// coordinates of its vertices in the frame (the object's space).
     Triangles(std::sync::Arc<Vec<[DVec3; 3]>>),
@@ -96,6 +104,21 @@ impl TextureMapping {
                     disc_frame(mean.extend(1.0), p.plane().normal())?,
                     MapKind::Disc,
                 )
+            }
+            Shape::Horosphere(h) => {
+                let xi = h.center().coords();
+                let (_, r) = h.euclidean();
+                let near = Point::from_coords(xi * (1.0 - 2.0 * r)).ok()?;
+                let to_origin = Isometry::transvection_from_origin(near).inverse();
+                let y = xi;
+                let x = [DVec3::X, DVec3::Z]
+                    .into_iter()
+                    .map(|a| a - a.dot(y) * y)
+                    .find(|a| a.length() > 1e-6)?
+                    .normalize();
+                let z = x.cross(y);
+                let turn = Isometry::orthogonal_unchecked(DMat3::from_cols(x, y, z).transpose());
+                (turn.compose(&to_origin), MapKind::Flat)
             }
             Shape::Mesh(m) => {
                 let vertices = m.vertices();
@@ -144,6 +167,12 @@ impl TextureMapping {
                 // Klein lengths near the triangle are its size's scale.
                 let size = (b - a).length().max((c - a).length()).max(1e-12);
                 (wb + 0.5 * wc, 1.0 - wc, width / size)
+            }
+            MapKind::Flat => {
+                let (fs, ft) = (q.x, q.z);
+                let (sn, cs) = t.rotate.sin_cos();
+                let (a, b) = (cs * fs + sn * ft, -sn * fs + cs * ft);
+                (a.rem_euclid(1.0), b.rem_euclid(1.0), width)
             }
             &MapKind::Sphere(sinh_r) => {
                 let d = q.truncate();
@@ -217,5 +246,47 @@ mod tests {
         }
         let f = frame * (foot / (-lorentz::dot(foot, foot)).sqrt());
         assert!((f - DVec4::W).length() < 1e-12, "{f}");
+    }
+
+    /// A horosphere's frame takes it to `w - y = 1`, and its flat
+    /// coordinates `(s, t)` measure it: points of the horosphere met by
+    /// rays from the origin are `d` apart with `cosh d = 1 + |Δ(s, t)|² / 2`
+    /// (the chord of a horosphere).
+    #[test]
+    fn horosphere_frames_give_flat_coordinates() {
+        use hgeom::{Horosphere, IdealPoint, Ray};
+        let xi = IdealPoint::from_direction(DVec3::new(0.3, -1.0, 0.4)).unwrap();
+        let h = Horosphere::new(xi, &Point::new(0.1, -0.3, 0.2).unwrap()).unwrap();
+        let mapping = TextureMapping::of(
+            &Shape::Horosphere(h),
+            &Isometry::IDENTITY,
+            &Isometry::IDENTITY,
+            0.0,
+        )
+        .unwrap();
+        let points: Vec<DVec4> = [
+            DVec3::new(0.2, -1.0, 0.3),
+            DVec3::new(0.5, -1.0, 0.1),
+            DVec3::new(0.1, -1.0, 0.7),
+            DVec3::new(0.4, -0.8, 0.5),
+        ]
+        .iter()
+        .map(|d| {
+            let ray = Ray::from_origin_unchecked(d.normalize());
+            h.intersect(&ray, 0.0, f64::INFINITY).unwrap().point
+        })
+        .collect();
+        let flat: Vec<DVec4> = points.iter().map(|x| mapping.to_frame * *x).collect();
+        for q in &flat {
+            assert!((q.w - q.y - 1.0).abs() < 1e-9, "{q}");
+        }
+        for i in 0..points.len() {
+            for j in 0..i {
+                let cosh_d = -lorentz::dot(points[i], points[j]);
+                let (ds, dt) = (flat[i].x - flat[j].x, flat[i].z - flat[j].z);
+                let chord = 1.0 + (ds * ds + dt * dt) / 2.0;
+                assert!((cosh_d - chord).abs() < 1e-9 * cosh_d, "{cosh_d} {chord}");
+            }
+        }
     }
 }
