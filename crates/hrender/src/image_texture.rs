@@ -111,14 +111,11 @@ impl TextureMapping {
                 let near = Point::from_coords(xi * (1.0 - 2.0 * r)).ok()?;
                 let to_origin = Isometry::transvection_from_origin(near).inverse();
                 let y = xi;
-                let x = [DVec3::X, DVec3::Z]
-                    .into_iter()
-                    .map(|a| a - a.dot(y) * y)
-                    .find(|a| a.length() > 1e-6)?
-                    .normalize();
-                let z = x.cross(y);
-                let turn = Isometry::orthogonal_unchecked(DMat3::from_cols(x, y, z).transpose());
-                (turn.compose(&to_origin), MapKind::Flat)
+                let x = across(y, [DVec3::X, DVec3::Z])?;
+                (
+                    rotation(x, y, x.cross(y)).compose(&to_origin),
+                    MapKind::Flat,
+                )
             }
             Shape::Mesh(m) => {
                 let vertices = m.vertices();
@@ -211,14 +208,24 @@ fn disc_frame(centre: DVec4, n: DVec4) -> Option<Isometry> {
     let to_origin = Isometry::transvection_from_origin(Point::from_hyperboloid(c)?).inverse();
     let v = (to_origin.to_lorentz() * n).truncate();
     let z = v.try_normalize()?;
-    let x = [DVec3::X, DVec3::Y]
+    let x = across(z, [DVec3::X, DVec3::Y])?;
+    Some(rotation(x, z.cross(x), z).compose(&to_origin))
+}
+
+/// The first of `candidates` with its part along the unit `axis` taken
+/// out, normalised: the frame's `x` axis, orthogonal to `axis`.
+fn across(axis: DVec3, candidates: [DVec3; 2]) -> Option<DVec3> {
+    candidates
         .into_iter()
-        .map(|a| a - a.dot(z) * z)
-        .find(|a| a.length() > 1e-6)?
-        .normalize();
-    let y = z.cross(x);
-    let turn = Isometry::orthogonal_unchecked(DMat3::from_cols(x, y, z).transpose());
-    Some(turn.compose(&to_origin))
+        .map(|a| a - a.dot(axis) * axis)
+        .find(|a| a.length() > 1e-6)
+        .map(DVec3::normalize)
+}
+
+/// The rotation taking the orthonormal `x`, `y`, `z` to the coordinate
+/// axes.
+fn rotation(x: DVec3, y: DVec3, z: DVec3) -> Isometry {
+    Isometry::orthogonal_unchecked(DMat3::from_cols(x, y, z).transpose())
 }
 
 #[cfg(test)]
