@@ -83,7 +83,7 @@ pub use cylinder::HCylinder;
 pub use error::GeomError;
 pub use fermi::{fermi_coordinates, from_fermi_coordinates};
 pub use honeycomb::{
-    CUBE_435_DIHEDRAL, CellColouring, CoxeterSimplex, DEFAULT_HORIZON, HoneycombCell,
+    CUBE_435_DIHEDRAL, CellColouring, CoxeterSimplex, DEFAULT_HORIZON, FaceFrame, HoneycombCell,
     HoneycombPart, HoneycombPiece, HoneycombPieces, HoneycombStyle, MAX_TESSELLATION_CELLS,
     MAX_WALK_STEPS, RANK_CLASSES, RegularHoneycomb, Rings, SAME_CELL_DISTANCE, Schlafli,
     SchlafliError, WalkStats, WalkStep, cube_435, cube_435_circumradius, decode_honeycomb_part,

@@ -35,12 +35,13 @@
 //! hundred pixels.
 
 use hgeom::glam::DVec3;
-use hgeom::{DEFAULT_HORIZON, Hit, HoneycombPart, Ray, decode_honeycomb_part};
-use hscene_ir::{Material, Rgb};
+use hgeom::{DEFAULT_HORIZON, HoneycombPart, Isometry, Ray, decode_honeycomb_part};
+use hscene_ir::{Material, Rgb, Scene};
 
 use crate::absorption::sheet_filter;
+use crate::horizon_bucket::STEP;
 use crate::material::reflectances;
-use crate::scene::{PreparedObject, T_MIN};
+use crate::scene::{PreparedObject, PreparedScene, T_MIN};
 
 /// How many sample lines make a honeycomb's average appearance.
 const SAMPLES: usize = 1024;
@@ -48,8 +49,34 @@ const SAMPLES: usize = 1024;
 /// Where along its direction from the eye a sample line starts.
 pub const SAMPLE_START: f64 = 3.0;
 
-/// The spacing of the lengths `Δ` the average is kept for.
-pub const STEP: f64 = 0.5;
+/// Gives each honeycomb of `prepared` (made from `scene` moved by
+/// `stages`) its horizon materials: its average appearance for every
+/// remaining length (module docs), appended to the materials.
+pub fn fill_horizons(prepared: &mut PreparedScene, scene: &Scene, stages: &[Isometry]) {
+    let depth = scene.settings.recursion_depth;
+    for (o, source) in prepared.objects.iter_mut().zip(&scene.objects) {
+        if o.parts.is_none() {
+            continue;
+        }
+        // The same honeycomb walked to distance 12 whatever the picture's
+        // pixels, for the average.
+        let sampler = PreparedObject {
+            surfaces: PreparedObject::moved(&source.shape, stages, None, false).0,
+            material: o.material,
+            parts: o.parts.clone(),
+            opaque: o.opaque,
+            to_local: o.to_local,
+            ball: None,
+            faces: Vec::new(),
+            horizon: Vec::new(),
+            mapping: None,
+        };
+        let beyond = average_appearance(&sampler, &prepared.materials, depth);
+        let first = prepared.materials.len();
+        o.horizon = (first..first + beyond.len()).collect();
+        prepared.materials.extend(beyond);
+    }
+}
 
 /// The average appearance of the honeycomb `sampler` (the scene's
 /// honeycomb walked to distance 12 from the eye, with its part
@@ -93,15 +120,6 @@ pub fn average_appearance(
             ..materials[sampler.material].clone()
         })
         .collect()
-}
-
-/// Which of [`average_appearance`]'s materials a horizon hit takes: the
-/// one for the rest of the way from the hit to distance 12 from the eye.
-pub fn bucket_of(hit: &Hit, buckets: usize) -> usize {
-    // w = cosh of the distance from the eye (the frame's origin).
-    let from_eye = hit.point.w.max(1.0).acosh();
-    let rest = (DEFAULT_HORIZON - from_eye).max(0.0);
-    ((rest / STEP).round() as usize).min(buckets.saturating_sub(1))
 }
 
 /// A part a sample line met: where, and what it adds (already weighted by

@@ -28,8 +28,12 @@
 //!   centre `ξ`, which stays put) and turns `ξ` to `+y`; the horosphere is
 //!   then `w - y = 1`, whose points `(s, y, t; w)` have `w + y = 1 + s² + t²`
 //!   and the induced metric `ds² + dt²`: `(s, t)` are its flat coordinates.
-//! - Other surfaces (rods, cylinders, honeycombs) show the material's own
-//!   colours.
+//! - **honeycomb faces**: each face by the Poincaré-disc coordinates of its
+//!   own plane about its centre (as a plane's, `x` axis the object's `+x`
+//!   seen there), scaled so that the face's circumcircle fills the image's
+//!   inscribed circle ([`hgeom::RegularHoneycomb::face_frame`]); edges and
+//!   vertices show the material's own colours.
+//! - Other surfaces (rods, cylinders) show the material's own colours.
 //!
 //! The texel's colour multiplies the material's ambient and diffuse
 //! reflectances (white keeps the image's colours). The mipmap level
@@ -63,6 +67,9 @@ enum MapKind {
     /// A mesh's triangles, each by barycentric coordinates: the Klein
     /// coordinates of its vertices in the frame (the object's space).
     Triangles(std::sync::Arc<Vec<[DVec3; 3]>>),
+    /// A regular honeycomb's faces, each in its own disc; the honeycomb in
+    /// the frame (the object's space).
+    Faces(Box<hgeom::RegularHoneycomb>),
 }
 
 impl TextureMapping {
@@ -117,6 +124,10 @@ impl TextureMapping {
                     MapKind::Flat,
                 )
             }
+            Shape::Honeycomb(h) => (
+                Isometry::IDENTITY,
+                MapKind::Faces(Box::new(h.surface.clone())),
+            ),
             Shape::Mesh(m) => {
                 let vertices = m.vertices();
                 let klein = |i: u32| {
@@ -149,6 +160,25 @@ impl TextureMapping {
         let width = t.image.width() as f64;
         let spread = self.pixel_angle * hit.point.w.max(1.0).acosh().sinh();
         let (u, v, texels_per_length) = match &self.kind {
+            MapKind::Faces(h) => {
+                if hgeom::decode_honeycomb_part(hit.part).0 != hgeom::HoneycombPart::Face {
+                    return own;
+                }
+                let Some(face) = h.face_frame(q) else {
+                    return own;
+                };
+                let Some(frame) = disc_frame(face.centre, face.normal) else {
+                    return own;
+                };
+                let p = frame.to_lorentz() * q;
+                let b = p.truncate() / (1.0 + p.w);
+                // The circumcircle's disc radius; 1 for ideal vertices.
+                let fit = (face.circumradius / 2.0).tanh().max(1e-9);
+                let (s, c) = t.rotate.sin_cos();
+                let (x, y) = ((c * b.x + s * b.y) / fit, (-s * b.x + c * b.y) / fit);
+                let gap = (1.0 - b.x * b.x - b.y * b.y).max(0.0);
+                (0.5 + 0.5 * x, 0.5 - 0.5 * y, width * gap / (4.0 * fit))
+            }
             MapKind::Triangles(triangles) => {
                 let Some(&[a, b, c]) = triangles.get(hit.part as usize) else {
                     return own;

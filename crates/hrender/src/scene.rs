@@ -11,7 +11,7 @@
 use hgeom::Shape as Surface;
 use hgeom::glam::{DVec3, DVec4};
 use hgeom::{Hit, IdealPoint, Isometry, KleinBox, Point, Ray};
-use hscene_ir::view::{CanonicalFrame, PixelFootprint};
+use hscene_ir::view::PixelFootprint;
 use hscene_ir::{self as ir, Fog, Material, PartMaterials, Rgb, Scene, Sky, Surfaces};
 
 use rayon::prelude::*;
@@ -19,7 +19,7 @@ use smallvec::SmallVec;
 
 use crate::accel::{Accel, Leaf, Step};
 use crate::error::RenderError;
-use crate::horizon_fill::{average_appearance, bucket_of};
+use crate::horizon_bucket::bucket_of;
 use crate::image_texture::TextureMapping;
 
 /// An object ready for tracing.
@@ -112,7 +112,7 @@ impl PreparedObject {
     /// shape: its centre and radius if it is an h-sphere, and with
     /// `faces`, its flat faces cut into triangles (fans; a face with an
     /// ideal vertex has no finite area and is left out).
-    fn moved(
+    pub(crate) fn moved(
         shape: &ir::Shape,
         stages: &[Isometry],
         footprint: Option<&PixelFootprint>,
@@ -286,39 +286,9 @@ impl PreparedScene {
         &self.absorbing
     }
 
-    /// Move every object and light by `to_canonical`, and build the
-    /// bounding hierarchy.
-    ///
-    /// Fails if something lies so far from the eye (beyond distance ~37)
-    /// that f64 cannot represent it in the canonical frame: that is reported,
-    /// not silently dropped.
-    pub fn new(scene: &Scene, to_canonical: &Isometry) -> Result<PreparedScene, RenderError> {
-        PreparedScene::staged(scene, std::slice::from_ref(to_canonical), None)
-    }
-
-    /// [`PreparedScene::new`] for a camera: everything is moved by the
-    /// camera's [`stages`](CanonicalFrame::stages) in turn, which keeps far
-    /// scenes exact to the rounding of their input.
-    pub fn for_camera(
-        scene: &Scene,
-        camera: &CanonicalFrame,
-    ) -> Result<PreparedScene, RenderError> {
-        PreparedScene::staged(scene, &camera.stages, None)
-    }
-
-    /// [`PreparedScene::for_camera`] for a picture whose pixels sample the
-    /// directions at the eye as `footprint` says: detail that no pixel can
-    /// resolve is not traced ([`ir::Shape::for_footprint`]).
-    pub fn for_picture(
-        scene: &Scene,
-        camera: &CanonicalFrame,
-        footprint: &PixelFootprint,
-    ) -> Result<PreparedScene, RenderError> {
-        PreparedScene::staged(scene, &camera.stages, Some(footprint))
-    }
-
-    /// Move everything by each of `stages` in turn (at least one).
-    fn staged(
+    /// Move everything by each of `stages` in turn (at least one), without
+    /// the honeycombs' horizon materials (`prepare.rs` adds them).
+    pub(crate) fn staged(
         scene: &Scene,
         stages: &[Isometry],
         footprint: Option<&PixelFootprint>,
@@ -375,45 +345,22 @@ impl PreparedScene {
                     ball,
                     faces,
                     horizon: Vec::new(),
-                    mapping: scene.materials[o.material.index()]
-                        .image
-                        .as_ref()
-                        .and_then(|_| {
-                            let to_local = stages
-                                .iter()
-                                .fold(o.placement, |f, iso| iso.compose(&f))
-                                .inverse();
-                            // Without a footprint (a picture of no two
-                            // neighbouring rays) the finest level is used.
-                            let angle = footprint.map_or(0.0, |f| f.smallest);
-                            TextureMapping::of(&o.shape, &o.placement, &to_local, angle)
-                        }),
+                    mapping: if textured(scene, o) {
+                        let to_local = stages
+                            .iter()
+                            .fold(o.placement, |f, iso| iso.compose(&f))
+                            .inverse();
+                        // Without a footprint (a picture of no two
+                        // neighbouring rays) the finest level is used.
+                        let angle = footprint.map_or(0.0, |f| f.smallest);
+                        TextureMapping::of(&o.shape, &o.placement, &to_local, angle)
+                    } else {
+                        None
+                    },
                 })
             })
             .collect();
-        let mut objects = prepared.into_iter().collect::<Result<Vec<_>, _>>()?;
-        let mut materials = scene.materials.clone();
-        for (o, source) in objects.iter_mut().zip(&scene.objects) {
-            if !matches!(source.shape, ir::Shape::Honeycomb(_)) {
-                continue;
-            }
-            // The same honeycomb walked to distance 12 whatever the
-            // picture's pixels, for the average (`horizon_fill.rs`).
-            let sampler = PreparedObject {
-                surfaces: PreparedObject::moved(&source.shape, stages, None, false).0,
-                material: o.material,
-                parts: o.parts.clone(),
-                opaque: o.opaque,
-                to_local: o.to_local,
-                ball: None,
-                faces: Vec::new(),
-                horizon: Vec::new(),
-                mapping: None,
-            };
-            let beyond = average_appearance(&sampler, &materials, scene.settings.recursion_depth);
-            o.horizon = (materials.len()..materials.len() + beyond.len()).collect();
-            materials.extend(beyond);
-        }
+        let objects = prepared.into_iter().collect::<Result<Vec<_>, _>>()?;
         for (index, m) in scene.materials.iter().enumerate() {
             let bad_scale = m
                 .texture
@@ -482,7 +429,7 @@ impl PreparedScene {
         Ok(PreparedScene {
             objects,
             lights,
-            materials,
+            materials: scene.materials.clone(),
             background: scene.settings.background,
             fog: scene.settings.fog,
             ambient: scene.settings.ambient,
@@ -622,6 +569,18 @@ impl PreparedScene {
         }
         s
     }
+}
+
+/// True if one of the materials object `o` is drawn in has an image.
+fn textured(scene: &Scene, o: &ir::Object) -> bool {
+    std::iter::once(o.material)
+        .chain(o.shape.part_materials().into_iter().flat_map(|p| p.ids()))
+        .any(|m| {
+            scene
+                .materials
+                .get(m.index())
+                .is_some_and(|m| m.image.is_some())
+        })
 }
 
 /// True for the `part` of a honeycomb's horizon hit.

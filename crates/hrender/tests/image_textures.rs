@@ -183,3 +183,47 @@ fn textured_objects_look_the_same_after_a_translation_of_20() {
         near.pixels().len()
     );
 }
+
+/// Honeycomb faces each carry the image in their own disc, centred on the
+/// face: from the centre of `{4,3,5}`'s base cube the face ahead shows the
+/// image's middle (red) at its centre, and so does the face two cubes on,
+/// seen through it along the axis; towards a corner of the face ahead the
+/// image's rim (white) shows.
+#[test]
+fn honeycomb_faces_carry_the_image_on_each_face() {
+    let dir = tempfile::tempdir().unwrap();
+    let img = image::RgbImage::from_fn(64, 64, |i, j| {
+        let (x, y) = (f64::from(i) - 31.5, f64::from(j) - 31.5);
+        image::Rgb(if x.hypot(y) < 8.0 {
+            [255, 0, 0]
+        } else {
+            [255, 255, 255]
+        })
+    });
+    img.save(dir.path().join("dot.png")).unwrap();
+    let pixel = |to: &str, trans: f64| {
+        let source = format!(
+            "Globals {{ resolution = (5, 5); to = {to}; fov = 1; ambient = (1, 1, 1); \
+             background = (0, 0, 0); recursion_depth = 4; }}\n\
+             BRDFs {{ ambient = (1, 1, 1), diffuse = (0, 0, 0), specular = (0, 0, 0), \
+             trans = {trans}, texture = \"dot.png\"; }}\n\
+             Objects {{ Honeycomb {{4,3,5}}, #1, faces = #1; }}\n"
+        );
+        let image = hrender::render(
+            &compile_in(dir.path(), &source),
+            &RenderOptions::default(),
+            &|_| {},
+        )
+        .unwrap()
+        .image;
+        image.get(2, 2)
+    };
+    let ahead = pixel("(0, 0, 0.3)", 0.0);
+    assert!(ahead[0] > 0.99 && ahead[1] < 0.01, "{ahead:?}");
+    // Through a clear first face (trans 1 would pass all; 0.5 mixes the
+    // two faces' centres, both red).
+    let through = pixel("(0, 0, 0.3)", 0.5);
+    assert!(through[1] < 0.01 && through[0] > 0.5, "{through:?}");
+    let corner = pixel("(0.25, 0.25, 0.3)", 0.0);
+    assert!(corner[1] > 0.99, "{corner:?}");
+}

@@ -47,5 +47,5 @@ pub use schlafli::{Schlafli, SchlafliError};
 pub use simplex::CoxeterSimplex;
 pub use style::{CellColouring, HoneycombPart, HoneycombStyle, decode_honeycomb_part};
 pub use uniform::Rings;
-pub use walk::{DEFAULT_HORIZON, MAX_WALK_STEPS, RANK_CLASSES, RegularHoneycomb};
+pub use walk::{DEFAULT_HORIZON, FaceFrame, MAX_WALK_STEPS, RANK_CLASSES, RegularHoneycomb};
 pub use walk_record::{WalkStats, WalkStep};

@@ -115,7 +115,10 @@ use super::uniform::Rings;
 use super::view_horizon::ViewHorizon;
 use super::walk_record::{WalkStats, WalkStep};
 
+mod faces;
 mod settings;
+
+pub use faces::FaceFrame;
 
 /// The cell classes of [`RegularHoneycomb::with_rank_classes`]: far more
 /// than any rank within reach (within distance 36 of the base cell the

@@ -1,0 +1,17 @@
+//! Which of a honeycomb's horizon materials a horizon hit takes
+//! (`horizon_fill.rs` makes them): the one for the rest of the way from the
+//! hit to distance 12 from the eye, in steps of [`STEP`].
+
+use hgeom::{DEFAULT_HORIZON, Hit};
+
+/// The spacing of the lengths `Δ` the average is kept for.
+pub const STEP: f64 = 0.5;
+
+/// The index, among `buckets` materials for `Δ = 0, STEP, ...`, of the one a
+/// horizon hit takes.
+pub fn bucket_of(hit: &Hit, buckets: usize) -> usize {
+    // w = cosh of the distance from the eye (the frame's origin).
+    let from_eye = hit.point.w.max(1.0).acosh();
+    let rest = (DEFAULT_HORIZON - from_eye).max(0.0);
+    ((rest / STEP).round() as usize).min(buckets.saturating_sub(1))
+}
