@@ -24,7 +24,7 @@
 use hgeom::glam::DVec3;
 use hgeom::ray::ball_direction;
 use hgeom::{CellColouring, HoneycombPart, Ray, decode_honeycomb_part, lorentz};
-use hscene_ir::{Scene, Shape};
+use hscene_ir::Scene;
 
 use crate::error::RenderError;
 use crate::nets::Sample;
@@ -118,8 +118,8 @@ pub fn render_aovs(
     let scene = if which.contains(&Aov::Cell) {
         let mut s = scene.clone();
         for o in &mut s.objects {
-            if let Shape::Honeycomb(h) = &mut o.shape {
-                h.surface = h.surface.clone().with_rank_classes();
+            if let Some(ranked) = o.shape.with_walk(|w| w.with_rank_classes()) {
+                o.shape = ranked;
             }
         }
         ranked = s;
@@ -194,7 +194,7 @@ pub fn render_aovs(
 /// A honeycomb hit's rank and colour class (module docs), `NaN` for
 /// anything else.
 fn cell_of(scene: &Scene, index: usize, part: u32) -> (f64, f64) {
-    let Some(Shape::Honeycomb(h)) = scene.objects.get(index).map(|o| &o.shape) else {
+    let Some(h) = scene.objects.get(index).and_then(|o| o.shape.honeycomb()) else {
         return (f64::NAN, f64::NAN);
     };
     let (kind, class) = decode_honeycomb_part(part);

@@ -42,9 +42,9 @@
 //! unit length round a sphere of radius `r`, `W (1 - |x|²) / 4` at the disc
 //! point `x` (the Poincaré metric `2|dx| / (1 - |x|²)`).
 
-use hgeom::glam::{DMat3, DMat4, DVec3, DVec4};
-use hgeom::{Hit, Isometry, Point, Vertex, lorentz};
-use hscene_ir::{ImageTexture, Rgb, Shape, equirectangular};
+use hgeom::glam::{DMat4, DVec3};
+use hgeom::{Hit, Isometry};
+use hscene_ir::{ImageTexture, Rgb, Shape, TextureChart, disc_frame, equirectangular};
 
 /// How an object's image texture is laid on it.
 #[derive(Clone, Debug)]
@@ -82,69 +82,13 @@ impl TextureMapping {
         to_local: &Isometry,
         pixel_angle: f64,
     ) -> Option<TextureMapping> {
-        let local = shape.transformed(&placement.inverse());
-        let (frame, kind) = match &local {
-            Shape::Sphere(s) => (
-                Isometry::transvection_from_origin(s.center()).inverse(),
-                MapKind::Sphere(s.radius().sinh()),
-            ),
-            Shape::Plane(p) => {
-                let n = p.normal();
-                let o = DVec4::W;
-                let foot = o - lorentz::dot(o, n) * n;
-                (disc_frame(foot, n)?, MapKind::Disc)
-            }
-            Shape::Polygon(p) => {
-                let klein: Vec<DVec3> = p
-                    .vertices()
-                    .iter()
-                    .map(|v| match v {
-                        Vertex::Interior(q) => {
-                            let x = q.to_hyperboloid();
-                            x.truncate() / x.w
-                        }
-                        Vertex::Ideal(i) => i.coords(),
-                    })
-                    .collect();
-                let mean = klein.iter().sum::<DVec3>() / klein.len().max(1) as f64;
-                (
-                    disc_frame(mean.extend(1.0), p.plane().normal())?,
-                    MapKind::Disc,
-                )
-            }
-            Shape::Horosphere(h) => {
-                let xi = h.center().coords();
-                let (_, r) = h.euclidean();
-                let near = Point::from_coords(xi * (1.0 - 2.0 * r)).ok()?;
-                let to_origin = Isometry::transvection_from_origin(near).inverse();
-                let y = xi;
-                let x = across(y, [DVec3::X, DVec3::Z])?;
-                (
-                    rotation(x, y, x.cross(y)).compose(&to_origin),
-                    MapKind::Flat,
-                )
-            }
-            Shape::Honeycomb(h) => (
-                Isometry::IDENTITY,
-                MapKind::Faces(Box::new(h.surface.clone())),
-            ),
-            Shape::Mesh(m) => {
-                let vertices = m.vertices();
-                let klein = |i: u32| {
-                    let x = vertices[i as usize].to_hyperboloid();
-                    x.truncate() / x.w
-                };
-                let triangles = m
-                    .triangles()
-                    .iter()
-                    .map(|t| t.map(klein))
-                    .collect::<Vec<_>>();
-                (
-                    Isometry::IDENTITY,
-                    MapKind::Triangles(std::sync::Arc::new(triangles)),
-                )
-            }
-            _ => return None,
+        let chart = shape.transformed(&placement.inverse()).texture_chart()?;
+        let (frame, kind) = match chart {
+            TextureChart::Sphere { frame, sinh_radius } => (frame, MapKind::Sphere(sinh_radius)),
+            TextureChart::Disc { frame } => (frame, MapKind::Disc),
+            TextureChart::Flat { frame } => (frame, MapKind::Flat),
+            TextureChart::Triangles(t) => (Isometry::IDENTITY, MapKind::Triangles(t)),
+            TextureChart::Faces(h) => (Isometry::IDENTITY, MapKind::Faces(h)),
         };
         Some(TextureMapping {
             to_frame: frame.compose(to_local).to_lorentz(),
@@ -225,65 +169,11 @@ impl TextureMapping {
     }
 }
 
-/// The isometry that takes the plane of Lorentz normal `n` to the plane
-/// `z = 0` through the origin, its point `centre` (any positive multiple of
-/// a point of the plane, or of the Klein model's `(k, 1)`) to the origin;
-/// `None` for a degenerate plane.
-fn disc_frame(centre: DVec4, n: DVec4) -> Option<Isometry> {
-    let norm2 = -lorentz::dot(centre, centre);
-    if !(norm2 > 0.0 && norm2.is_finite()) {
-        return None;
-    }
-    let c = centre / norm2.sqrt();
-    let to_origin = Isometry::transvection_from_origin(Point::from_hyperboloid(c)?).inverse();
-    let v = (to_origin.to_lorentz() * n).truncate();
-    let z = v.try_normalize()?;
-    let x = across(z, [DVec3::X, DVec3::Y])?;
-    Some(rotation(x, z.cross(x), z).compose(&to_origin))
-}
-
-/// The first of `candidates` with its part along the unit `axis` taken
-/// out, normalised: the frame's `x` axis, orthogonal to `axis`.
-fn across(axis: DVec3, candidates: [DVec3; 2]) -> Option<DVec3> {
-    candidates
-        .into_iter()
-        .map(|a| a - a.dot(axis) * axis)
-        .find(|a| a.length() > 1e-6)
-        .map(DVec3::normalize)
-}
-
-/// The rotation taking the orthonormal `x`, `y`, `z` to the coordinate
-/// axes.
-fn rotation(x: DVec3, y: DVec3, z: DVec3) -> Isometry {
-    Isometry::orthogonal_unchecked(DMat3::from_cols(x, y, z).transpose())
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use hgeom::HPlane;
-
-    /// A plane's frame puts its foot at the origin and its points on
-    /// `z = 0`.
-    #[test]
-    fn disc_frames_flatten_their_plane() {
-        let a = Vertex::Interior(Point::new(0.1, 0.5, 0.2).unwrap());
-        let b = Vertex::Interior(Point::new(-0.3, 0.4, 0.1).unwrap());
-        let c = Vertex::Interior(Point::new(0.2, 0.45, -0.4).unwrap());
-        let plane = HPlane::through(&a, &b, &c).unwrap();
-        let n = plane.normal();
-        let foot = DVec4::W - lorentz::dot(DVec4::W, n) * n;
-        let frame = disc_frame(foot, n).unwrap().to_lorentz();
-        for v in [a, b, c] {
-            let Vertex::Interior(p) = v else {
-                unreachable!()
-            };
-            let q = frame * p.to_hyperboloid();
-            assert!(q.z.abs() < 1e-12, "{q}");
-        }
-        let f = frame * (foot / (-lorentz::dot(foot, foot)).sqrt());
-        assert!((f - DVec4::W).length() < 1e-12, "{f}");
-    }
+    use hgeom::glam::DVec4;
+    use hgeom::{Point, lorentz};
 
     /// A horosphere's frame takes it to `w - y = 1`, and its flat
     /// coordinates `(s, t)` measure it: points of the horosphere met by

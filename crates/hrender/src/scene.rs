@@ -133,10 +133,12 @@ impl PreparedObject {
         }
         // A honeycomb's walk reports where its horizon stops a ray, which
         // is drawn in the honeycomb's average appearance (`horizon_fill.rs`).
-        if let ir::Shape::Honeycomb(h) = moved.as_ref().unwrap_or(shape) {
-            let mut h = h.clone();
-            h.surface = h.surface.with_horizon_hits(true);
-            moved = Some(ir::Shape::Honeycomb(h));
+        if let Some(hits) = moved
+            .as_ref()
+            .unwrap_or(shape)
+            .with_walk(|w| w.with_horizon_hits(true))
+        {
+            moved = Some(hits);
         }
         let ball = |s: &ir::Shape| {
             s.sphere()

@@ -16,6 +16,7 @@
 
 mod animation;
 mod camera;
+mod chart;
 mod color;
 mod frame;
 mod honeycomb;
@@ -32,6 +33,7 @@ pub mod view;
 
 pub use animation::{Animation, FrameError, Motion, Track, TrackBase, compose, frame_time};
 pub use camera::{Camera, Net, Resolution, Window, move_camera};
+pub use chart::{TextureChart, disc_frame};
 pub use color::Rgb;
 pub use honeycomb::{Honeycomb, PartMaterials};
 pub use integrator::IntegratorKind;

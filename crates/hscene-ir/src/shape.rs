@@ -420,6 +420,29 @@ fn rod_encloses_origin(rod: &Rod, tanh_r: f64, to_origin: &Isometry) -> bool {
     rod.transformed(to_origin).contains_hyperboloid(DVec4::W)
 }
 
+impl Shape {
+    /// The honeycomb, if the shape is one.
+    pub fn honeycomb(&self) -> Option<&Honeycomb> {
+        match self {
+            Shape::Honeycomb(h) => Some(h),
+            _ => None,
+        }
+    }
+
+    /// For a honeycomb, the same honeycomb with `change` made to its walk
+    /// (horizon hits, rank classes); `None` for any other shape.
+    pub fn with_walk(
+        &self,
+        change: impl FnOnce(hgeom::RegularHoneycomb) -> hgeom::RegularHoneycomb,
+    ) -> Option<Shape> {
+        let h = self.honeycomb()?;
+        Some(Shape::Honeycomb(Box::new(Honeycomb {
+            surface: change(h.surface.clone()),
+            materials: h.materials.clone(),
+        })))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
