@@ -110,6 +110,36 @@ pub enum GeomError {
         /// The number of cells round an edge.
         r: u32,
     },
+    /// A fundamental domain that is not one: infinite volume, or faces
+    /// that do not close up.
+    #[error("not a fundamental domain: {0}")]
+    BadDomain(String),
+    /// A face pairing that does not map its face onto its partner, or
+    /// whose partner's pairing is not its inverse.
+    #[error("the pairing of face {face} {problem}")]
+    BadPairing {
+        /// The face (1-based).
+        face: usize,
+        /// What is wrong, in words.
+        problem: String,
+    },
+    /// The dihedral angles around an edge cycle do not close up (a
+    /// manifold needs 2π and the identity; a mirror needs the Coxeter
+    /// relation).
+    #[error("the edge cycle of faces {faces:?} has angle sum {degrees} degrees and does not close")]
+    EdgeCycle {
+        /// The faces crossed around the cycle (1-based).
+        faces: Vec<usize>,
+        /// The sum of its dihedral angles, in degrees.
+        degrees: f64,
+    },
+    /// More copies of an object or light than the limit would be needed
+    /// (an object too large for the domain, or one deep in a cusp).
+    #[error("more than {limit} copies of it would be needed to show it whole in the space")]
+    TooManyCopies {
+        /// The limit.
+        limit: usize,
+    },
     /// A mesh triangle refers to a vertex that does not exist.
     #[error("triangle {triangle} refers to vertex {index}, but the mesh has {vertices} vertices")]
     MeshIndexOutOfRange {

@@ -193,6 +193,57 @@ impl Isometry {
         Ok(Isometry { a: translation, q })
     }
 
+    /// The isometry whose Lorentz matrix is `m` (a future-preserving
+    /// matrix with `mᵀ J m = J`, `J = diag(1,1,1,-1)`): the translation part
+    /// is the image of the origin, the linear part what is left after
+    /// undoing the pure translation to it, orthonormalised (Gram-Schmidt,
+    /// its handedness kept) so that a matrix built from rounded products
+    /// still gives an exact isometry.
+    ///
+    /// Errors: [`GeomError::NotFinite`] for a matrix that is not finite or
+    /// does not send the origin into the ball; [`GeomError::NotOrthogonal`]
+    /// when the linear part is off O(3) by more than 1e-9 (not a Lorentz
+    /// matrix).
+    ///
+    /// # Accuracy
+    ///
+    /// The inverse of [`Isometry::to_lorentz`] to rounding for translation
+    /// parts near the origin (`from_lorentz_inverts_to_lorentz`); a matrix
+    /// good to `ε` gives an isometry good to about `ε cosh² d` at distance
+    /// `d` of its translation.
+    pub fn from_lorentz(m: DMat4) -> Result<Isometry, GeomError> {
+        if !m.is_finite() {
+            return Err(GeomError::NotFinite);
+        }
+        let a = Point::from_hyperboloid(m.w_axis).ok_or(GeomError::NotFinite)?;
+        let boost = Isometry::transvection_from_origin(a).to_lorentz();
+        // The inverse of a Lorentz matrix is J Lᵀ J.
+        let j = DMat4::from_diagonal(glam::DVec4::new(1.0, 1.0, 1.0, -1.0));
+        let rest = j * boost.transpose() * j * m;
+        let q = DMat3::from_cols(
+            rest.x_axis.truncate(),
+            rest.y_axis.truncate(),
+            rest.z_axis.truncate(),
+        );
+        let d = q * q.transpose() - DMat3::IDENTITY;
+        let defect = d
+            .x_axis
+            .abs()
+            .max(d.y_axis.abs())
+            .max(d.z_axis.abs())
+            .max_element();
+        if !(defect <= 1e-9) {
+            return Err(GeomError::NotOrthogonal { defect });
+        }
+        let x = q.x_axis.normalize();
+        let y = (q.y_axis - x * x.dot(q.y_axis)).normalize();
+        let z = x.cross(y) * q.z_axis.dot(x.cross(y)).signum();
+        Ok(Isometry {
+            a,
+            q: DMat3::from_cols(x, y, z),
+        })
+    }
+
     /// [`Isometry::from_parts`] unchecked, for the constructors elsewhere in
     /// the crate that compute an orthogonal `linear` themselves (the
     /// reflection in a plane).
@@ -413,6 +464,23 @@ mod tests {
 
     fn p(x: f64, y: f64, z: f64) -> Point {
         Point::from_coords(DVec3::new(x, y, z)).unwrap()
+    }
+
+    #[test]
+    fn from_lorentz_inverts_to_lorentz() {
+        let f = Isometry::translation(&Segment::new(p(0.1, 0.2, 0.3), p(-0.4, 0.1, 0.0)).unwrap())
+            .unwrap()
+            .compose(&Isometry::orthogonal_unchecked(DMat3::from_axis_angle(
+                DVec3::new(1.0, 2.0, 2.0).normalize(),
+                0.7,
+            )));
+        for g in [f, f.compose(&Isometry::orthogonal_unchecked(DMat3::from_diagonal(DVec3::new(1.0, 1.0, -1.0))))] {
+            let back = Isometry::from_lorentz(g.to_lorentz()).unwrap();
+            assert_eq!(back.preserves_orientation(), g.preserves_orientation());
+            for x in [p(0.3, -0.2, 0.5), p(-0.7, 0.1, 0.2)] {
+                assert!(distance(&back.apply(&x), &g.apply(&x)) < 1e-13);
+            }
+        }
     }
 
     #[test]

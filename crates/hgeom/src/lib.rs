@@ -73,6 +73,7 @@ mod segment;
 #[cfg(feature = "serde")]
 mod serde_impls;
 mod shape;
+mod space;
 mod sphere;
 #[cfg(test)]
 mod test_rng;
@@ -108,6 +109,10 @@ pub use ray::{Hit, Ray};
 pub use rod::Rod;
 pub use segment::Segment;
 pub use shape::{Shape, Solid};
+pub use space::{
+    Crossing, DomainEdge, DomainPolyhedron, EdgeCycle, MAX_COPIES, QuotientSpace, SPACE_NAMES,
+    SpaceKind,
+};
 pub use sphere::HSphere;
 
 pub use glam;

@@ -53,7 +53,22 @@ impl PreparedScene {
     /// The product over the absorbing objects of what they let through of
     /// the segment `(t_min, t_max)` of `ray` (white without any):
     /// [`absorbed`] over the length of the segment inside each.
+    /// In a quotient space the segment is followed across the domain's
+    /// faces.
     pub fn absorption_along(&self, ray: &Ray, t_min: f64, t_max: f64) -> Rgb {
+        let Some(space) = &self.space else {
+            return self.absorption_in_domain(ray, t_min, t_max);
+        };
+        let mut left = Rgb::new(1.0, 1.0, 1.0);
+        space.segments(ray, t_min, t_max, |piece, lo, hi| {
+            left = left.tint(self.absorption_in_domain(piece, lo, hi));
+            true
+        });
+        left
+    }
+
+    /// [`PreparedScene::absorption_along`] along one geodesic segment.
+    fn absorption_in_domain(&self, ray: &Ray, t_min: f64, t_max: f64) -> Rgb {
         let mut left = Rgb::new(1.0, 1.0, 1.0);
         for &k in self.absorbing() {
             let o = &self.objects[k];

@@ -147,9 +147,13 @@ pub fn render_aovs(
             let sy = 0.5 - (f64::from(j) + 0.5) / h;
             let found = match picture.pixel_net.sample(sx, sy) {
                 Sample::Ray(dir) => {
-                    let ray = Ray::from_origin_unchecked(dir);
-                    match picture.prepared.nearest(&ray, T_MIN) {
-                        Nearest::Hit(hit, index) => Some((ray, hit, index)),
+                    let traced = picture
+                        .prepared
+                        .trace(&Ray::from_origin_unchecked(dir), T_MIN);
+                    match traced.nearest {
+                        Nearest::Hit(hit, index) => {
+                            Some((traced.ray, traced.travelled, hit, index))
+                        }
                         _ => None,
                     }
                 }
@@ -161,13 +165,13 @@ pub fn render_aovs(
                     c[k] = v as f32;
                 }
             };
-            let Some((ray, hit, index)) = found else {
+            let Some((ray, travelled, hit, index)) = found else {
                 put("Z", f64::INFINITY);
                 put("cell.rank", f64::NAN);
                 put("cell.class", f64::NAN);
                 continue;
             };
-            put("Z", hit.t);
+            put("Z", travelled + hit.t);
             let d = ray.tangent_at(hit.t);
             let facing = if lorentz::dot(d, hit.shading) > 0.0 {
                 -hit.shading

@@ -9,6 +9,7 @@ use hscene_ir::view::{CanonicalFrame, PixelFootprint};
 use crate::error::RenderError;
 use crate::horizon_fill::fill_horizons;
 use crate::scene::PreparedScene;
+use crate::space_prepare::unfold;
 
 impl PreparedScene {
     /// Move every object and light by `to_canonical`, and build the
@@ -50,6 +51,15 @@ fn prepared(
     stages: &[Isometry],
     footprint: Option<&PixelFootprint>,
 ) -> Result<PreparedScene, RenderError> {
+    if let Some(space) = &scene.settings.space {
+        // In a quotient space the picture-wide horizon is the walk's own
+        // (`space_prepare.rs`); honeycombs there are the domain's edges,
+        // walked piece by piece, with nothing beyond to fill.
+        let unfolded = unfold(scene, space, stages, footprint)?;
+        let mut prepared = PreparedScene::staged(&unfolded.scene, &unfolded.stages, None)?;
+        prepared.space = Some(unfolded.space);
+        return Ok(prepared);
+    }
     let mut prepared = PreparedScene::staged(scene, stages, footprint)?;
     fill_horizons(&mut prepared, scene, stages);
     Ok(prepared)

@@ -280,6 +280,9 @@ pub struct PreparedScene {
     /// The sky, and the map from the canonical frame back to the scene's
     /// (the sky is fixed in the scene, not in the camera).
     sky: Option<(Sky, Isometry)>,
+    /// The quotient space the scene is in, in the canonical frame
+    /// (`space_walk.rs`); `None` in H³.
+    pub(crate) space: Option<crate::space_domain::PreparedSpace>,
 }
 
 impl PreparedScene {
@@ -445,6 +448,7 @@ impl PreparedScene {
                     .fold(Isometry::IDENTITY, |acc, stage| stage.compose(&acc));
                 (sky, to_canonical.inverse())
             }),
+            space: None,
         })
     }
 
@@ -458,14 +462,21 @@ impl PreparedScene {
         Some(sky.radiance(to_world.apply_ideal(&end).coords()))
     }
 
-    /// The nearest hit beyond `t_min`.
+    /// The nearest hit beyond `t_min` along the geodesic of `ray` in H³
+    /// (in a quotient space, the nearest within the domain's tiles near
+    /// the domain: [`PreparedScene::trace`] follows rays across faces).
     pub fn nearest(&self, ray: &Ray, t_min: f64) -> Nearest {
+        self.nearest_within(ray, t_min, f64::INFINITY)
+    }
+
+    /// The nearest hit in `(t_min, t_max)`.
+    pub(crate) fn nearest_within(&self, ray: &Ray, t_min: f64, t_max: f64) -> Nearest {
         // A NaN ray would miss every exact test and every bound: catch it
         // here, where it is still a failure and not yet a "miss".
         if !(ray.origin.is_finite() && ray.dir.is_finite()) {
             return Nearest::Failure;
         }
-        let found = self.accel.nearest(ray, t_min, f64::INFINITY, |i, lo, hi| {
+        let found = self.accel.nearest(ray, t_min, t_max, |i, lo, hi| {
             let r = self.surfaces[i as usize];
             self.objects[r.object as usize]
                 .surfaces
@@ -491,8 +502,31 @@ impl PreparedScene {
     /// hierarchy culls with. `pass` is the integrator's policy: Whitted's
     /// lets a shadow ray through glass by its transmission; `|_| 0.0` asks
     /// only whether the segment is clear.
+    /// In a quotient space the segment is followed across the domain's
+    /// faces (`space_domain.rs`).
     #[inline]
     pub fn transmittance<P: Fn(&Material) -> f64>(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+        tanh_t_max: f64,
+        pass: P,
+    ) -> f64 {
+        if let Some(space) = &self.space {
+            let mut s = 1.0;
+            space.segments(ray, t_min, t_max, |piece, lo, hi| {
+                s *= self.transmittance_in_domain(piece, lo, hi, hi.tanh(), &pass);
+                s > 0.0
+            });
+            return s;
+        }
+        self.transmittance_in_domain(ray, t_min, t_max, tanh_t_max, pass)
+    }
+
+    /// [`PreparedScene::transmittance`] along one geodesic segment.
+    #[inline]
+    fn transmittance_in_domain<P: Fn(&Material) -> f64>(
         &self,
         ray: &Ray,
         t_min: f64,
@@ -586,7 +620,7 @@ fn textured(scene: &Scene, o: &ir::Object) -> bool {
 }
 
 /// True for the `part` of a honeycomb's horizon hit.
-fn is_horizon(part: u32) -> bool {
+pub(crate) fn is_horizon(part: u32) -> bool {
     hgeom::decode_honeycomb_part(part).0 == hgeom::HoneycombPart::Horizon
 }
 

@@ -28,6 +28,7 @@ mod object;
 mod scene;
 mod shape;
 mod sky;
+mod space;
 mod texture_image;
 pub mod view;
 
@@ -43,4 +44,7 @@ pub use object::{Object, move_object};
 pub use scene::{Fog, Light, PointRecord, Scene, Settings};
 pub use shape::{BoxedSurface, MESH_TRIANGLES_PER_PRIMITIVE, Shape, Surfaces, mesh_budget_cost};
 pub use sky::{Sky, equirectangular};
+pub use space::{
+    DEFAULT_LIGHT_REACH, DomainEdges, MAX_LIGHT_IMAGES, MAX_LIGHT_REACH, MAX_SPACE_CROSSINGS, Space,
+};
 pub use texture_image::{MAX_TEXTURE_PIXELS, TextureImage, TextureImageError, srgb_to_linear};

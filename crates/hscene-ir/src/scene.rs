@@ -48,6 +48,8 @@ pub struct Settings {
     /// Depth of field (`aperture = A; focus = D;`): a thin lens at the eye;
     /// `None`: a pinhole.
     pub lens: Option<Lens>,
+    /// The space the scene is in (`space = NAME;`); `None`: H³.
+    pub space: Option<crate::space::Space>,
 }
 
 /// Fog: the radiance carried along a ray segment of hyperbolic length `s`

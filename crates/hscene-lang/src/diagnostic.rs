@@ -139,6 +139,7 @@ codes! {
     ImpossibleFigure = "HSC0311", Error, "impossible figure";
     NotAnimatable = "HSC0312", Error, "transformation cannot be animated";
     NotHyperbolic = "HSC0313", Error, "symbol of no hyperbolic honeycomb";
+    NotInSpace = "HSC0314", Error, "cannot be placed in a space";
     // Settings.
     ZeroResolution = "HSC0401", Error, "zero resolution";
     UnknownNetType = "HSC0402", Error, "unknown net type";
@@ -163,6 +164,7 @@ codes! {
     AmbientUnderPath = "HSC1010", Warning, "ambient light under the path integrator";
     SqueezedDisk = "HSC1011", Warning, "great disk squeezed into the middle";
     UpRoll = "HSC1012", Warning, "up point written as a direction";
+    OutsideDomain = "HSC1013", Warning, "outside the fundamental domain";
 }
 
 impl Code {
@@ -349,7 +351,7 @@ mod tests {
     #[test]
     fn code_table_is_consistent() {
         assert_eq!(Code::ALL.len(), CODES.len());
-        assert_eq!(Code::ALL.len(), 52);
+        assert_eq!(Code::ALL.len(), 54);
         let mut strings = HashSet::new();
         for &(code, s, sev, title) in CODES {
             assert_eq!(code.as_str(), s);

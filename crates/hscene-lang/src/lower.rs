@@ -16,6 +16,7 @@ mod camera;
 mod globals;
 mod image_textures;
 mod lens_globals;
+mod space_globals;
 mod light_strength;
 mod lights;
 mod lints;
@@ -84,6 +85,8 @@ struct Lowerer<'d> {
     camera_parts: camera::CameraParts,
     view: view_globals::ViewParts,
     lens: lens_globals::LensParts,
+    /// The space keys (`space_globals.rs`).
+    space: space_globals::SpaceParts,
     /// The images read so far, by path: a file named twice is read once.
     images: std::collections::HashMap<std::path::PathBuf, std::sync::Arc<hscene_ir::TextureImage>>,
     /// A point reference failed (undefined, or something else where a point
@@ -149,6 +152,7 @@ pub(crate) fn lower(
         camera_parts: camera::CameraParts::default(),
         view: view_globals::ViewParts::default(),
         lens: lens_globals::LensParts::default(),
+        space: space_globals::SpaceParts::default(),
         images: std::collections::HashMap::new(),
         point_ref_failed: file.incomplete,
         primitives: 0,
@@ -186,6 +190,7 @@ pub(crate) fn lower(
     lw.apply_moves(&mut camera);
     lw.settle_view(camera.as_ref());
     lw.settle_lens(camera.as_ref());
+    lw.settle_space();
     if let Some(camera) = &camera {
         lw.lint_scene(camera);
         lw.lint_outside_view(camera);

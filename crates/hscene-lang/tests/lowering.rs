@@ -289,6 +289,7 @@ fn appendix_a_compiles_with_one_warning() {
             integrator: hscene_lang::ir::IntegratorKind::Whitted,
             sky: None,
             lens: None,
+            space: None,
         }
     );
     assert_eq!(scene.camera.eye, Point::ORIGIN);
@@ -563,6 +564,7 @@ fn empty_file_gets_the_documented_defaults() {
                 integrator: hscene_lang::ir::IntegratorKind::Whitted,
                 sky: None,
                 lens: None,
+                space: None,
             }
         );
         assert_eq!(

@@ -112,6 +112,7 @@ pub fn settings(net: Net, size: u32, window: f64) -> Settings {
         integrator: Default::default(),
         sky: None,
         lens: None,
+        space: None,
     }
 }
 

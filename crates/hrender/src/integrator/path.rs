@@ -97,7 +97,12 @@ impl<'s> PathTracer<'s> {
             }
         }
         let mut faces = Vec::new();
-        for (index, object) in scene.objects.iter().enumerate() {
+        // In a quotient space a path that meets a glowing object may have
+        // crossed faces, and light sampling cannot tell which image it
+        // met: such objects are found by the paths' own bounces alone
+        // (unbiased, noisier; `docs/manifolds.md`).
+        let sampled = if scene.in_space() { &[][..] } else { &scene.objects[..] };
+        for (index, object) in sampled.iter().enumerate() {
             let m = &scene.materials[object.material];
             if !object.faces.is_empty() && !m.emission.is_black() {
                 faces.push(FaceEmitter {
@@ -366,7 +371,12 @@ impl Integrator for PathTracer<'_> {
         let mut smooth = 0;
         for bounce in 0..MAX_PATH_LENGTH {
             stats.rays += 1;
-            let found = match self.scene.nearest(&ray, T_MIN) {
+            // In a quotient space the ray comes back carried into the
+            // domain, `travelled` along it.
+            let traced = self.scene.trace(&ray, T_MIN);
+            ray = traced.ray;
+            let travelled = traced.travelled;
+            let found = match traced.nearest {
                 Nearest::Failure => {
                     stats.failures += 1;
                     return self.scene.background;
@@ -385,7 +395,7 @@ impl Integrator for PathTracer<'_> {
                 radiance += beta.tint(self.leaving(&ray));
                 break;
             };
-            beta = self.fogged(&mut radiance, beta, hit.t);
+            beta = self.fogged(&mut radiance, beta, travelled + hit.t);
             let d = ray.tangent_at(hit.t);
             if !(is_unit(d) && is_unit(hit.normal) && is_unit(hit.shading)) {
                 stats.failures += 1;
@@ -405,7 +415,7 @@ impl Integrator for PathTracer<'_> {
             // leaves by this hit: absorbing glass filters it.
             let sheet = object.parts.is_some();
             if !sheet && !entering && !m.absorption.is_black() {
-                beta = beta.tint(absorbed(m, hit.t));
+                beta = beta.tint(absorbed(m, travelled + hit.t));
             }
             let n = if entering { hit.shading } else { -hit.shading };
             let p = hit.point;

@@ -98,7 +98,10 @@ impl<'s> Whitted<'s> {
         stats: &mut TraceStats,
     ) -> Rgb {
         stats.rays += 1;
-        let found = self.scene.nearest(ray, T_MIN);
+        // In a quotient space the ray comes back carried into the domain,
+        // `travelled` along: everything after is on the carried ray.
+        let traced = self.scene.trace(ray, T_MIN);
+        let (found, ray, travelled) = (traced.nearest, &traced.ray, traced.travelled);
         // An area light nearer than what the ray meets is what it sees.
         if !self.visible.is_empty() {
             let t_max = match &found {
@@ -232,10 +235,10 @@ impl<'s> Whitted<'s> {
         // A ray leaving an absorbing object travelled `hit.t` inside it:
         // what it brings back is what is left after that much glass.
         if !sheet && !entering && !m.absorption.is_black() {
-            color = color.tint(absorbed(m, hit.t));
+            color = color.tint(absorbed(m, travelled + hit.t));
         }
         match &self.scene.fog {
-            Some(fog) => through_fog(fog, color, hit.t),
+            Some(fog) => through_fog(fog, color, travelled + hit.t),
             None => color,
         }
     }

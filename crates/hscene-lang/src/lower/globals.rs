@@ -4,6 +4,7 @@
 use super::Lowerer;
 use super::camera::CameraKey;
 use super::lens_globals::LensKey;
+use super::space_globals::SpaceKey;
 use super::table::{self, Row, SeenKeys, unknown_word, words};
 use super::view_globals::ViewKey;
 use crate::diagnostic::{Code, Diagnostic};
@@ -31,6 +32,7 @@ enum Global {
     Camera(CameraKey),
     View(ViewKey),
     Lens(LensKey),
+    Space(SpaceKey),
 }
 
 /// One key of `Globals`.
@@ -81,6 +83,9 @@ const KEYS: &[GlobalKey] = &[
     key("fog_distance", Global::View(ViewKey::FogDistance)),
     key("aperture", Global::Lens(LensKey::Aperture)),
     key("focus", Global::Lens(LensKey::Focus)),
+    key("space", Global::Space(SpaceKey::Space)),
+    key("domain", Global::Space(SpaceKey::Domain)),
+    key("light_reach", Global::Space(SpaceKey::LightReach)),
 ];
 
 /// Every global key, aliases included, in the order of [`KEYS`].
@@ -122,6 +127,7 @@ pub(super) fn default_settings() -> Settings {
         integrator: IntegratorKind::Whitted,
         sky: None,
         lens: None,
+        space: None,
     }
 }
 
@@ -129,7 +135,25 @@ impl Lowerer<'_> {
     pub(super) fn globals_section(&mut self, section: &Section) {
         let mut seen = SeenKeys::default();
         for st in &section.statements {
-            for clause in &st.clauses {
+            let mut clauses = st.clauses.iter().peekable();
+            while let Some(clause) = clauses.next() {
+                // `domain = w, #M`: the material is the clause after it.
+                if let Clause::Assign { key, value, span } = clause
+                    && table::find(KEYS, &key.text).map(|k| k.sets)
+                        == Some(Global::Space(SpaceKey::Domain))
+                {
+                    if let Some(twice) = seen.again(key) {
+                        self.report(twice);
+                    }
+                    let material = clauses
+                        .next_if(|c| matches!(c, Clause::Value(_)))
+                        .and_then(|c| match c {
+                            Clause::Value(v) => Some(v),
+                            _ => None,
+                        });
+                    self.domain_global(value, material, *span);
+                    continue;
+                }
                 let Clause::Assign { key, value, .. } = clause else {
                     self.report(
                         Diagnostic::new(Code::WrongType, clause.span(), "expected `key = value`")
@@ -211,6 +235,7 @@ impl Lowerer<'_> {
             Global::Integrator => self.integrator(value),
             Global::View(key) => self.view_global(key, value),
             Global::Lens(key) => self.lens_global(key, value),
+            Global::Space(key) => self.space_global(key, value),
             Global::Camera(key) => self.camera_global(key, value),
         }
     }

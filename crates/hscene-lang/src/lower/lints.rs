@@ -40,7 +40,11 @@ impl Lowerer<'_> {
                     )
                     .with_help("move the eye (`from`) or the object if this is not intended"),
                 );
-            } else if view.is_some_and(|v| group.iter().all(|(o, _)| eye.is_behind(&o.shape, v))) {
+            } else if self.settings.space.is_none()
+                && view.is_some_and(|v| group.iter().all(|(o, _)| eye.is_behind(&o.shape, v)))
+            {
+                // In a quotient space every object is seen again through
+                // the gluing, in front of the eye as well.
                 found.push(Diagnostic::new(
                     Code::ObjectBehindEye,
                     span,

@@ -25,7 +25,9 @@ impl Lowerer<'_> {
     /// Report each object statement whose objects all lie outside the view
     /// of net 0 (and not behind the eye, which the scene lint reports).
     pub(super) fn lint_outside_view(&mut self, camera: &Camera) {
-        if self.settings.net != Net::Euclidean {
+        // In a quotient space rays come back through the gluing: what is
+        // outside the window is seen in it again.
+        if self.settings.net != Net::Euclidean || self.settings.space.is_some() {
             return;
         }
         let Some(crate::view::CanonicalFrame {

@@ -29,7 +29,7 @@ const THE_FIFTEEN: &str = "the 15 regular honeycombs of hyperbolic space are {4,
 impl Lowerer<'_> {
     /// A Schläfli symbol of one of the 15 hyperbolic regular honeycombs;
     /// any other is an error on its span saying which geometry it is.
-    pub(super) fn schlafli(&mut self, value: &Value, usage: &str) -> Option<Schlafli> {
+    pub(in crate::lower) fn schlafli(&mut self, value: &Value, usage: &str) -> Option<Schlafli> {
         let Value::Symbol { entries, span } = value else {
             self.report(
                 Diagnostic::new(

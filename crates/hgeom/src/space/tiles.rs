@@ -1,0 +1,186 @@
+//! The tiles of the universal cover near the domain: which images of an
+//! object a ray in the domain can meet, which images of a light are near,
+//! and which element of the group brings a point into the domain.
+//!
+//! The tiles are the images `γ D` of the domain; the neighbour of tile
+//! `γ D` across its face `i` is `γ g_i⁻¹ D`. The searches here walk the
+//! elements `B = γ⁻¹` instead (the map that brings a tile back onto the
+//! domain), whose neighbours are `g_i B`, breadth first, and tell two
+//! elements apart by where they send a point inside the domain that no
+//! element but the identity fixes (the group acts freely on the interior
+//! of a manifold's domain and of a mirrored cell).
+
+use std::collections::{HashSet, VecDeque};
+
+use glam::DVec4;
+
+use crate::error::GeomError;
+use crate::isometry::Isometry;
+use crate::lorentz;
+use crate::point::Point;
+use crate::ray::Ray;
+
+use super::QuotientSpace;
+
+/// The most images of one object or light kept (`docs/manifolds.md`).
+pub const MAX_COPIES: usize = 512;
+
+/// The most tiles a search visits.
+const MAX_TILES: usize = 20_000;
+
+/// The most face crossings folding a point into the domain may take.
+const MAX_FOLD_CROSSINGS: usize = 100_000;
+
+impl QuotientSpace {
+    /// The elements `B` of the group (the identity first) such that `B`
+    /// of the h-ball about `centre` (a hyperboloid point) of `radius` may
+    /// meet the domain: a ray in the domain meets the object's images
+    /// only there. A tile is kept when the ball reaches the inner side of
+    /// each of its faces, a test that can only keep too many.
+    ///
+    /// Errors: [`GeomError::TooManyCopies`] past [`MAX_COPIES`].
+    pub fn copies_meeting(&self, centre: DVec4, radius: f64) -> Result<Vec<Isometry>, GeomError> {
+        let reach = radius.sinh();
+        let faces = self.domain.faces();
+        self.search(|b: &Isometry| {
+            let c = b.to_lorentz() * centre;
+            faces.iter().all(|n| lorentz::dot(c, *n) > -reach)
+        })
+    }
+
+    /// The images of `p` (a hyperboloid point) within `reach` of the
+    /// domain's centre, nearest first, at most `limit`. The search goes on
+    /// through tiles whose image of the centre is within `reach` plus
+    /// twice the domain's largest finite radius (all of them, for a closed
+    /// space; near a cusp, images beyond that margin may be missed).
+    pub fn images_within(&self, p: DVec4, reach: f64, limit: usize) -> Vec<DVec4> {
+        let centre = self.centre();
+        let margin = 2.0 * self.finite_radius();
+        let found = self.search_unbounded(
+            |b: &Isometry| lorentz::distance(b.to_lorentz() * centre, centre) <= reach + margin,
+            MAX_TILES,
+        );
+        let mut images: Vec<(f64, DVec4)> = found
+            .iter()
+            .map(|b| b.to_lorentz() * p)
+            .map(|x| (lorentz::distance(x, centre), x))
+            .filter(|(d, _)| *d <= reach)
+            .collect();
+        images.sort_by(|a, b| a.0.total_cmp(&b.0));
+        images.truncate(limit);
+        images.into_iter().map(|(_, x)| x).collect()
+    }
+
+    /// An element `B` with `B(p)` in the domain: the one met by carrying
+    /// the geodesic from the domain's centre to `p` across the faces.
+    ///
+    /// Errors: [`GeomError::TooManyCopies`] (with the crossing limit) for
+    /// a point so far or so deep in a cusp that more than 100,000 faces lie
+    /// between.
+    pub fn fold(&self, p: &Point) -> Result<Isometry, GeomError> {
+        let centre = self.centre();
+        let x = p.to_hyperboloid();
+        if self.contains(x, 0.0) {
+            return Ok(Isometry::IDENTITY);
+        }
+        let Some((dir, length)) = lorentz::direction_towards(centre, x) else {
+            return Ok(Isometry::IDENTITY);
+        };
+        let mut ray = Ray {
+            origin: centre,
+            dir,
+        };
+        let mut left = length;
+        let mut b = Isometry::IDENTITY;
+        for _ in 0..MAX_FOLD_CROSSINGS {
+            match self.exit(&ray) {
+                Some(c) if c.t < left => {
+                    ray = self.carry(&ray, c);
+                    left -= c.t;
+                    b = self.pairings[c.face].compose(&b);
+                }
+                _ => return Ok(b),
+            }
+        }
+        Err(GeomError::TooManyCopies {
+            limit: MAX_FOLD_CROSSINGS,
+        })
+    }
+
+    /// The largest distance from the centre to a finite vertex, or to a
+    /// face where every vertex is ideal.
+    fn finite_radius(&self) -> f64 {
+        let centre = self.centre();
+        let vertices = self
+            .domain
+            .vertices()
+            .iter()
+            .zip(self.domain.ideal())
+            .filter(|(_, ideal)| !**ideal)
+            .map(|(v, _)| lorentz::distance(*v, centre));
+        let faces = self
+            .domain
+            .faces()
+            .iter()
+            .map(|n| lorentz::dot(centre, *n).asinh());
+        vertices.chain(faces).fold(0.0, f64::max)
+    }
+
+    /// Breadth-first over the elements `g_i B` from the identity, keeping
+    /// those `keep` accepts (and going on only from them).
+    fn search(&self, keep: impl Fn(&Isometry) -> bool) -> Result<Vec<Isometry>, GeomError> {
+        let found = self.search_unbounded(keep, MAX_COPIES + 1);
+        if found.len() > MAX_COPIES {
+            return Err(GeomError::TooManyCopies { limit: MAX_COPIES });
+        }
+        Ok(found)
+    }
+
+    fn search_unbounded(&self, keep: impl Fn(&Isometry) -> bool, most: usize) -> Vec<Isometry> {
+        let witness = self.witness();
+        let key = |b: &Isometry| {
+            let w = b.to_lorentz() * witness;
+            let q = w.truncate() / (1.0 + w.w);
+            (
+                (q.x * 1e7).round() as i64,
+                (q.y * 1e7).round() as i64,
+                (q.z * 1e7).round() as i64,
+            )
+        };
+        let mut seen = HashSet::new();
+        let mut found = Vec::new();
+        let mut queue = VecDeque::from([Isometry::IDENTITY]);
+        seen.insert(key(&Isometry::IDENTITY));
+        while let Some(b) = queue.pop_front() {
+            found.push(b);
+            if found.len() >= most || seen.len() > MAX_TILES {
+                break;
+            }
+            for g in &self.pairings {
+                let next = g.compose(&b);
+                if seen.insert(key(&next)) && keep(&next) {
+                    queue.push_back(next);
+                }
+            }
+        }
+        found
+    }
+
+    /// A point inside the domain that no element but the identity fixes:
+    /// the centre nudged in a direction of no symmetry.
+    fn witness(&self) -> DVec4 {
+        let centre = self.centre();
+        let inradius = self
+            .domain
+            .faces()
+            .iter()
+            .map(|n| lorentz::dot(centre, *n).asinh())
+            .fold(f64::INFINITY, f64::min);
+        let nudge = Point::at_distance_from_origin(
+            glam::DVec3::new(0.318_309_886, 0.577_215_664, 0.723_606_797),
+            0.37 * inradius,
+        )
+        .map_or(glam::DVec4::W, |p| p.to_hyperboloid());
+        self.placement.to_lorentz() * nudge
+    }
+}

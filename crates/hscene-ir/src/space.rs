@@ -1,0 +1,43 @@
+//! The space a scene is in (`space = NAME;`): H³ itself, or a quotient
+//! `H³/Γ` given by a fundamental domain and face pairings
+//! ([`hgeom::QuotientSpace`]). What each space is and how rays, objects and
+//! lights behave in it is described in `docs/manifolds.md`.
+
+use hgeom::SpaceKind;
+
+use crate::material::MaterialId;
+
+/// How far from the domain's centre a light's images light the scene,
+/// unless `light_reach` says otherwise.
+pub const DEFAULT_LIGHT_REACH: f64 = 2.5;
+
+/// The largest `light_reach`: the images within it grow like `e^{2R}`.
+pub const MAX_LIGHT_REACH: f64 = 6.0;
+
+/// The most images of one light that light the scene (the nearest).
+pub const MAX_LIGHT_IMAGES: usize = 64;
+
+/// The most faces a ray crosses before it stops at the horizon.
+pub const MAX_SPACE_CROSSINGS: u32 = 1024;
+
+/// The domain's edges drawn as rods (`domain = w, #M`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DomainEdges {
+    /// The rods' hyperbolic radius. Invariant: positive and finite.
+    pub width: f64,
+    /// Their material.
+    pub material: MaterialId,
+}
+
+/// A scene's space other than H³.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Space {
+    /// Which space.
+    pub kind: SpaceKind,
+    /// The domain's edges, if drawn.
+    pub domain: Option<DomainEdges>,
+    /// The images of each light within this distance of the domain's
+    /// centre (at most [`MAX_LIGHT_IMAGES`], the nearest) light the scene.
+    /// Invariant: in `(0, MAX_LIGHT_REACH]`.
+    pub light_reach: f64,
+}

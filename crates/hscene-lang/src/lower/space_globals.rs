@@ -1,0 +1,260 @@
+//! The `Globals` keys of quotient spaces: `space = NAME` or
+//! `space = {p,q,r}`, `domain = w, #M` and `light_reach = d`, and the
+//! checks of a scene in a space (what cannot be placed there, what lies
+//! outside the domain and is folded in). What a space is and how rays,
+//! objects and lights behave in it: `docs/manifolds.md`.
+
+use hgeom::{MAX_COPIES, QuotientSpace, SPACE_NAMES, SpaceKind};
+
+use super::Lowerer;
+use crate::diagnostic::{Code, Diagnostic, Span};
+use crate::ir::{
+    DEFAULT_LIGHT_REACH, DomainEdges, MAX_LIGHT_REACH, MaterialId, Space,
+};
+use crate::syntax::Value;
+
+/// The space keys as given, settled once every object and light is known.
+#[derive(Default)]
+pub(super) struct SpaceParts {
+    kind: Option<(SpaceKind, Span)>,
+    domain: Option<(f64, MaterialId, Span)>,
+    light_reach: Option<(f64, Span)>,
+}
+
+/// The space keys.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum SpaceKey {
+    /// `space`.
+    Space,
+    /// `domain`.
+    Domain,
+    /// `light_reach`.
+    LightReach,
+}
+
+fn spaces_help() -> String {
+    format!(
+        "spaces are {}, or `{{p,q,r}}` for the cell of a regular honeycomb with finite cells \
+         ({{4,3,5}}, {{5,3,4}}, {{5,3,5}}, {{3,5,3}}, {{3,3,6}}, {{4,3,6}}, {{5,3,6}}, {{3,4,4}}) \
+         with mirror walls",
+        SPACE_NAMES.join(", ")
+    )
+}
+
+impl Lowerer<'_> {
+    /// `space = NAME`, `space = {p,q,r}` or `light_reach = d`; `domain`
+    /// comes through [`Lowerer::domain_global`].
+    pub(super) fn space_global(&mut self, key: SpaceKey, value: &Value) {
+        match key {
+            SpaceKey::Space => self.space_name(value),
+            SpaceKey::LightReach => {
+                let Some(x) = self.number(value) else {
+                    return;
+                };
+                if !(x > 0.0 && x <= MAX_LIGHT_REACH) {
+                    self.report(
+                        Diagnostic::new(
+                            Code::InvalidValue,
+                            value.span(),
+                            format!(
+                                "`light_reach` must be above 0 and at most {MAX_LIGHT_REACH}, got {}",
+                                hgeom::Compact(x)
+                            ),
+                        )
+                        .with_help("the images of a light within this distance of the domain's centre light the scene; 2.5 is the default"),
+                    );
+                    return;
+                }
+                self.space.light_reach = Some((x, value.span()));
+            }
+            SpaceKey::Domain => {
+                // `domain` needs its material: the section loop passes it
+                // with the clause after it.
+                self.domain_global(value, None, value.span());
+            }
+        }
+    }
+
+    /// `domain = w, #M`: the domain's edges as rods of radius `w` in `#M`;
+    /// `material` is the clause after the assignment, if any.
+    pub(super) fn domain_global(&mut self, width: &Value, material: Option<&Value>, span: Span) {
+        let usage = "write `domain = 0.03, #gold;`: the rods' radius, then their material";
+        let Some(material) = material else {
+            self.report(
+                Diagnostic::new(Code::WrongArity, span, "`domain` needs a radius and a material")
+                    .with_help(usage),
+            );
+            return;
+        };
+        let w = self.number(width);
+        let m = self.material_arg(material);
+        let (Some(w), Some(m)) = (w, m) else {
+            return;
+        };
+        if !(w > 0.0 && w <= 1.0) {
+            self.report(
+                Diagnostic::new(
+                    Code::InvalidValue,
+                    width.span(),
+                    format!(
+                        "the domain's rods need a radius above 0 and at most 1, got {}",
+                        hgeom::Compact(w)
+                    ),
+                )
+                .with_help(usage),
+            );
+            return;
+        }
+        self.space.domain = Some((w, m, span));
+    }
+
+    fn space_name(&mut self, value: &Value) {
+        let kind = match value {
+            Value::Ident(name) => match SpaceKind::from_name(&name.text) {
+                Some(kind) => kind,
+                None => {
+                    self.report(
+                        Diagnostic::new(
+                            Code::InvalidValue,
+                            value.span(),
+                            format!("unknown space `{}`", name.text),
+                        )
+                        .with_help(spaces_help()),
+                    );
+                    return;
+                }
+            },
+            Value::Symbol { .. } => {
+                let Some(symbol) = self.schlafli(value, &spaces_help()) else {
+                    return;
+                };
+                SpaceKind::Mirrors(symbol)
+            }
+            other => {
+                self.report(
+                    Diagnostic::new(
+                        Code::WrongType,
+                        other.span(),
+                        format!("expected a space's name, found {}", other.describe()),
+                    )
+                    .with_help(spaces_help()),
+                );
+                return;
+            }
+        };
+        if let Err(e) = QuotientSpace::new(kind) {
+            self.report(
+                Diagnostic::new(
+                    Code::InvalidValue,
+                    value.span(),
+                    format!("{kind} cannot be a space here: {e}"),
+                )
+                .with_help(spaces_help()),
+            );
+            return;
+        }
+        self.space.kind = Some((kind, value.span()));
+    }
+
+    /// The space, once every object and light is known: what cannot be
+    /// placed in a space is refused where it is written, and what lies
+    /// outside the domain is folded in with a warning (the renderer folds
+    /// it: the scene is the same either way).
+    pub(super) fn settle_space(&mut self) {
+        let Some((kind, kind_span)) = self.space.kind else {
+            for span in [
+                self.space.domain.map(|d| d.2),
+                self.space.light_reach.map(|r| r.1),
+            ]
+            .into_iter()
+            .flatten()
+            {
+                self.report(Diagnostic::new(
+                    Code::IneffectiveOption,
+                    span,
+                    "this has no effect without `space = NAME`: the scene is in H³",
+                ));
+            }
+            return;
+        };
+        let Ok(space) = QuotientSpace::new(kind) else {
+            return;
+        };
+        let mut found = Vec::new();
+        for (k, (o, span)) in self.objects.iter().enumerate() {
+            let surfaces = o.shape.to_surfaces();
+            let balls: Option<Vec<_>> = surfaces.iter().map(|s| s.bound()).collect();
+            let Some(ball) = balls.and_then(|b| b.first().copied()) else {
+                found.push(Diagnostic::new(
+                    Code::NotInSpace,
+                    *span,
+                    format!(
+                        "a {} is unbounded and cannot be placed in a space: its images would fill it",
+                        o.shape.kind_name()
+                    ),
+                ).with_help("use bounded objects (spheres, polygons, polyhedra, meshes, rods); `domain = w, #M` draws the domain's edges"));
+                continue;
+            };
+            let centre = ball.center();
+            if !space.contains(centre, 1e-12) {
+                found.push(outside(*span, &format!("object {}", k + 1)));
+            }
+            let reach = surfaces
+                .iter()
+                .filter_map(|s| s.bound())
+                .map(|b| hgeom::lorentz::distance(centre, b.center()) + b.radius())
+                .fold(0.0, f64::max);
+            let placed = hgeom::Point::from_hyperboloid(centre)
+                .and_then(|p| space.fold(&p).ok())
+                .map(|home| home.to_lorentz() * centre);
+            if let Some(home) = placed
+                && space.copies_meeting(home, reach).is_err()
+            {
+                found.push(Diagnostic::new(
+                    Code::NotInSpace,
+                    *span,
+                    format!("this object is too large for the domain: more than {MAX_COPIES} of its images would meet it"),
+                ).with_help("make it smaller than the domain, or place it away from the cusps"));
+            }
+        }
+        for (k, (l, span)) in self.lights.iter().enumerate() {
+            if l.radius > 0.0 {
+                found.push(
+                    Diagnostic::new(
+                        Code::NotInSpace,
+                        *span,
+                        "an area light (`radius`) cannot be placed in a space",
+                    )
+                    .with_help("use a point light, or a sphere with `emission` for a lamp that is seen"),
+                );
+            } else if !l.on_camera && !space.contains(l.position.to_hyperboloid(), 1e-12) {
+                found.push(outside(*span, &format!("light {}", k + 1)));
+            }
+        }
+        if self.settings.sky.is_some() {
+            found.push(Diagnostic::new(
+                Code::IneffectiveOption,
+                kind_span,
+                "`sky` has no effect in a space: no ray leaves it for the sphere at infinity",
+            ));
+        }
+        for d in found {
+            self.report(d);
+        }
+        self.settings.space = Some(Space {
+            kind,
+            domain: self.space.domain.map(|(width, material, _)| DomainEdges { width, material }),
+            light_reach: self.space.light_reach.map_or(DEFAULT_LIGHT_REACH, |r| r.0),
+        });
+    }
+}
+
+/// The warning for something placed outside the domain.
+fn outside(span: Span, what: &str) -> Diagnostic {
+    Diagnostic::new(
+        Code::OutsideDomain,
+        span,
+        format!("{what} lies outside the fundamental domain; it is folded in (moved by the gluing to its image inside)"),
+    )
+    .with_help("place it in the domain around the origin to see it where it is written")
+}
