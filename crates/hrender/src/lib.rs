@@ -78,6 +78,8 @@ pub use output_check::{Overwrite, check_output, check_output_file};
 pub use ray_budget::{MAX_SECONDARY_RAYS, RayBudget};
 pub use sampling::{SampleStream, Sampler};
 pub use scene::{Nearest, PreparedLight, PreparedObject, PreparedScene, T_MIN};
+pub use space_domain::PreparedSpace;
+pub use space_walk::Traced;
 pub use trace_stats::TraceStats;
 pub use unfinished::remove_unfinished_outputs;
 pub use video::{VideoFormat, VideoWriter, check_video, ffmpeg_available};

@@ -1,0 +1,166 @@
+//! Scenes in quotient spaces (`space = NAME`): the domain's edges are the
+//! honeycomb's, a mirrored cell is the honeycomb with its contents
+//! reflected by hand, the Seifert-Weber gluing closes the geodesic along a
+//! face's normal, and both integrators render the spaces without numeric
+//! failures.
+
+use hgeom::glam::DVec3;
+use hgeom::{HPlane, Isometry, Point, QuotientSpace, Ray, Schlafli, SpaceKind};
+use hrender::{Nearest, PreparedScene, RenderOptions, Rendered};
+use hscene_ir::{Scene, move_object};
+
+/// Ambient-only materials and no lights: every hit is drawn in its
+/// material's ambient colour exactly, so two pictures of the same geometry
+/// agree pixel for pixel.
+const FLAT: &str = "BRDFs { gold: ambient = (0.8, 0.6, 0.2), diffuse = (0, 0, 0); \
+                    red: ambient = (0.9, 0.1, 0.1), diffuse = (0, 0, 0); }";
+
+fn compile(globals: &str, objects: &str) -> Scene {
+    let source = format!(
+        "Globals {{ resolution = (64, 64); from = (0.03, 0.02, 0.01); to = (0.2, 0.1, 0.3); \
+         fov = 90; background = (0, 0, 0); ambient = (1, 1, 1); {globals} }}\n{FLAT}\n\
+         Objects {{ {objects} }}"
+    );
+    let out = hscene_lang::compile(&source);
+    out.scene.unwrap_or_else(|| panic!("{:?}", out.diagnostics))
+}
+
+fn render(scene: &Scene) -> Rendered {
+    let options = RenderOptions {
+        samples: Some(1),
+        ..RenderOptions::default()
+    };
+    hrender::render(scene, &options, &|_| {}).expect("the scene renders")
+}
+
+fn pixels(r: &Rendered) -> Vec<[f32; 3]> {
+    let image = &r.image;
+    (0..image.height())
+        .flat_map(|y| (0..image.width()).map(move |x| image.get(x, y)))
+        .collect()
+}
+
+fn is_black(p: &[f32; 3]) -> bool {
+    p.iter().all(|c| *c == 0.0)
+}
+
+/// From inside, `domain = w, #M` with no objects draws what
+/// `Honeycomb {p,q,r}, #M, edges = w` draws: every pixel that both draw
+/// is the same, and where one draws an edge the other does too (but at
+/// the honeycomb's horizon, which it fills with its average appearance).
+#[test]
+fn the_domain_draws_the_honeycombs_edges() {
+    for (space, symbol) in [
+        ("seifert_weber", "{5,3,5}"),
+        ("figure_eight", "{3,3,6}"),
+        ("whitehead", "{3,4,4}"),
+        ("{4,3,5}", "{4,3,5}"),
+    ] {
+        let inside = render(&compile(
+            &format!("space = {space}; domain = 0.03, #gold;"),
+            "",
+        ));
+        let honeycomb = render(&compile("", &format!("Honeycomb {symbol}, #gold, edges = 0.03;")));
+        assert_eq!(inside.stats.numeric_failures, 0, "{space}");
+        let (a, b) = (pixels(&inside), pixels(&honeycomb));
+        let edge = [0.8f32, 0.6, 0.2];
+        let close = |p: &[f32; 3]| p.iter().zip(edge).all(|(x, y)| (x - y).abs() < 1e-6);
+        let both = a.iter().zip(&b).filter(|(x, y)| close(x) && close(y)).count();
+        let only_space = a.iter().zip(&b).filter(|(x, y)| close(x) && is_black(y)).count();
+        let only_honeycomb = a.iter().zip(&b).filter(|(x, y)| is_black(x) && close(y)).count();
+        println!("{space}: {both} edge pixels in both, {only_space} only in the space, {only_honeycomb} only in the honeycomb");
+        assert!(both > 500, "{space}: {both}");
+        assert!(only_space + only_honeycomb <= a.len() / 200, "{space}");
+    }
+}
+
+/// The cell of `{4,3,5}` with mirror walls and a ball in it equals
+/// `Honeycomb {4,3,5}`'s space with the ball and its six images in the
+/// cube's faces placed by hand, wherever the hand-made scene has
+/// something: a ray reflected once by a wall is the ray that crosses
+/// that face into the neighbouring cell.
+#[test]
+fn the_mirrored_cell_is_the_ball_reflected_by_hand() {
+    let ball = "Sphere (0.1, 0.05, 0.15), 0.12, #red;";
+    let mirrored = compile("space = {4,3,5};", ball);
+    let mut by_hand = compile("", ball);
+    let cube = QuotientSpace::new(SpaceKind::Mirrors(Schlafli::new(4, 3, 5).unwrap())).unwrap();
+    let original = by_hand.objects[0].clone();
+    for n in cube.domain().faces() {
+        let mirror = Isometry::reflection(&HPlane::from_normal(*n).unwrap());
+        by_hand.objects.push(move_object(&original, &mirror).unwrap());
+    }
+    let alone = pixels(&render(&compile("", ball)));
+    let (a, b) = (pixels(&render(&mirrored)), pixels(&render(&by_hand)));
+    let drawn = b.iter().filter(|p| !is_black(p)).count();
+    let reflected = drawn - alone.iter().filter(|p| !is_black(p)).count();
+    let differ = a
+        .iter()
+        .zip(&b)
+        .filter(|(x, y)| !is_black(y) && x != y)
+        .count();
+    println!("{drawn} pixels drawn by hand ({reflected} by the images), {differ} differ");
+    assert!(reflected > 80, "{reflected}");
+    assert!(differ <= drawn / 200, "{differ} of {drawn}");
+}
+
+/// In Seifert-Weber space, from the centre along a face's normal, the
+/// geodesic leaves at the inradius ρ and comes back through the opposite
+/// face: a ball of radius `a` at distance `s` behind the eye on that axis
+/// is met ahead at `2ρ - s - a`.
+#[test]
+fn seifert_weber_shows_what_is_behind_the_eye_ahead() {
+    let space = QuotientSpace::seifert_weber().unwrap();
+    let n = space.domain().faces()[0];
+    let u = -n.truncate().normalize();
+    let rho = (-n.w).asinh();
+    let (s, a) = (0.35, 0.1);
+    let c = Point::at_distance_from_origin(-u, s).unwrap().coords();
+    let scene = compile(
+        "space = seifert_weber;",
+        &format!("Sphere ({}, {}, {}), {a}, #red;", c.x, c.y, c.z),
+    );
+    let prepared = PreparedScene::new(&scene, &Isometry::IDENTITY).unwrap();
+    let traced = prepared.trace(&Ray::from_origin(u).unwrap(), 1e-9);
+    let Nearest::Hit(hit, _) = traced.nearest else {
+        panic!("the ray meets nothing");
+    };
+    let t = traced.travelled + hit.t;
+    println!("met at {t}, expected {}", 2.0 * rho - s - a);
+    assert!((t - (2.0 * rho - s - a)).abs() < 1e-12);
+    // Behind the eye it is where it was put.
+    let back = prepared.trace(&Ray::from_origin(-u).unwrap(), 1e-9);
+    let Nearest::Hit(hit, _) = back.nearest else {
+        panic!("the ray back meets nothing");
+    };
+    assert!(back.travelled == 0.0 && (hit.t - (s - a)).abs() < 1e-12);
+    let _ = DVec3::X;
+}
+
+/// Both integrators light a scene in each built-in space by the light's
+/// images, with no numeric failure, and lit surfaces are brighter than
+/// the ambient alone.
+#[test]
+fn both_integrators_light_every_space() {
+    for space in ["seifert_weber", "figure_eight", "whitehead", "{5,3,4}", "{3,4,4}"] {
+        for integrator in ["whitted", "path"] {
+            let source = format!(
+                "Globals {{ resolution = (24, 24); from = (0.03, 0.02, 0.01); \
+                 to = (0.2, 0.1, 0.3); fov = 90; space = {space}; domain = 0.03, #white; \
+                 integrator = {integrator}; samples = 4; }}\n\
+                 BRDFs {{ white: diffuse = (0.8, 0.8, 0.8); }}\n\
+                 Lights {{ (0.05, -0.05, 0.1), (1, 1, 1), (0, 0, 0), irradiance_at = 0.3; }}\n\
+                 Objects {{ Sphere (0.15, 0.05, 0.1), 0.08, #white; }}"
+            );
+            let out = hscene_lang::compile(&source);
+            let scene = out
+                .scene
+                .unwrap_or_else(|| panic!("{space}: {:?}", out.diagnostics));
+            let r = render(&scene);
+            let mean = pixels(&r).iter().map(|p| p[0] + p[1] + p[2]).sum::<f32>() / 576.0;
+            println!("{space} {integrator}: mean {mean}, {} rays", r.stats.rays);
+            assert_eq!(r.stats.numeric_failures, 0, "{space} {integrator}");
+            assert!(mean > 0.05, "{space} {integrator}: {mean}");
+        }
+    }
+}
