@@ -6,12 +6,13 @@
 //   hscene render scenes/manifolds/seifert-weber.hsc -o seifert-weber.png
 Globals {
     resolution = (480, 480);
+    samples = 4;
     space = seifert_weber;
     domain = 0.04, #brass;
     from = (0, 0, 0);
     to = (0.1, 0.03, 0.3);
     fov = 100;
-    background = (0, 0, 0);
+    background = (0.02, 0.02, 0.05);
     ambient = (0.15, 0.15, 0.15);
     recursion_depth = 2;
 }

@@ -474,7 +474,12 @@ mod tests {
                 DVec3::new(1.0, 2.0, 2.0).normalize(),
                 0.7,
             )));
-        for g in [f, f.compose(&Isometry::orthogonal_unchecked(DMat3::from_diagonal(DVec3::new(1.0, 1.0, -1.0))))] {
+        for g in [
+            f,
+            f.compose(&Isometry::orthogonal_unchecked(DMat3::from_diagonal(
+                DVec3::new(1.0, 1.0, -1.0),
+            ))),
+        ] {
             let back = Isometry::from_lorentz(g.to_lorentz()).unwrap();
             assert_eq!(back.preserves_orientation(), g.preserves_orientation());
             for x in [p(0.3, -0.2, 0.5), p(-0.7, 0.1, 0.2)] {

@@ -85,7 +85,11 @@ fn edge_cycles_close_up() {
         };
         if let Some((f, e, k)) = expected {
             assert_eq!(
-                (s.domain().faces().len(), s.domain().edges().len(), cycles.len()),
+                (
+                    s.domain().faces().len(),
+                    s.domain().edges().len(),
+                    cycles.len()
+                ),
                 (f, e, k),
                 "{}",
                 s.kind()
@@ -134,11 +138,7 @@ fn seifert_weber_closes_along_a_face_normal() {
     };
     let ahead = 2.0 * inradius - behind;
     let t = trace(Ray::from_origin(u).unwrap()).unwrap();
-    assert!(
-        (t - (ahead - a)).abs() < 1e-13,
-        "{t} against {}",
-        ahead - a
-    );
+    assert!((t - (ahead - a)).abs() < 1e-13, "{t} against {}", ahead - a);
     // The angular radius, by bisection on the angle from the axis.
     let side = u.any_orthonormal_vector();
     let ray_at = |theta: f64| Ray::from_origin(u * theta.cos() + side * theta.sin()).unwrap();
@@ -170,9 +170,18 @@ fn seifert_weber_closes_along_a_face_normal() {
 #[test]
 fn a_thousand_crossings_drift_like_the_honeycomb_walk() {
     let mut rng = SplitMix64::new(38);
-    for kind in [SpaceKind::SeifertWeber, SpaceKind::FigureEight, SpaceKind::Whitehead] {
+    for kind in [
+        SpaceKind::SeifertWeber,
+        SpaceKind::FigureEight,
+        SpaceKind::Whitehead,
+    ] {
         let s = QuotientSpace::new(kind).unwrap();
-        let faces: Vec<V4> = s.domain().faces().iter().map(|n| V4::from_f64(*n)).collect();
+        let faces: Vec<V4> = s
+            .domain()
+            .faces()
+            .iter()
+            .map(|n| V4::from_f64(*n))
+            .collect();
         let matrices: Vec<[[R; 4]; 4]> = (0..faces.len())
             .map(|f| {
                 let m = s.pairing(f).to_lorentz();
@@ -209,8 +218,11 @@ fn a_thousand_crossings_drift_like_the_honeycomb_walk() {
                 ray = s.carry(&ray, c);
                 t += c.t;
                 crossings += 1;
-                let (x1, w1) =
-                    cross(&V4::from_f64(before.origin), &V4::from_f64(before.dir), c.face);
+                let (x1, w1) = cross(
+                    &V4::from_f64(before.origin),
+                    &V4::from_f64(before.dir),
+                    c.face,
+                );
                 along = along.max(distance_h(&x1, &V4::from_f64(ray.origin)).to_f64());
                 let off = off_line(&V4::from_f64(ray.origin), &x1, &w1);
                 one_step = one_step.max(off);
@@ -241,9 +253,15 @@ fn a_thousand_crossings_drift_like_the_honeycomb_walk() {
              exits); drift {checkpoints:?}"
         );
         assert_eq!(crossings, 3000, "{kind}: every ray crosses 1,000 faces");
-        assert!(scaled < 1e-14, "{kind}: one step {one_step:e}, {scaled:e} scaled");
+        assert!(
+            scaled < 1e-14,
+            "{kind}: one step {one_step:e}, {scaled:e} scaled"
+        );
         for (t, dx) in &drift {
-            assert!(*dx < 3e-15 * (2.0 * t).exp().max(1.0), "{kind}: {dx:e} at {t}");
+            assert!(
+                *dx < 3e-15 * (2.0 * t).exp().max(1.0),
+                "{kind}: {dx:e} at {t}"
+            );
         }
     }
 }

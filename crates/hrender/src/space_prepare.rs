@@ -139,7 +139,10 @@ enum Failure {
 fn object_images(q: &QuotientSpace, o: &Object) -> Result<Vec<Object>, Failure> {
     let surfaces = o.shape.to_surfaces();
     let balls: Vec<_> = surfaces.iter().map(|s| s.bound()).collect();
-    let balls: Vec<_> = balls.into_iter().collect::<Option<_>>().ok_or(Failure::Unbounded)?;
+    let balls: Vec<_> = balls
+        .into_iter()
+        .collect::<Option<_>>()
+        .ok_or(Failure::Unbounded)?;
     let Some(first) = balls.first() else {
         return Err(Failure::Unbounded);
     };
@@ -151,7 +154,9 @@ fn object_images(q: &QuotientSpace, o: &Object) -> Result<Vec<Object>, Failure> 
     let home = q.fold(&centre_point).map_err(Failure::Geometry)?;
     let folded = ir::move_object(o, &home).ok_or(Failure::OutOfRange)?;
     let centre = home.apply(&centre_point).to_hyperboloid();
-    let images = q.copies_meeting(centre, radius).map_err(Failure::Geometry)?;
+    let images = q
+        .copies_meeting(centre, radius)
+        .map_err(Failure::Geometry)?;
     images
         .iter()
         .map(|b| {

@@ -80,4 +80,3 @@ impl PreparedScene {
         miss(ray, travelled)
     }
 }
-

@@ -60,15 +60,32 @@ fn the_domain_draws_the_honeycombs_edges() {
             &format!("space = {space}; domain = 0.03, #gold;"),
             "",
         ));
-        let honeycomb = render(&compile("", &format!("Honeycomb {symbol}, #gold, edges = 0.03;")));
+        let honeycomb = render(&compile(
+            "",
+            &format!("Honeycomb {symbol}, #gold, edges = 0.03;"),
+        ));
         assert_eq!(inside.stats.numeric_failures, 0, "{space}");
         let (a, b) = (pixels(&inside), pixels(&honeycomb));
         let edge = [0.8f32, 0.6, 0.2];
         let close = |p: &[f32; 3]| p.iter().zip(edge).all(|(x, y)| (x - y).abs() < 1e-6);
-        let both = a.iter().zip(&b).filter(|(x, y)| close(x) && close(y)).count();
-        let only_space = a.iter().zip(&b).filter(|(x, y)| close(x) && is_black(y)).count();
-        let only_honeycomb = a.iter().zip(&b).filter(|(x, y)| is_black(x) && close(y)).count();
-        println!("{space}: {both} edge pixels in both, {only_space} only in the space, {only_honeycomb} only in the honeycomb");
+        let both = a
+            .iter()
+            .zip(&b)
+            .filter(|(x, y)| close(x) && close(y))
+            .count();
+        let only_space = a
+            .iter()
+            .zip(&b)
+            .filter(|(x, y)| close(x) && is_black(y))
+            .count();
+        let only_honeycomb = a
+            .iter()
+            .zip(&b)
+            .filter(|(x, y)| is_black(x) && close(y))
+            .count();
+        println!(
+            "{space}: {both} edge pixels in both, {only_space} only in the space, {only_honeycomb} only in the honeycomb"
+        );
         assert!(both > 500, "{space}: {both}");
         assert!(only_space + only_honeycomb <= a.len() / 200, "{space}");
     }
@@ -88,7 +105,9 @@ fn the_mirrored_cell_is_the_ball_reflected_by_hand() {
     let original = by_hand.objects[0].clone();
     for n in cube.domain().faces() {
         let mirror = Isometry::reflection(&HPlane::from_normal(*n).unwrap());
-        by_hand.objects.push(move_object(&original, &mirror).unwrap());
+        by_hand
+            .objects
+            .push(move_object(&original, &mirror).unwrap());
     }
     let alone = pixels(&render(&compile("", ball)));
     let (a, b) = (pixels(&render(&mirrored)), pixels(&render(&by_hand)));
@@ -142,7 +161,13 @@ fn seifert_weber_shows_what_is_behind_the_eye_ahead() {
 /// the ambient alone.
 #[test]
 fn both_integrators_light_every_space() {
-    for space in ["seifert_weber", "figure_eight", "whitehead", "{5,3,4}", "{3,4,4}"] {
+    for space in [
+        "seifert_weber",
+        "figure_eight",
+        "whitehead",
+        "{5,3,4}",
+        "{3,4,4}",
+    ] {
         for integrator in ["whitted", "path"] {
             let source = format!(
                 "Globals {{ resolution = (24, 24); from = (0.03, 0.02, 0.01); \

@@ -245,10 +245,8 @@ fn seifert_weber(faces: Vec<DVec4>) -> Result<Gluing, GeomError> {
             .iter()
             .position(|m| (m.truncate().normalize() - u).length() < 1e-9)
             .ok_or_else(|| GeomError::BadDomain("a dodecahedron face has no opposite".into()))?;
-        let shift = Isometry::transvection_from_origin(Point::at_distance_from_origin(
-            -u,
-            2.0 * inradius,
-        )?);
+        let shift =
+            Isometry::transvection_from_origin(Point::at_distance_from_origin(-u, 2.0 * inradius)?);
         let turn = Isometry::orthogonal(DMat3::from_axis_angle(u, 0.6 * std::f64::consts::PI))?;
         partner.push(opposite);
         matrices.push(turn.compose(&shift).to_lorentz());
@@ -311,7 +309,7 @@ const fn dir(x: f64, y: f64, z: f64) -> DVec3 {
 }
 
 /// `1/√6` and `2/√6`.
-const A6: f64 = 0.408_248_290_463_863_0;
+const A6: f64 = 0.408_248_290_463_863;
 const B6: f64 = 0.816_496_580_927_726_1;
 /// The bipyramid's equatorial vertices off the shared face: the base
 /// tetrahedron's apex and its mirror image in `n3`.

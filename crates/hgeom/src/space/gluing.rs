@@ -85,8 +85,14 @@ pub(super) fn check_pairings(
         if partner.get(j) != Some(&i) {
             return Err(bad("names a partner that is not paired back with it"));
         }
-        if (*m * domain.faces()[i] + domain.faces()[j]).abs().max_element() > 1e-9 {
-            return Err(bad("does not send the outside of its face to the inside of its partner"));
+        if (*m * domain.faces()[i] + domain.faces()[j])
+            .abs()
+            .max_element()
+            > 1e-9
+        {
+            return Err(bad(
+                "does not send the outside of its face to the inside of its partner",
+            ));
         }
         let mut images: Vec<usize> = Vec::new();
         for &k in domain.face_vertices(i) {
@@ -262,5 +268,8 @@ pub(super) fn is_identity(m: &DMat4, tolerance: f64) -> bool {
 /// The pairings as isometries (their exact, stable form), from their
 /// matrices.
 pub(super) fn isometries(matrices: &[DMat4]) -> Result<Vec<Isometry>, GeomError> {
-    matrices.iter().map(|m| Isometry::from_lorentz(*m)).collect()
+    matrices
+        .iter()
+        .map(|m| Isometry::from_lorentz(*m))
+        .collect()
 }

@@ -183,10 +183,7 @@ impl QuotientSpace {
         o /= (-lorentz::dot(o, o)).sqrt();
         v += lorentz::dot(o, v) * o;
         v /= lorentz::dot(v, v).sqrt();
-        Ray {
-            origin: o,
-            dir: v,
-        }
+        Ray { origin: o, dir: v }
     }
 }
 

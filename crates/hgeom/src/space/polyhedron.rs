@@ -72,8 +72,7 @@ impl DomainPolyhedron {
         for a in 0..m {
             for b in a + 1..m {
                 for c in b + 1..m {
-                    let Some((v, at_infinity)) = meeting_point(faces[a], faces[b], faces[c])
-                    else {
+                    let Some((v, at_infinity)) = meeting_point(faces[a], faces[b], faces[c]) else {
                         continue;
                     };
                     if !faces.iter().all(|n| lorentz::dot(v, *n) >= -ON_PLANE * v.w) {

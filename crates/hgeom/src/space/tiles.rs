@@ -177,7 +177,7 @@ impl QuotientSpace {
             .map(|n| lorentz::dot(centre, *n).asinh())
             .fold(f64::INFINITY, f64::min);
         let nudge = Point::at_distance_from_origin(
-            glam::DVec3::new(0.318_309_886, 0.577_215_664, 0.723_606_797),
+            glam::DVec3::new(0.312_5, 0.577_215_664, 0.723_606_797),
             0.37 * inradius,
         )
         .map_or(glam::DVec4::W, |p| p.to_hyperboloid());

@@ -101,7 +101,11 @@ impl<'s> PathTracer<'s> {
         // crossed faces, and light sampling cannot tell which image it
         // met: such objects are found by the paths' own bounces alone
         // (unbiased, noisier; `docs/manifolds.md`).
-        let sampled = if scene.in_space() { &[][..] } else { &scene.objects[..] };
+        let sampled = if scene.in_space() {
+            &[][..]
+        } else {
+            &scene.objects[..]
+        };
         for (index, object) in sampled.iter().enumerate() {
             let m = &scene.materials[object.material];
             if !object.faces.is_empty() && !m.emission.is_black() {

@@ -145,12 +145,13 @@ impl Lowerer<'_> {
                     if let Some(twice) = seen.again(key) {
                         self.report(twice);
                     }
-                    let material = clauses
-                        .next_if(|c| matches!(c, Clause::Value(_)))
-                        .and_then(|c| match c {
-                            Clause::Value(v) => Some(v),
-                            _ => None,
-                        });
+                    let material =
+                        clauses
+                            .next_if(|c| matches!(c, Clause::Value(_)))
+                            .and_then(|c| match c {
+                                Clause::Value(v) => Some(v),
+                                _ => None,
+                            });
                     self.domain_global(value, material, *span);
                     continue;
                 }

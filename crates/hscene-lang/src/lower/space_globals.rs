@@ -8,9 +8,7 @@ use hgeom::{MAX_COPIES, QuotientSpace, SPACE_NAMES, SpaceKind};
 
 use super::Lowerer;
 use crate::diagnostic::{Code, Diagnostic, Span};
-use crate::ir::{
-    DEFAULT_LIGHT_REACH, DomainEdges, MAX_LIGHT_REACH, MaterialId, Space,
-};
+use crate::ir::{DEFAULT_LIGHT_REACH, DomainEdges, MAX_LIGHT_REACH, MaterialId, Space};
 use crate::syntax::Value;
 
 /// The space keys as given, settled once every object and light is known.
@@ -81,8 +79,12 @@ impl Lowerer<'_> {
         let usage = "write `domain = 0.03, #gold;`: the rods' radius, then their material";
         let Some(material) = material else {
             self.report(
-                Diagnostic::new(Code::WrongArity, span, "`domain` needs a radius and a material")
-                    .with_help(usage),
+                Diagnostic::new(
+                    Code::WrongArity,
+                    span,
+                    "`domain` needs a radius and a material",
+                )
+                .with_help(usage),
             );
             return;
         };
@@ -225,7 +227,9 @@ impl Lowerer<'_> {
                         *span,
                         "an area light (`radius`) cannot be placed in a space",
                     )
-                    .with_help("use a point light, or a sphere with `emission` for a lamp that is seen"),
+                    .with_help(
+                        "use a point light, or a sphere with `emission` for a lamp that is seen",
+                    ),
                 );
             } else if !l.on_camera && !space.contains(l.position.to_hyperboloid(), 1e-12) {
                 found.push(outside(*span, &format!("light {}", k + 1)));
@@ -243,7 +247,10 @@ impl Lowerer<'_> {
         }
         self.settings.space = Some(Space {
             kind,
-            domain: self.space.domain.map(|(width, material, _)| DomainEdges { width, material }),
+            domain: self
+                .space
+                .domain
+                .map(|(width, material, _)| DomainEdges { width, material }),
             light_reach: self.space.light_reach.map_or(DEFAULT_LIGHT_REACH, |r| r.0),
         });
     }
