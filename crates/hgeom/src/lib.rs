@@ -110,8 +110,8 @@ pub use rod::Rod;
 pub use segment::Segment;
 pub use shape::{Shape, Solid};
 pub use space::{
-    Crossing, DomainEdge, DomainPolyhedron, EdgeCycle, MAX_COPIES, QuotientSpace, SPACE_NAMES,
-    SpaceKind,
+    Crossing, DomainEdge, DomainPolyhedron, EdgeCycle, HOROSPHERE_CELL_REACH, MAX_CHAMBER_STEPS,
+    MAX_COPIES, QuotientSpace, SPACE_NAMES, SpaceKind,
 };
 pub use sphere::HSphere;
 

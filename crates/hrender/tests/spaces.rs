@@ -16,8 +16,20 @@ const FLAT: &str = "BRDFs { gold: ambient = (0.8, 0.6, 0.2), diffuse = (0, 0, 0)
                     red: ambient = (0.9, 0.1, 0.1), diffuse = (0, 0, 0); }";
 
 fn compile(globals: &str, objects: &str) -> Scene {
+    compile_from(
+        "from = (0.03, 0.02, 0.01); to = (0.2, 0.1, 0.3);",
+        globals,
+        objects,
+    )
+}
+
+/// A horosphere-inscribed cell lies on the `x < 0` side of its face
+/// through the origin: the eye is put inside, looking along it.
+const IN_HOROSPHERE_CELL: &str = "from = (-0.1, 0.02, 0.01); to = (-0.25, 0.1, 0.3);";
+
+fn compile_from(camera: &str, globals: &str, objects: &str) -> Scene {
     let source = format!(
-        "Globals {{ resolution = (64, 64); from = (0.03, 0.02, 0.01); to = (0.2, 0.1, 0.3); \
+        "Globals {{ resolution = (64, 64); {camera} \
          fov = 90; background = (0, 0, 0); ambient = (1, 1, 1); {globals} }}\n{FLAT}\n\
          Objects {{ {objects} }}"
     );
@@ -50,17 +62,22 @@ fn is_black(p: &[f32; 3]) -> bool {
 /// the honeycomb's horizon, which it fills with its average appearance).
 #[test]
 fn the_domain_draws_the_honeycombs_edges() {
-    for (space, symbol) in [
-        ("seifert_weber", "{5,3,5}"),
-        ("figure_eight", "{3,3,6}"),
-        ("whitehead", "{3,4,4}"),
-        ("{4,3,5}", "{4,3,5}"),
+    for (space, symbol, camera) in [
+        ("seifert_weber", "{5,3,5}", None),
+        ("figure_eight", "{3,3,6}", None),
+        ("whitehead", "{3,4,4}", None),
+        ("{4,3,5}", "{4,3,5}", None),
+        ("{4,4,3}", "{4,4,3}", Some(IN_HOROSPHERE_CELL)),
+        ("{6,3,6}", "{6,3,6}", Some(IN_HOROSPHERE_CELL)),
     ] {
-        let inside = render(&compile(
+        let camera = camera.unwrap_or("from = (0.03, 0.02, 0.01); to = (0.2, 0.1, 0.3);");
+        let inside = render(&compile_from(
+            camera,
             &format!("space = {space}; domain = 0.03, #gold;"),
             "",
         ));
-        let honeycomb = render(&compile(
+        let honeycomb = render(&compile_from(
+            camera,
             "",
             &format!("Honeycomb {symbol}, #gold, edges = 0.03;"),
         ));
@@ -103,7 +120,7 @@ fn the_mirrored_cell_is_the_ball_reflected_by_hand() {
     let mut by_hand = compile("", ball);
     let cube = QuotientSpace::new(SpaceKind::Mirrors(Schlafli::new(4, 3, 5).unwrap())).unwrap();
     let original = by_hand.objects[0].clone();
-    for n in cube.domain().faces() {
+    for n in cube.faces() {
         let mirror = Isometry::reflection(&HPlane::from_normal(*n).unwrap());
         by_hand
             .objects
@@ -123,6 +140,40 @@ fn the_mirrored_cell_is_the_ball_reflected_by_hand() {
     assert!(differ <= drawn / 200, "{differ} of {drawn}");
 }
 
+/// The same for a cell inscribed in a horosphere, `{6,3,4}`, whose faces
+/// are infinitely many: the ball and its images in the faces near it. An
+/// even number of cells round each edge (4) makes the mirrored cell an
+/// orbifold, whose images agree however a ray reaches them: a line that
+/// crosses two faces near an edge into the cell across the first sees
+/// the same image in both pictures. (With `r` odd, such a line sees a
+/// doubly reflected image in the kaleidoscope: `docs/manifolds.md`.)
+#[test]
+fn the_mirrored_horosphere_cell_is_the_ball_reflected_by_hand() {
+    let ball = "Sphere (-0.12, 0.05, 0.25), 0.15, #red;";
+    let mirrored = compile_from(IN_HOROSPHERE_CELL, "space = {6,3,4};", ball);
+    let mut by_hand = compile_from(IN_HOROSPHERE_CELL, "", ball);
+    let cell = QuotientSpace::new(SpaceKind::Mirrors(Schlafli::new(6, 3, 4).unwrap())).unwrap();
+    let original = by_hand.objects[0].clone();
+    for n in cell.faces() {
+        let mirror = Isometry::reflection(&HPlane::from_normal(*n).unwrap());
+        if let Some(image) = move_object(&original, &mirror) {
+            by_hand.objects.push(image);
+        }
+    }
+    let alone = pixels(&render(&compile_from(IN_HOROSPHERE_CELL, "", ball)));
+    let (a, b) = (pixels(&render(&mirrored)), pixels(&render(&by_hand)));
+    let drawn = b.iter().filter(|p| !is_black(p)).count();
+    let reflected = drawn - alone.iter().filter(|p| !is_black(p)).count();
+    let differ = a
+        .iter()
+        .zip(&b)
+        .filter(|(x, y)| !is_black(y) && x != y)
+        .count();
+    println!("{drawn} pixels drawn by hand ({reflected} by the images), {differ} differ");
+    assert!(reflected > 60, "{reflected}");
+    assert!(differ <= drawn / 200, "{differ} of {drawn}");
+}
+
 /// In Seifert-Weber space, from the centre along a face's normal, the
 /// geodesic leaves at the inradius ρ and comes back through the opposite
 /// face: a ball of radius `a` at distance `s` behind the eye on that axis
@@ -130,7 +181,7 @@ fn the_mirrored_cell_is_the_ball_reflected_by_hand() {
 #[test]
 fn seifert_weber_shows_what_is_behind_the_eye_ahead() {
     let space = QuotientSpace::seifert_weber().unwrap();
-    let n = space.domain().faces()[0];
+    let n = space.faces()[0];
     let u = -n.truncate().normalize();
     let rho = (-n.w).asinh();
     let (s, a) = (0.35, 0.1);
@@ -167,15 +218,17 @@ fn both_integrators_light_every_space() {
         "whitehead",
         "{5,3,4}",
         "{3,4,4}",
+        "{4,4,4}",
     ] {
         for integrator in ["whitted", "path"] {
+            // Inside every cell, the horosphere-inscribed ones included.
             let source = format!(
-                "Globals {{ resolution = (24, 24); from = (0.03, 0.02, 0.01); \
-                 to = (0.2, 0.1, 0.3); fov = 90; space = {space}; domain = 0.03, #white; \
+                "Globals {{ resolution = (24, 24); from = (-0.05, 0.02, 0.01); \
+                 to = (-0.2, 0.1, 0.3); fov = 90; space = {space}; domain = 0.03, #white; \
                  integrator = {integrator}; samples = 4; }}\n\
                  BRDFs {{ white: diffuse = (0.8, 0.8, 0.8); }}\n\
-                 Lights {{ (0.05, -0.05, 0.1), (1, 1, 1), (0, 0, 0), irradiance_at = 0.3; }}\n\
-                 Objects {{ Sphere (0.15, 0.05, 0.1), 0.08, #white; }}"
+                 Lights {{ (-0.1, -0.05, 0.1), (1, 1, 1), (0, 0, 0), irradiance_at = 0.3; }}\n\
+                 Objects {{ Sphere (-0.15, 0.05, 0.15), 0.08, #white; }}"
             );
             let out = hscene_lang::compile(&source);
             let scene = out

@@ -68,12 +68,18 @@ fn an_unknown_space_is_refused_with_the_known_ones() {
 }
 
 #[test]
-fn a_cell_with_infinitely_many_faces_is_refused_on_the_symbol() {
-    let found = diagnostics("space = {6,3,3};", "");
+fn every_regular_honeycomb_gives_a_mirrored_cell_and_other_symbols_are_refused() {
+    for (p, q, r) in hgeom::Schlafli::ALL {
+        let src =
+            format!("Globals {{ space = {{{p},{q},{r}}}; from = (-0.1, 0, 0); }}\n{MATERIALS}");
+        let c = compile(&src);
+        assert!(!c.has_errors(), "{{{p},{q},{r}}}: {:#?}", c.diagnostics);
+    }
+    let found = diagnostics("space = {4,3,4};", "");
     assert!(
         found
             .iter()
-            .any(|(code, sev, at)| code == "HSC0403" && *sev == Severity::Error && at == "{6,3,3}"),
+            .any(|(code, sev, at)| code == "HSC0313" && *sev == Severity::Error && at == "{4,3,4}"),
         "{found:?}"
     );
 }

@@ -19,8 +19,10 @@
 //! - **The Whitehead link complement** (two cusps): the base cell of
 //!   `{3,4,4}` (a regular ideal octahedron, 90° dihedral angles), its eight
 //!   faces glued in four pairs; twelve edges in three cycles of four.
-//! - **A honeycomb's cell with mirror walls**, for each `{p,q,r}` with
-//!   finite cells: each face glued to itself by the reflection in it.
+//! - **A honeycomb's cell with mirror walls**, for each of the fifteen
+//!   `{p,q,r}`: each face glued to itself by the reflection in it (the
+//!   cells inscribed in horospheres, with infinitely many faces, in
+//!   `horocell.rs`).
 //!
 //! The pairings of the two link complements are given by vertex
 //! correspondences, derived and checked (edge cycles, homology, cusps) as
@@ -33,10 +35,12 @@ use crate::accurate::{two_prod, two_sum};
 use crate::error::GeomError;
 use crate::honeycomb::{CoxeterSimplex, Schlafli};
 use crate::isometry::Isometry;
+use crate::plane::HPlane;
 use crate::point::Point;
 
 use super::QuotientSpace;
 use super::gluing::{check_cycles, check_pairings, edge_cycles, isometries, pairing_matrix};
+use super::horocell::{HoroCell, reflection};
 use super::polyhedron::DomainPolyhedron;
 
 /// The names `space = NAME` accepts besides a symbol `{p,q,r}`.
@@ -51,8 +55,7 @@ pub enum SpaceKind {
     FigureEight,
     /// The Whitehead link complement, from `{3,4,4}`.
     Whitehead,
-    /// The cell of a regular honeycomb with finite cells, with mirror
-    /// walls.
+    /// The cell of a regular honeycomb, with mirror walls.
     Mirrors(Schlafli),
 }
 
@@ -105,18 +108,32 @@ impl QuotientSpace {
     /// The space `kind` in its base placement (the domain's base cell
     /// centred at the origin), its gluing checked.
     ///
-    /// Errors: [`GeomError::BadDomain`] for the mirrored cell of a
-    /// honeycomb whose cells are inscribed in horospheres (infinitely many
-    /// faces); the gluing checks' errors, which the built-in spaces pass
+    /// Errors: the gluing checks' errors, which the built-in spaces pass
     /// (`tests/spaces.rs`).
     pub fn new(kind: SpaceKind) -> Result<QuotientSpace, GeomError> {
         let symbol = kind.symbol();
-        if symbol.has_ideal_cells() {
-            return Err(GeomError::BadDomain(format!(
-                "the cells of {symbol} are inscribed in horospheres and have infinitely many faces"
-            )));
-        }
         let simplex = CoxeterSimplex::new(symbol);
+        if symbol.has_ideal_cells() {
+            // Only a mirrored cell has such a domain (the named spaces'
+            // cells are finite): its faces are walked, not listed.
+            let (cell, faces) = HoroCell::new(&simplex);
+            let pairings = faces
+                .iter()
+                .map(|n| Ok(Isometry::reflection(&HPlane::from_normal(*n)?)))
+                .collect::<Result<Vec<_>, GeomError>>()?;
+            let matrices: Vec<DMat4> = pairings.iter().map(Isometry::to_lorentz).collect();
+            check_cycles(&cell.relations(&faces, symbol.r()), true)?;
+            return Ok(QuotientSpace {
+                kind,
+                domain: None,
+                partner: (0..faces.len()).collect(),
+                faces,
+                pairings,
+                matrices,
+                horo: Some(cell),
+                placement: Isometry::IDENTITY,
+            });
+        }
         let cell = cell_faces(&simplex);
         let (faces, partner, matrices) = match kind {
             SpaceKind::SeifertWeber => seifert_weber(cell)?,
@@ -152,7 +169,9 @@ impl QuotientSpace {
             pairings,
             matrices,
             partner,
-            domain,
+            faces: domain.faces().to_vec(),
+            domain: Some(domain),
+            horo: None,
             placement: Isometry::IDENTITY,
         })
     }
@@ -169,7 +188,11 @@ impl QuotientSpace {
     /// Errors: none for a space that was built; kept for a gluing read
     /// from elsewhere.
     pub fn edge_cycles(&self) -> Result<Vec<super::EdgeCycle>, GeomError> {
-        edge_cycles(&self.domain, &self.partner, &self.matrices)
+        match (&self.domain, &self.horo) {
+            (Some(domain), _) => edge_cycles(domain, &self.partner, &self.matrices),
+            (None, Some(cell)) => Ok(cell.relations(&self.faces, self.kind.symbol().r())),
+            (None, None) => Ok(Vec::new()),
+        }
     }
 }
 
@@ -226,12 +249,6 @@ fn reflect_dd([hi, lo]: [DVec3; 2], m: DVec3) -> [DVec3; 2] {
         out[1][i] = l;
     }
     out
-}
-
-/// The Lorentz matrix of the reflection `X -> X - 2 <X,n> n`.
-fn reflection(n: DVec4) -> DMat4 {
-    let jn = DVec4::new(n.x, n.y, n.z, -n.w);
-    DMat4::IDENTITY - 2.0 * DMat4::from_cols(n * jn.x, n * jn.y, n * jn.z, n * jn.w)
 }
 
 /// Faces, partners and matrices of Seifert-Weber (module docs).

@@ -17,13 +17,16 @@
 //!   for a mirror).
 //! - `builtin`: the named spaces (Seifert-Weber, the figure-eight knot
 //!   and Whitehead link complements, the mirrored cells of the regular
-//!   honeycombs with finite cells).
+//!   honeycombs).
+//! - `horocell`: the cell of a honeycomb inscribed in a horosphere, whose
+//!   faces are infinitely many, walked through its chambers.
 //! - `tiles`: the images of a point or ball near the domain (the copies of
 //!   an object or light a ray in the domain can meet), and folding a point
 //!   into the domain.
 
 mod builtin;
 mod gluing;
+mod horocell;
 mod polyhedron;
 mod tiles;
 
@@ -36,14 +39,19 @@ use crate::ray::Ray;
 
 pub use builtin::{SPACE_NAMES, SpaceKind};
 pub use gluing::EdgeCycle;
+pub use horocell::{MAX_CHAMBER_STEPS, NEAR_FACES as HOROSPHERE_CELL_REACH};
 pub use polyhedron::{DomainEdge, DomainPolyhedron};
 pub use tiles::MAX_COPIES;
 
 /// Where a ray leaves the domain.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Crossing {
-    /// The face it leaves by.
+    /// The face it leaves by, an index into [`QuotientSpace::faces`];
+    /// `usize::MAX` for a face of a horosphere-inscribed cell, which has
+    /// too many to list (its `normal` then says which).
     pub face: usize,
+    /// The inward unit normal of that face.
+    pub normal: DVec4,
     /// The arc length along the ray to the face.
     pub t: f64,
     /// `tanh t`, from which the crossing point is formed without cosh
@@ -60,13 +68,20 @@ pub struct Crossing {
 /// and `pairings[partner[i]]` the inverse of `pairings[i]`; `matrices` are
 /// their Lorentz matrices; every edge cycle closes up (`gluing.rs`). All
 /// checked when a space is built.
+///
+/// A horosphere-inscribed cell with mirror walls has infinitely many
+/// faces: `faces` then lists those near the base point (for the searches
+/// over tiles) and the exit is found by walking the cell's chambers
+/// (`horocell.rs`).
 #[derive(Clone, Debug)]
 pub struct QuotientSpace {
     kind: SpaceKind,
-    domain: DomainPolyhedron,
+    domain: Option<DomainPolyhedron>,
+    faces: Vec<DVec4>,
     partner: Vec<usize>,
     pairings: Vec<Isometry>,
     matrices: Vec<DMat4>,
+    horo: Option<horocell::HoroCell>,
     placement: Isometry,
 }
 
@@ -83,9 +98,16 @@ impl QuotientSpace {
         self.kind.symbol()
     }
 
-    /// The domain, in the current placement.
-    pub fn domain(&self) -> &DomainPolyhedron {
-        &self.domain
+    /// The domain, in the current placement; `None` for a
+    /// horosphere-inscribed cell, which has infinitely many faces.
+    pub fn domain(&self) -> Option<&DomainPolyhedron> {
+        self.domain.as_ref()
+    }
+
+    /// The inward unit normals of the domain's faces (of a
+    /// horosphere-inscribed cell, those within 5 of the base point).
+    pub fn faces(&self) -> &[DVec4] {
+        &self.faces
     }
 
     /// The face each face is glued to.
@@ -118,12 +140,15 @@ impl QuotientSpace {
             .iter()
             .map(|g| iso.compose(&g.compose(&inverse)))
             .collect();
+        let m = iso.to_lorentz();
         QuotientSpace {
             kind: self.kind,
-            domain: self.domain.transformed(&iso.to_lorentz()),
+            domain: self.domain.as_ref().map(|d| d.transformed(&m)),
+            faces: self.faces.iter().map(|n| m * *n).collect(),
             partner: self.partner.clone(),
             matrices: pairings.iter().map(Isometry::to_lorentz).collect(),
             pairings,
+            horo: self.horo.as_ref().map(|h| h.transformed(&m)),
             placement: iso.compose(&self.placement),
         }
     }
@@ -131,10 +156,10 @@ impl QuotientSpace {
     /// True if `x` (a hyperboloid point) lies in the domain, to `tolerance`
     /// in `sinh` of the distance outside a face.
     pub fn contains(&self, x: DVec4, tolerance: f64) -> bool {
-        self.domain
-            .faces()
-            .iter()
-            .all(|n| lorentz::dot(x, *n) >= -tolerance)
+        match &self.horo {
+            Some(h) => h.contains(x, tolerance),
+            None => self.faces.iter().all(|n| lorentz::dot(x, *n) >= -tolerance),
+        }
     }
 
     /// The first face the ray leaves the domain by, from its origin (which
@@ -147,8 +172,11 @@ impl QuotientSpace {
     /// (rounding, after a crossing at an edge) is left at `t = 0`.
     #[inline]
     pub fn exit(&self, ray: &Ray) -> Option<Crossing> {
+        if let Some(h) = &self.horo {
+            return h.exit(ray);
+        }
         let mut best: Option<(usize, f64)> = None;
-        for (i, n) in self.domain.faces().iter().enumerate() {
+        for (i, n) in self.faces.iter().enumerate() {
             let b = lorentz::dot(ray.dir, *n);
             if !(b < 0.0) {
                 continue;
@@ -161,6 +189,7 @@ impl QuotientSpace {
         let (face, s) = best?;
         (s < 1.0).then(|| Crossing {
             face,
+            normal: self.faces[face],
             t: s.atanh(),
             tanh_t: s,
         })
@@ -171,12 +200,27 @@ impl QuotientSpace {
     /// counted from there.
     #[inline]
     pub fn carry(&self, ray: &Ray, crossing: Crossing) -> Ray {
-        // X = cosh t O + sinh t D = (O + s D) / sqrt(1 - s²) for s = tanh t;
-        // the common scale is restored below anyway.
         let s = crossing.tanh_t;
-        let x = ray.origin + s * ray.dir;
-        let d = s * ray.origin + ray.dir;
-        let m = &self.matrices[crossing.face];
+        let (x, d) = if s < 0.9 {
+            // X = cosh t O + sinh t D = (O + s D) / sqrt(1 - s²) for
+            // s = tanh t; the common scale is restored below.
+            (ray.origin + s * ray.dir, s * ray.origin + ray.dir)
+        } else {
+            // Far along, s near 1 fixes t only to eps / (1 - s²): use t.
+            let (ct, st) = (crossing.t.cosh(), crossing.t.sinh());
+            (
+                ct * ray.origin + st * ray.dir,
+                st * ray.origin + ct * ray.dir,
+            )
+        };
+        let mirror;
+        let m = match self.matrices.get(crossing.face) {
+            Some(m) => m,
+            None => {
+                mirror = horocell::reflection(crossing.normal);
+                &mirror
+            }
+        };
         let mut o = *m * x;
         let mut v = *m * d;
         // Restore <O,O> = -1, <D,D> = 1, <O,D> = 0 after rounding.
@@ -194,7 +238,7 @@ mod tests {
     #[test]
     fn a_ray_from_the_centre_leaves_by_the_face_it_points_at() {
         let s = QuotientSpace::seifert_weber().unwrap();
-        for (i, n) in s.domain().faces().iter().enumerate() {
+        for (i, n) in s.faces().iter().enumerate() {
             let ray = Ray::from_origin(-n.truncate()).unwrap();
             let c = s.exit(&ray).unwrap();
             assert_eq!(c.face, i);
@@ -202,8 +246,8 @@ mod tests {
             assert!((c.t - (-n.w).asinh()).abs() < 1e-14);
             let next = s.carry(&ray, c);
             let j = s.partner(i);
-            assert!(lorentz::dot(next.origin, s.domain().faces()[j]).abs() < 1e-14);
-            assert!(lorentz::dot(next.dir, s.domain().faces()[j]) > 0.0);
+            assert!(lorentz::dot(next.origin, s.faces()[j]).abs() < 1e-14);
+            assert!(lorentz::dot(next.dir, s.faces()[j]) > 0.0);
         }
     }
 }

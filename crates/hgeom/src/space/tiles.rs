@@ -17,6 +17,7 @@ use glam::DVec4;
 use crate::error::GeomError;
 use crate::isometry::Isometry;
 use crate::lorentz;
+use crate::plane::HPlane;
 use crate::point::Point;
 use crate::ray::Ray;
 
@@ -41,7 +42,7 @@ impl QuotientSpace {
     /// Errors: [`GeomError::TooManyCopies`] past [`MAX_COPIES`].
     pub fn copies_meeting(&self, centre: DVec4, radius: f64) -> Result<Vec<Isometry>, GeomError> {
         let reach = radius.sinh();
-        let faces = self.domain.faces();
+        let faces = &self.faces;
         self.search(|b: &Isometry| {
             let c = b.to_lorentz() * centre;
             faces.iter().all(|n| lorentz::dot(c, *n) > -reach)
@@ -97,7 +98,7 @@ impl QuotientSpace {
                 Some(c) if c.t < left => {
                     ray = self.carry(&ray, c);
                     left -= c.t;
-                    b = self.pairings[c.face].compose(&b);
+                    b = self.pairing_at(&c)?.compose(&b);
                 }
                 _ => return Ok(b),
             }
@@ -107,23 +108,49 @@ impl QuotientSpace {
         })
     }
 
+    /// The pairing a crossing is carried by.
+    fn pairing_at(&self, c: &super::Crossing) -> Result<Isometry, GeomError> {
+        match self.pairings.get(c.face) {
+            Some(g) => Ok(*g),
+            None => Ok(Isometry::reflection(&HPlane::from_normal(c.normal)?)),
+        }
+    }
+
     /// The largest distance from the centre to a finite vertex, or to a
-    /// face where every vertex is ideal.
+    /// face (for a horosphere-inscribed cell, 1: its faces' spacing near
+    /// the base point).
     fn finite_radius(&self) -> f64 {
+        let Some(domain) = &self.domain else {
+            return 1.0;
+        };
         let centre = self.centre();
-        let vertices = self
-            .domain
+        let vertices = domain
             .vertices()
             .iter()
-            .zip(self.domain.ideal())
+            .zip(domain.ideal())
             .filter(|(_, ideal)| !**ideal)
             .map(|(v, _)| lorentz::distance(*v, centre));
-        let faces = self
-            .domain
+        let faces = domain
             .faces()
             .iter()
             .map(|n| lorentz::dot(centre, *n).asinh());
         vertices.chain(faces).fold(0.0, f64::max)
+    }
+
+    /// A point inside the domain: its centre, or for a horosphere-inscribed
+    /// cell (whose base point is the centre of a face) the point 0.3 in
+    /// from it.
+    fn interior(&self) -> DVec4 {
+        let inside = match (&self.horo, self.faces.first()) {
+            (Some(_), Some(n)) => {
+                // In the base placement the face through the origin.
+                let base = self.placement.inverse().to_lorentz() * *n;
+                Point::at_distance_from_origin(base.truncate(), 0.3)
+                    .map_or(DVec4::W, |p| p.to_hyperboloid())
+            }
+            _ => DVec4::W,
+        };
+        self.placement.to_lorentz() * inside
     }
 
     /// Breadth-first over the elements `g_i B` from the identity, keeping
@@ -169,18 +196,21 @@ impl QuotientSpace {
     /// A point inside the domain that no element but the identity fixes:
     /// the centre nudged in a direction of no symmetry.
     fn witness(&self) -> DVec4 {
-        let centre = self.centre();
+        let centre = self.interior();
         let inradius = self
-            .domain
-            .faces()
+            .faces
             .iter()
             .map(|n| lorentz::dot(centre, *n).asinh())
-            .fold(f64::INFINITY, f64::min);
+            .fold(f64::INFINITY, f64::min)
+            .min(0.3);
         let nudge = Point::at_distance_from_origin(
             glam::DVec3::new(0.312_5, 0.577_215_664, 0.723_606_797),
             0.37 * inradius,
         )
         .map_or(glam::DVec4::W, |p| p.to_hyperboloid());
-        self.placement.to_lorentz() * nudge
+        // The nudge is made at the origin; carry it to the interior point.
+        let to_inside = Point::from_hyperboloid(self.placement.inverse().to_lorentz() * centre)
+            .map_or(Isometry::IDENTITY, Isometry::transvection_from_origin);
+        self.placement.to_lorentz() * to_inside.to_lorentz() * nudge
     }
 }

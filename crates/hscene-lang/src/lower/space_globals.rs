@@ -4,7 +4,7 @@
 //! outside the domain and is folded in). What a space is and how rays,
 //! objects and lights behave in it: `docs/manifolds.md`.
 
-use hgeom::{MAX_COPIES, QuotientSpace, SPACE_NAMES, SpaceKind};
+use hgeom::{HOROSPHERE_CELL_REACH, MAX_COPIES, QuotientSpace, SPACE_NAMES, SpaceKind};
 
 use super::Lowerer;
 use crate::diagnostic::{Code, Diagnostic, Span};
@@ -32,9 +32,8 @@ pub(super) enum SpaceKey {
 
 fn spaces_help() -> String {
     format!(
-        "spaces are {}, or `{{p,q,r}}` for the cell of a regular honeycomb with finite cells \
-         ({{4,3,5}}, {{5,3,4}}, {{5,3,5}}, {{3,5,3}}, {{3,3,6}}, {{4,3,6}}, {{5,3,6}}, {{3,4,4}}) \
-         with mirror walls",
+        "spaces are {}, or `{{p,q,r}}` (one of the 15 regular honeycombs) for its cell with \
+         mirror walls",
         SPACE_NAMES.join(", ")
     )
 }
@@ -209,7 +208,21 @@ impl Lowerer<'_> {
             let placed = hgeom::Point::from_hyperboloid(centre)
                 .and_then(|p| space.fold(&p).ok())
                 .map(|home| home.to_lorentz() * centre);
-            if let Some(home) = placed
+            // A horosphere-inscribed cell lists its faces only near its
+            // base point: what lies deeper in the cell's cusp would miss
+            // the images in the faces beyond.
+            let too_deep = space.domain().is_none()
+                && placed.is_some_and(|home| {
+                    hgeom::lorentz::distance(home, hgeom::glam::DVec4::W) + reach
+                        > HOROSPHERE_CELL_REACH
+                });
+            if too_deep {
+                found.push(Diagnostic::new(
+                    Code::NotInSpace,
+                    *span,
+                    format!("this object reaches farther than {HOROSPHERE_CELL_REACH} from the origin, too deep in the cell's cusp to be mirrored in all the faces near it"),
+                ).with_help("place it nearer the origin (the centre of the cell's face there)"));
+            } else if let Some(home) = placed
                 && space.copies_meeting(home, reach).is_err()
             {
                 found.push(Diagnostic::new(
