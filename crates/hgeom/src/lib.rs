@@ -111,7 +111,7 @@ pub use segment::Segment;
 pub use shape::{Shape, Solid};
 pub use space::{
     Crossing, DomainEdge, DomainPolyhedron, EdgeCycle, HOROSPHERE_CELL_REACH, MAX_CHAMBER_STEPS,
-    MAX_COPIES, QuotientSpace, SPACE_NAMES, SpaceKind,
+    MAX_COPIES, MAX_PAIRINGS, QuotientSpace, SPACE_NAMES, SpaceKind,
 };
 pub use sphere::HSphere;
 

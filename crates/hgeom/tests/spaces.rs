@@ -88,7 +88,7 @@ fn edge_cycles_close_up() {
             SpaceKind::SeifertWeber => Some((12, 30, 6)),
             SpaceKind::FigureEight => Some((6, 9, 2)),
             SpaceKind::Whitehead => Some((8, 12, 3)),
-            SpaceKind::Mirrors(_) => None,
+            SpaceKind::Mirrors(_) | SpaceKind::Pairings => None,
         };
         if let Some((f, e, k)) = expected {
             assert_eq!(
@@ -283,4 +283,94 @@ fn off_line(x: &V4, o: &V4, v: &V4) -> f64 {
         return 0.0;
     }
     s2.sqrt().asinh().to_f64()
+}
+
+/// The pairings of a Dirichlet domain as SnapPy gives them (time
+/// coordinate first), from a file of `scenes/manifolds/`, in hgeom's
+/// coordinates (time last).
+fn snappy_pairings(file: &str) -> Vec<DMat4> {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../scenes/manifolds")
+        .join(file);
+    let text = std::fs::read_to_string(path).unwrap();
+    let doc: serde_json::Value = serde_json::from_str(&text).unwrap();
+    doc["pairings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|m| {
+            let e = |r: usize, c: usize| m[r][c].as_f64().unwrap();
+            // Row r, column c of the time-last matrix is row (r+1)%4,
+            // column (c+1)%4 of the time-first one.
+            let at = |r: usize, c: usize| e((r + 1) % 4, (c + 1) % 4);
+            DMat4::from_cols_array_2d(&std::array::from_fn(|c| std::array::from_fn(|r| at(r, c))))
+        })
+        .collect()
+}
+
+/// Manifolds from SnapPy's Dirichlet domains: the figure-eight knot
+/// complement (m004, cusped) and the Weeks manifold (m003(-3,1), the
+/// closed hyperbolic manifold of least volume). Their domains come out
+/// with SnapPy's face, edge and vertex counts, every edge cycle closes to
+/// 2π with the identity, and rays cross a thousand faces.
+#[test]
+fn snappy_dirichlet_domains_are_manifolds() {
+    for (file, faces, edges, vertices, ideal) in
+        [("m004.json", 12, 18, 8, 4), ("weeks.json", 18, 42, 26, 0)]
+    {
+        let s = QuotientSpace::from_pairings(&snappy_pairings(file)).unwrap();
+        let d = s.domain().unwrap();
+        assert_eq!(
+            (
+                d.faces().len(),
+                d.edges().len(),
+                d.vertices().len(),
+                d.ideal().iter().filter(|i| **i).count()
+            ),
+            (faces, edges, vertices, ideal),
+            "{file}"
+        );
+        let cycles = s.edge_cycles().unwrap();
+        let worst = cycles
+            .iter()
+            .map(|c| (c.angle_sum - 2.0 * PI).abs())
+            .fold(0.0, f64::max);
+        println!(
+            "{file}: {} cycles, angle sums off by {worst:.1e}",
+            cycles.len()
+        );
+        assert!(worst < 1e-12, "{file}");
+        let mut rng = SplitMix64::new(7);
+        let mut ray = Ray::from_origin(rng.direction()).unwrap();
+        let mut crossed = 0;
+        for _ in 0..1000 {
+            let Some(c) = s.exit(&ray) else { break };
+            ray = s.carry(&ray, c);
+            crossed += 1;
+            assert!(
+                s.contains(ray.origin, 1e-9),
+                "{file}: carried out of the domain"
+            );
+        }
+        assert!(crossed == 1000 || ideal > 0, "{file}: {crossed}");
+    }
+}
+
+/// What is not a gluing is refused with the face it is about.
+#[test]
+fn bad_pairings_are_refused() {
+    let good = snappy_pairings("weeks.json");
+    let mut missing = good.clone();
+    missing.remove(0);
+    assert!(matches!(
+        QuotientSpace::from_pairings(&missing),
+        Err(hgeom::GeomError::BadPairing { .. })
+    ));
+    let mut skewed = good.clone();
+    skewed[3].x_axis.x *= 1.01;
+    assert!(matches!(
+        QuotientSpace::from_pairings(&skewed),
+        Err(hgeom::GeomError::BadPairing { face: 4, .. })
+    ));
+    assert!(QuotientSpace::from_pairings(&good[..3]).is_err());
 }

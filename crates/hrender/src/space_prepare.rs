@@ -6,10 +6,13 @@
 //! domain's cells. What is kept and why is in `docs/manifolds.md`.
 
 use hgeom::{
-    DEFAULT_HORIZON, GeomError, HoneycombStyle, Isometry, Point, QuotientSpace, RegularHoneycomb,
+    DEFAULT_HORIZON, GeomError, HCylinder, HLine, HoneycombStyle, IdealPoint, Isometry, Point,
+    QuotientSpace, RegularHoneycomb, Rod, Vertex,
 };
 use hscene_ir::view::PixelFootprint;
-use hscene_ir::{self as ir, Light, MAX_LIGHT_IMAGES, Object, PartMaterials, Scene, Space};
+use hscene_ir::{
+    self as ir, DomainEdges, Light, MAX_LIGHT_IMAGES, Object, PartMaterials, Scene, Space,
+};
 
 use crate::error::RenderError;
 use crate::space_domain::PreparedSpace;
@@ -32,7 +35,8 @@ pub(crate) fn unfold(
     footprint: Option<&PixelFootprint>,
 ) -> Result<Unfolded, RenderError> {
     let invalid = |what: String| RenderError::InvalidScene(what);
-    let q = QuotientSpace::new(space.kind)
+    let q = space
+        .build()
         .map_err(|e| invalid(format!("the space {}: {e}", space.kind)))?;
     let to_canonical = stages
         .iter()
@@ -61,28 +65,7 @@ pub(crate) fn unfold(
         }
     }
     if let Some(d) = space.domain {
-        let style = HoneycombStyle {
-            edges: Some(d.width),
-            faces: false,
-            vertices: None,
-            depth: None,
-            cell_classes: 1,
-        };
-        let surface = RegularHoneycomb::new(q.symbol(), style)
-            .map_err(|e| invalid(format!("the domain's edges: {e}")))?;
-        unfolded.objects.push(Object {
-            shape: ir::Shape::Honeycomb(Box::new(ir::Honeycomb {
-                surface,
-                materials: PartMaterials {
-                    faces: None,
-                    palette: Vec::new(),
-                    face_palette: Vec::new(),
-                },
-            })),
-            material: d.material,
-            name: None,
-            placement: Isometry::IDENTITY,
-        });
+        unfolded.objects.extend(domain_edges(&q, d)?);
     }
     unfolded.lights.clear();
     for (index, l) in scene.lights.iter().enumerate() {
@@ -112,11 +95,14 @@ pub(crate) fn unfold(
     let to_canonical = staged
         .iter()
         .fold(Isometry::IDENTITY, |acc, stage| stage.compose(&acc));
-    let horizon = footprint.map_or(DEFAULT_HORIZON, |f| {
-        RegularHoneycomb::new(q.symbol(), HoneycombStyle::default())
+    // A domain from its pairings has no honeycomb: it is walked to the
+    // default horizon (or its crossings run out first).
+    let horizon = match (footprint, q.symbol()) {
+        (Some(f), Some(symbol)) => RegularHoneycomb::new(symbol, HoneycombStyle::default())
             .map_or(DEFAULT_HORIZON, |h| h.horizon_for_pixel(f.smallest))
-            .min(DEFAULT_HORIZON)
-    });
+            .min(DEFAULT_HORIZON),
+        _ => DEFAULT_HORIZON,
+    };
     Ok(Unfolded {
         scene: unfolded,
         stages: staged,
@@ -167,4 +153,69 @@ fn object_images(q: &QuotientSpace, o: &Object) -> Result<Vec<Object>, Failure> 
             }
         })
         .collect()
+}
+
+/// The domain's edges as rods of `d`'s radius: the honeycomb of the
+/// domain's cells (exactly what `Honeycomb {p,q,r}, edges = w` draws), or
+/// for a domain from its pairings, a rod on each finite edge and the tube
+/// about the line of each edge that runs into a cusp (the walk tests it
+/// only inside the domain, where it is that edge's rod); the other tiles'
+/// edges through a vertex that are not the domain's own are not drawn, a
+/// difference within the rods' radius of the vertex.
+fn domain_edges(q: &QuotientSpace, d: DomainEdges) -> Result<Vec<Object>, RenderError> {
+    let invalid = |e: GeomError| RenderError::InvalidScene(format!("the domain's edges: {e}"));
+    let object = |shape: ir::Shape| Object {
+        shape,
+        material: d.material,
+        name: None,
+        placement: Isometry::IDENTITY,
+    };
+    if let Some(symbol) = q.symbol() {
+        let style = HoneycombStyle {
+            edges: Some(d.width),
+            faces: false,
+            vertices: None,
+            depth: None,
+            cell_classes: 1,
+        };
+        let surface = RegularHoneycomb::new(symbol, style).map_err(invalid)?;
+        return Ok(vec![object(ir::Shape::Honeycomb(Box::new(
+            ir::Honeycomb {
+                surface,
+                materials: PartMaterials {
+                    faces: None,
+                    palette: Vec::new(),
+                    face_palette: Vec::new(),
+                },
+            },
+        )))]);
+    }
+    let Some(domain) = q.domain() else {
+        return Ok(Vec::new());
+    };
+    let vertex = |k: usize| -> Result<Vertex, GeomError> {
+        let v = domain.vertices()[k];
+        if domain.ideal()[k] {
+            Ok(Vertex::Ideal(IdealPoint::from_direction(v.truncate())?))
+        } else {
+            Point::from_hyperboloid(v)
+                .map(Vertex::Interior)
+                .ok_or(GeomError::NotFinite)
+        }
+    };
+    domain
+        .edges()
+        .iter()
+        .map(|e| {
+            let (a, b) = (vertex(e.vertices[0])?, vertex(e.vertices[1])?);
+            // A finite edge is a rod (bounded, so the hierarchy culls it);
+            // one that runs into a cusp the tube about its whole line.
+            if matches!((a, b), (Vertex::Interior(_), Vertex::Interior(_))) {
+                return Ok(object(ir::Shape::Rod(Rod::new(a, b, d.width)?)));
+            }
+            let line = HLine::through(&a, &b)?;
+            Ok(object(ir::Shape::Cylinder(HCylinder::new(line, d.width)?)))
+        })
+        .collect::<Result<Vec<_>, GeomError>>()
+        .map_err(invalid)
 }

@@ -3,7 +3,10 @@
 //! ([`hgeom::QuotientSpace`]). What each space is and how rays, objects and
 //! lights behave in it is described in `docs/manifolds.md`.
 
-use hgeom::SpaceKind;
+use std::sync::Arc;
+
+use hgeom::glam::DMat4;
+use hgeom::{GeomError, QuotientSpace, SpaceKind};
 
 use crate::material::MaterialId;
 
@@ -34,10 +37,28 @@ pub struct DomainEdges {
 pub struct Space {
     /// Which space.
     pub kind: SpaceKind,
+    /// For [`SpaceKind::Pairings`], the face pairings of its Dirichlet
+    /// domain about the origin (Lorentz matrices, time coordinate last:
+    /// [`QuotientSpace::from_pairings`]); `None` for the others.
+    pub pairings: Option<Arc<[DMat4]>>,
     /// The domain's edges, if drawn.
     pub domain: Option<DomainEdges>,
     /// The images of each light within this distance of the domain's
     /// centre (at most [`MAX_LIGHT_IMAGES`], the nearest) light the scene.
     /// Invariant: in `(0, MAX_LIGHT_REACH]`.
     pub light_reach: f64,
+}
+
+impl Space {
+    /// The space, built and checked (a built-in one from its kind, one read
+    /// from a file from its pairings).
+    ///
+    /// Errors: those of [`QuotientSpace::new`] and
+    /// [`QuotientSpace::from_pairings`] (the language has checked both).
+    pub fn build(&self) -> Result<QuotientSpace, GeomError> {
+        match &self.pairings {
+            Some(pairings) => QuotientSpace::from_pairings(pairings),
+            None => QuotientSpace::new(self.kind),
+        }
+    }
 }

@@ -149,6 +149,8 @@ codes! {
     MeshFileInvalid = "HSC0502", Error, "invalid mesh file";
     ImageFileUnreadable = "HSC0503", Error, "image file cannot be read";
     ImageFileInvalid = "HSC0504", Error, "invalid image file";
+    SpaceFileUnreadable = "HSC0505", Error, "space file cannot be read";
+    SpaceFileInvalid = "HSC0506", Error, "invalid space file";
     // Limits.
     TooManyPrimitives = "HSC0601", Error, "too many primitives";
     // Lints.
@@ -351,7 +353,7 @@ mod tests {
     #[test]
     fn code_table_is_consistent() {
         assert_eq!(Code::ALL.len(), CODES.len());
-        assert_eq!(Code::ALL.len(), 54);
+        assert_eq!(Code::ALL.len(), 56);
         let mut strings = HashSet::new();
         for &(code, s, sev, title) in CODES {
             assert_eq!(code.as_str(), s);

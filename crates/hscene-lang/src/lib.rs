@@ -24,6 +24,7 @@ mod numbers;
 mod options;
 mod parser;
 pub mod source;
+pub mod space_file;
 pub mod symbols;
 pub mod syntax;
 pub mod tokens;

@@ -160,3 +160,61 @@ fn domain_and_light_reach_are_checked() {
         );
     }
 }
+
+/// Compiles `globals` with files taken from `scenes/manifolds/`.
+fn compile_in_manifolds(globals: &str) -> hscene_lang::Compiled {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenes/manifolds");
+    hscene_lang::compile_with(
+        &format!("Globals {{ {globals} }}\n{MATERIALS}"),
+        &hscene_lang::Options {
+            base_dir: Some(dir),
+            frame: 0,
+        },
+    )
+}
+
+#[test]
+fn a_space_file_gives_the_manifold_of_its_pairings() {
+    let c = compile_in_manifolds("space = \"weeks.json\"; domain = 0.02, #gold;");
+    assert!(!c.has_errors(), "{:#?}", c.diagnostics);
+    let space = c.scene.unwrap().settings.space.unwrap();
+    assert_eq!(space.kind, SpaceKind::Pairings);
+    assert_eq!(space.pairings.as_ref().map(|p| p.len()), Some(18));
+    assert_eq!(space.build().unwrap().faces().len(), 18);
+}
+
+#[test]
+fn a_space_file_that_glues_no_manifold_is_refused_at_its_name() {
+    let dir = tempfile::tempdir().unwrap();
+    let weeks: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("../../scenes/manifolds/weeks.json"),
+        )
+        .unwrap(),
+    )
+    .unwrap();
+    let mut pairings = weeks["pairings"].as_array().unwrap().clone();
+    pairings.remove(0);
+    std::fs::write(
+        dir.path().join("broken.json"),
+        serde_json::json!({ "pairings": pairings }).to_string(),
+    )
+    .unwrap();
+    let src = "Globals { space = \"broken.json\"; }";
+    let c = hscene_lang::compile_with(
+        src,
+        &hscene_lang::Options {
+            base_dir: Some(dir.path().to_path_buf()),
+            frame: 0,
+        },
+    );
+    let d = c
+        .diagnostics
+        .iter()
+        .find(|d| d.is_error())
+        .expect("an error");
+    assert_eq!(d.code.as_str(), "HSC0506");
+    assert_eq!(&src[d.span.start..d.span.end], "\"broken.json\"");
+    assert!(d.message.contains("glue no manifold"), "{}", d.message);
+}

@@ -57,6 +57,9 @@ pub enum SpaceKind {
     Whitehead,
     /// The cell of a regular honeycomb, with mirror walls.
     Mirrors(Schlafli),
+    /// A manifold given by the face pairings of a Dirichlet domain
+    /// ([`QuotientSpace::from_pairings`]), read from a file.
+    Pairings,
 }
 
 impl SpaceKind {
@@ -70,21 +73,18 @@ impl SpaceKind {
         }
     }
 
-    /// The regular honeycomb whose cells make the domain.
-    pub fn symbol(&self) -> Schlafli {
+    /// The regular honeycomb whose cells make the domain; `None` for a
+    /// domain given by its pairings.
+    pub fn symbol(&self) -> Option<Schlafli> {
         let (p, q, r) = match self {
             SpaceKind::SeifertWeber => (5, 3, 5),
             SpaceKind::FigureEight => (3, 3, 6),
             SpaceKind::Whitehead => (3, 4, 4),
-            SpaceKind::Mirrors(s) => return *s,
+            SpaceKind::Mirrors(s) => return Some(*s),
+            SpaceKind::Pairings => return None,
         };
         // The three symbols are hyperbolic (schlafli.rs lists the fifteen).
-        Schlafli::new(p, q, r).unwrap_or_else(|_| unreachable!("{{{p},{q},{r}}} is hyperbolic"))
-    }
-
-    /// True for a closed space (a compact domain).
-    pub fn is_closed(&self) -> bool {
-        !self.symbol().has_ideal_vertices()
+        Schlafli::new(p, q, r).ok()
     }
 
     /// True for the cell with mirror walls.
@@ -100,6 +100,7 @@ impl std::fmt::Display for SpaceKind {
             SpaceKind::FigureEight => f.write_str("figure_eight"),
             SpaceKind::Whitehead => f.write_str("whitehead"),
             SpaceKind::Mirrors(s) => write!(f, "{s}"),
+            SpaceKind::Pairings => f.write_str("a domain from its pairings"),
         }
     }
 }
@@ -111,7 +112,11 @@ impl QuotientSpace {
     /// Errors: the gluing checks' errors, which the built-in spaces pass
     /// (`tests/spaces.rs`).
     pub fn new(kind: SpaceKind) -> Result<QuotientSpace, GeomError> {
-        let symbol = kind.symbol();
+        let Some(symbol) = kind.symbol() else {
+            return Err(GeomError::BadDomain(
+                "a domain given by its pairings is built by QuotientSpace::from_pairings".into(),
+            ));
+        };
         let simplex = CoxeterSimplex::new(symbol);
         if symbol.has_ideal_cells() {
             // Only a mirrored cell has such a domain (the named spaces'
@@ -155,11 +160,24 @@ impl QuotientSpace {
                 by_correspondence(faces, &FIGURE_EIGHT)?
             }
             SpaceKind::Whitehead => by_correspondence(cell, &WHITEHEAD)?,
+            // Handled above: it has no symbol.
+            SpaceKind::Pairings => return Err(GeomError::BadDomain("no cells".into())),
         };
+        QuotientSpace::glued(kind, faces, partner, &matrices)
+    }
+
+    /// The space of a finite domain with faces `faces` (inward unit
+    /// normals) glued to `partner` by `matrices`, checked.
+    pub(super) fn glued(
+        kind: SpaceKind,
+        faces: Vec<DVec4>,
+        partner: Vec<usize>,
+        matrices: &[DMat4],
+    ) -> Result<QuotientSpace, GeomError> {
         let domain = DomainPolyhedron::from_faces(faces)?;
         // The walk uses the matrices of the exact isometries (the stable
         // form, which conjugation by a placement keeps exact): check those.
-        let pairings = isometries(&matrices)?;
+        let pairings = isometries(matrices)?;
         let matrices: Vec<DMat4> = pairings.iter().map(Isometry::to_lorentz).collect();
         check_pairings(&domain, &partner, &matrices)?;
         let cycles = edge_cycles(&domain, &partner, &matrices)?;
@@ -190,7 +208,9 @@ impl QuotientSpace {
     pub fn edge_cycles(&self) -> Result<Vec<super::EdgeCycle>, GeomError> {
         match (&self.domain, &self.horo) {
             (Some(domain), _) => edge_cycles(domain, &self.partner, &self.matrices),
-            (None, Some(cell)) => Ok(cell.relations(&self.faces, self.kind.symbol().r())),
+            (None, Some(cell)) => {
+                Ok(cell.relations(&self.faces, self.kind.symbol().map_or(2, |s| s.r())))
+            }
             (None, None) => Ok(Vec::new()),
         }
     }

@@ -18,6 +18,8 @@
 //! - `builtin`: the named spaces (Seifert-Weber, the figure-eight knot
 //!   and Whitehead link complements, the mirrored cells of the regular
 //!   honeycombs).
+//! - `dirichlet`: a manifold from the pairings of a Dirichlet domain (as
+//!   SnapPy gives them), its faces the bisectors they imply.
 //! - `horocell`: the cell of a honeycomb inscribed in a horosphere, whose
 //!   faces are infinitely many, walked through its chambers.
 //! - `tiles`: the images of a point or ball near the domain (the copies of
@@ -25,6 +27,7 @@
 //!   into the domain.
 
 mod builtin;
+mod dirichlet;
 mod gluing;
 mod horocell;
 mod polyhedron;
@@ -38,6 +41,7 @@ use crate::lorentz;
 use crate::ray::Ray;
 
 pub use builtin::{SPACE_NAMES, SpaceKind};
+pub use dirichlet::MAX_PAIRINGS;
 pub use gluing::EdgeCycle;
 pub use horocell::{MAX_CHAMBER_STEPS, NEAR_FACES as HOROSPHERE_CELL_REACH};
 pub use polyhedron::{DomainEdge, DomainPolyhedron};
@@ -93,8 +97,9 @@ impl QuotientSpace {
 
     /// The regular honeycomb whose cells tile the domain: the tiles of the
     /// space's universal cover are unions of its cells, so its edges are
-    /// the domain's edges and their images.
-    pub fn symbol(&self) -> Schlafli {
+    /// the domain's edges and their images. `None` for a domain given by
+    /// its pairings.
+    pub fn symbol(&self) -> Option<Schlafli> {
         self.kind.symbol()
     }
 

@@ -4,17 +4,25 @@
 //! outside the domain and is folded in). What a space is and how rays,
 //! objects and lights behave in it: `docs/manifolds.md`.
 
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use hgeom::glam::DMat4;
 use hgeom::{HOROSPHERE_CELL_REACH, MAX_COPIES, QuotientSpace, SPACE_NAMES, SpaceKind};
 
 use super::Lowerer;
+use super::text::quote;
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::{DEFAULT_LIGHT_REACH, DomainEdges, MAX_LIGHT_REACH, MaterialId, Space};
+use crate::space_file::{self, SpaceFileError};
 use crate::syntax::Value;
 
 /// The space keys as given, settled once every object and light is known.
 #[derive(Default)]
 pub(super) struct SpaceParts {
     kind: Option<(SpaceKind, Span)>,
+    /// The pairings of a domain read from a file (`space = "file.json"`).
+    pairings: Option<Arc<[DMat4]>>,
     domain: Option<(f64, MaterialId, Span)>,
     light_reach: Option<(f64, Span)>,
 }
@@ -32,8 +40,9 @@ pub(super) enum SpaceKey {
 
 fn spaces_help() -> String {
     format!(
-        "spaces are {}, or `{{p,q,r}}` (one of the 15 regular honeycombs) for its cell with \
-         mirror walls",
+        "spaces are {}, `{{p,q,r}}` (one of the 15 regular honeycombs) for its cell with \
+         mirror walls, or a file name in quotes (\"m004.json\") for a manifold given by the \
+         face pairings of a Dirichlet domain (docs/manifolds.md)",
         SPACE_NAMES.join(", ")
     )
 }
@@ -131,6 +140,13 @@ impl Lowerer<'_> {
                 };
                 SpaceKind::Mirrors(symbol)
             }
+            Value::Str { text, span } => {
+                if let Some(pairings) = self.space_file(text, *span) {
+                    self.space.pairings = Some(pairings);
+                    self.space.kind = Some((SpaceKind::Pairings, *span));
+                }
+                return;
+            }
             other => {
                 self.report(
                     Diagnostic::new(
@@ -178,7 +194,11 @@ impl Lowerer<'_> {
             }
             return;
         };
-        let Ok(space) = QuotientSpace::new(kind) else {
+        let built = match &self.space.pairings {
+            Some(pairings) => QuotientSpace::from_pairings(pairings),
+            None => QuotientSpace::new(kind),
+        };
+        let Ok(space) = built else {
             return;
         };
         let mut found = Vec::new();
@@ -260,6 +280,7 @@ impl Lowerer<'_> {
         }
         self.settings.space = Some(Space {
             kind,
+            pairings: self.space.pairings.clone(),
             domain: self
                 .space
                 .domain
@@ -268,6 +289,60 @@ impl Lowerer<'_> {
         });
     }
 }
+
+impl Lowerer<'_> {
+    /// The pairings of the space file `text` (relative to the scene's
+    /// directory), checked as a file and as a gluing; reported at `span`
+    /// and `None` if either fails.
+    fn space_file(&mut self, text: &str, span: Span) -> Option<Arc<[DMat4]>> {
+        let path = match self.base_dir {
+            Some(dir) => dir.join(text),
+            None => PathBuf::from(text),
+        };
+        let pairings = match space_file::load(&path) {
+            Ok(p) => p,
+            Err(SpaceFileError::Io(e)) => {
+                self.report(
+                    Diagnostic::new(
+                        Code::SpaceFileUnreadable,
+                        span,
+                        format!("cannot read the space file {}: {e}", quote(text)),
+                    )
+                    .with_help("a relative file name is taken from the scene file's directory"),
+                );
+                return None;
+            }
+            Err(e) => {
+                self.report(
+                    Diagnostic::new(
+                        Code::SpaceFileInvalid,
+                        span,
+                        format!("the space file {} is not one: {e}", quote(text)),
+                    )
+                    .with_help(FILE_HELP),
+                );
+                return None;
+            }
+        };
+        if let Err(e) = QuotientSpace::from_pairings(&pairings) {
+            self.report(
+                Diagnostic::new(
+                    Code::SpaceFileInvalid,
+                    span,
+                    format!("the pairings in {} glue no manifold: {e}", quote(text)),
+                )
+                .with_help(FILE_HELP),
+            );
+            return None;
+        }
+        Some(pairings.into())
+    }
+}
+
+/// What a space file holds.
+const FILE_HELP: &str = "a space file is JSON: {\"pairings\": [4×4 Lorentz matrices by rows, time \
+                         coordinate first]}, the face pairings of a Dirichlet domain about the \
+                         origin, as SnapPy's dirichlet_domain().pairing_matrices() gives them";
 
 /// The warning for something placed outside the domain.
 fn outside(span: Span, what: &str) -> Diagnostic {
