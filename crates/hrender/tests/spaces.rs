@@ -207,6 +207,35 @@ fn seifert_weber_shows_what_is_behind_the_eye_ahead() {
     let _ = DVec3::X;
 }
 
+/// A ball centred on a face of the Seifert-Weber domain crosses it: the
+/// part beyond the face is seen through the opposite face, where the
+/// gluing brings it back, so looking either way along the face's normal
+/// from the centre meets the ball at `ρ - a`, its near side.
+#[test]
+fn an_object_across_a_face_is_whole_on_both_sides() {
+    let space = QuotientSpace::seifert_weber().unwrap();
+    let n = space.faces()[0];
+    let u = -n.truncate().normalize();
+    let rho = (-n.w).asinh();
+    let a = 0.3;
+    let c = Point::at_distance_from_origin(u, rho).unwrap().coords();
+    let scene = compile(
+        "space = seifert_weber;",
+        &format!("Sphere ({}, {}, {}), {a}, #red;", c.x, c.y, c.z),
+    );
+    let prepared = PreparedScene::new(&scene, &Isometry::IDENTITY).unwrap();
+    for (dir, what) in [(u, "towards the face"), (-u, "towards the opposite face")] {
+        let traced = prepared.trace(&Ray::from_origin(dir).unwrap(), 1e-9);
+        let Nearest::Hit(hit, _) = traced.nearest else {
+            panic!("{what}: the ray meets nothing");
+        };
+        let t = traced.travelled + hit.t;
+        println!("{what}: met at {t}, expected {}", rho - a);
+        assert_eq!(traced.travelled, 0.0, "{what}: met inside the domain");
+        assert!((t - (rho - a)).abs() < 1e-12, "{what}: {t}");
+    }
+}
+
 /// Both integrators light a scene in each built-in space by the light's
 /// images, with no numeric failure, and lit surfaces are brighter than
 /// the ambient alone.
