@@ -131,3 +131,21 @@ fn a_failed_export_leaves_the_earlier_file() {
     assert_eq!(fs::read(&out).unwrap(), b"earlier");
     assert_eq!(names(dir.path()), ["m.stl", "s.hsc"]);
 }
+
+/// A scene in a quotient space has no one shape in the ball: the export
+/// says so and writes nothing.
+#[test]
+fn a_scene_in_a_space_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("s.hsc");
+    fs::write(&scene, format!("Globals {{ space = seifert_weber; }}\n{SCENE}")).unwrap();
+    let out = dir.path().join("m.stl");
+    let result = hscene()
+        .args(["export", scene.to_str().unwrap(), "-o", out.to_str().unwrap()])
+        .assert()
+        .failure();
+    let stderr = String::from_utf8_lossy(&result.get_output().stderr).into_owned();
+    assert!(stderr.contains("seifert_weber"), "{stderr}");
+    assert!(!out.exists());
+    assert_eq!(names(dir.path()), ["s.hsc"]);
+}

@@ -14,6 +14,17 @@ pub enum ExportError {
     /// An output name whose extension is not a format we write.
     #[error("cannot tell the format of `{0}`: the name must end in .stl, .3mf, .obj or .glb")]
     UnknownFormat(String),
+    /// The scene is in a quotient space: its objects are seen again and
+    /// again through the gluing, which no one solid in the ball shows.
+    #[error(
+        "the scene is in the space {space}, which has no one shape in the ball to print: remove \
+         `space` to print what the domain holds, or print the domain's cell with \
+         `Honeycomb {{p,q,r}}, depth = 0`"
+    )]
+    InSpace {
+        /// The space's name.
+        space: String,
+    },
     /// The triangles would exceed the budget.
     #[error(
         "{object} needs more than the {budget} triangles left of --max-triangles \

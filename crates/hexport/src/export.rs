@@ -121,6 +121,7 @@ fn object_parts(
 /// Errors: [`ExportError::BadOptions`]; [`ExportError::TooManyTriangles`]
 /// naming the object that went over the budget;
 /// [`ExportError::NothingToPrint`] when every part was cut;
+/// [`ExportError::InSpace`] for a scene in a quotient space;
 /// [`ExportError::Geometry`] when a honeycomb's search runs past its
 /// budget.
 pub fn export_scene(
@@ -129,6 +130,11 @@ pub fn export_scene(
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<Model, ExportError> {
     options.validate()?;
+    if let Some(space) = &scene.settings.space {
+        return Err(ExportError::InSpace {
+            space: space.kind.to_string(),
+        });
+    }
     let mut pieces = Vec::new();
     let mut parts_cut = 0;
     for (index, object) in scene.objects.iter().enumerate() {
