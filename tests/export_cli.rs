@@ -138,10 +138,19 @@ fn a_failed_export_leaves_the_earlier_file() {
 fn a_scene_in_a_space_is_refused() {
     let dir = tempfile::tempdir().unwrap();
     let scene = dir.path().join("s.hsc");
-    fs::write(&scene, format!("Globals {{ space = seifert_weber; }}\n{SCENE}")).unwrap();
+    fs::write(
+        &scene,
+        format!("Globals {{ space = seifert_weber; }}\n{SCENE}"),
+    )
+    .unwrap();
     let out = dir.path().join("m.stl");
     let result = hscene()
-        .args(["export", scene.to_str().unwrap(), "-o", out.to_str().unwrap()])
+        .args([
+            "export",
+            scene.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+        ])
         .assert()
         .failure();
     let stderr = String::from_utf8_lossy(&result.get_output().stderr).into_owned();

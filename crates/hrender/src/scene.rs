@@ -209,6 +209,10 @@ pub struct PreparedLight {
     /// `sinh²` of the light's `near` distance: a point light's fall-off
     /// `1/(4π sinh² r)` uses `max(sinh² r, near_sinh2)`.
     pub near_sinh2: f64,
+    /// In a quotient space, the light reach: this image lights a point
+    /// only within that distance of it, faded out over the last unit
+    /// ([`PreparedLight::fade`]); infinite in H³.
+    pub reach: f64,
 }
 
 impl PreparedLight {
@@ -216,6 +220,28 @@ impl PreparedLight {
     /// (given as `sinh² r`): never less than at its `near` distance.
     pub fn falloff_sinh2(&self, sinh2: f64) -> f64 {
         sinh2.max(self.near_sinh2)
+    }
+
+    /// True if `p` (a hyperboloid point) is beyond the light's reach:
+    /// one Lorentz product, before any direction or shadow ray is formed.
+    #[inline]
+    pub fn out_of_reach(&self, p: DVec4) -> bool {
+        self.reach.is_finite() && -hgeom::lorentz::dot(p, self.position) > self.reach.cosh()
+    }
+
+    /// The weight of this light at distance `d` from a point: 1 within
+    /// `reach - 1` (or half the reach, if that is less than 1 away), 0
+    /// beyond `reach`, and a smoothstep between. Lighting by the images of
+    /// a light in a quotient space is then a continuous function of the
+    /// point, the same on both sides of a face (`docs/manifolds.md`).
+    #[inline]
+    pub fn fade(&self, d: f64) -> f64 {
+        if !self.reach.is_finite() {
+            return 1.0;
+        }
+        let width = (0.5 * self.reach).min(1.0);
+        let x = ((self.reach - d) / width).clamp(0.0, 1.0);
+        x * x * (3.0 - 2.0 * x)
     }
 
     /// The radiance an area light's sphere emits, from both sides: a light
@@ -414,6 +440,11 @@ impl PreparedScene {
                 radius: l.radius,
                 samples: l.samples,
                 near_sinh2: l.near.sinh().powi(2),
+                reach: scene
+                    .settings
+                    .space
+                    .as_ref()
+                    .map_or(f64::INFINITY, |s| s.light_reach),
             });
         }
         let (surfaces, accel) = hierarchy(&objects);

@@ -81,7 +81,10 @@ pub(crate) fn unfold(
             .fold(&at)
             .map_err(|e| invalid(format!("light {}: {e}", index + 1)))?;
         let p = home.apply(&at).to_hyperboloid();
-        for image in q.images_within(p, space.light_reach, MAX_LIGHT_IMAGES) {
+        // Every image that can light a point of the domain: within the
+        // reach of the domain's farthest finite point from its centre.
+        let within = space.light_reach + q.radius();
+        for image in q.images_within(p, within, MAX_LIGHT_IMAGES) {
             let Some(position) = Point::from_hyperboloid(image) else {
                 continue;
             };

@@ -236,6 +236,82 @@ fn an_object_across_a_face_is_whole_on_both_sides() {
     }
 }
 
+/// No seam in the light across a face: a point on a face of the domain
+/// and its image on the partner face are one point of the space, and the
+/// light the images of a lamp give it (each faded out near its reach,
+/// `PreparedLight::fade`) is the same computed from either side.
+#[test]
+fn the_light_is_the_same_on_both_sides_of_a_face() {
+    for space in ["seifert_weber", "figure_eight", "{5,3,4}"] {
+        let scene = compile(
+            &format!("space = {space};"),
+            "Sphere (0.1, 0, 0), 0.05, #red;",
+        );
+        let mut scene = scene;
+        scene.lights.push(hscene_ir::Light {
+            position: Point::from_coords(hgeom::glam::DVec3::new(0.05, 0.12, -0.07)).unwrap(),
+            diffuse: hscene_ir::Rgb::new(1.0, 1.0, 1.0),
+            specular: hscene_ir::Rgb::BLACK,
+            name: None,
+            radius: 0.0,
+            samples: 1,
+            near: 0.0,
+            on_camera: false,
+        });
+        let prepared = PreparedScene::new(&scene, &Isometry::IDENTITY).unwrap();
+        let light_at = |x: hgeom::glam::DVec4| -> f64 {
+            prepared
+                .lights
+                .iter()
+                .map(|l| {
+                    let d = hgeom::lorentz::distance(x, l.position);
+                    l.fade(d) / d.sinh().powi(2)
+                })
+                .sum()
+        };
+        let q = scene.settings.space.as_ref().unwrap().build().unwrap();
+        let domain = q.domain().unwrap();
+        let mut worst = 0.0f64;
+        let mut tested = 0;
+        for face in 0..q.faces().len() {
+            let n = q.faces()[face];
+            // Points of the face: the foot of the centre's perpendicular,
+            // and its midpoints with the face's vertices.
+            let foot = {
+                let x = hgeom::glam::DVec4::W + (-n.w) * n;
+                x / (-hgeom::lorentz::dot(x, x)).sqrt()
+            };
+            let mut points = vec![foot];
+            for &k in domain.face_vertices(face) {
+                let v = domain.vertices()[k];
+                let m = foot + v / v.w;
+                points.push(m / (-hgeom::lorentz::dot(m, m)).sqrt());
+            }
+            let g = q.pairing(face).to_lorentz();
+            // The images kept light every point within the domain's
+            // radius of its centre (all of a closed domain; a cusped one
+            // but for its cusps: docs/manifolds.md).
+            let near = |x: hgeom::glam::DVec4| {
+                hgeom::lorentz::distance(x, hgeom::glam::DVec4::W) <= q.radius()
+            };
+            for x in points {
+                if !(near(x) && near(g * x)) {
+                    continue;
+                }
+                tested += 1;
+                let (a, b) = (light_at(x), light_at(g * x));
+                worst = worst.max((a - b).abs() / a.max(b));
+            }
+        }
+        println!(
+            "{space}: {} light images; at {tested} points of the faces the light on the two sides differs by {worst:.1e}",
+            prepared.lights.len()
+        );
+        assert!(tested >= 6, "{space}: {tested}");
+        assert!(worst < 1e-9, "{space}: {worst}");
+    }
+}
+
 /// Both integrators light a scene in each built-in space by the light's
 /// images, with no numeric failure, and lit surfaces are brighter than
 /// the ambient alone.

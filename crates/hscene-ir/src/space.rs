@@ -17,8 +17,9 @@ pub const DEFAULT_LIGHT_REACH: f64 = 2.5;
 /// The largest `light_reach`: the images within it grow like `e^{2R}`.
 pub const MAX_LIGHT_REACH: f64 = 6.0;
 
-/// The most images of one light that light the scene (the nearest).
-pub const MAX_LIGHT_IMAGES: usize = 64;
+/// The most images of one light kept (the nearest the domain's centre):
+/// those within the light reach of some point of the domain.
+pub const MAX_LIGHT_IMAGES: usize = 1024;
 
 /// The most faces a ray crosses before it stops at the horizon.
 pub const MAX_SPACE_CROSSINGS: u32 = 1024;
@@ -43,8 +44,10 @@ pub struct Space {
     pub pairings: Option<Arc<[DMat4]>>,
     /// The domain's edges, if drawn.
     pub domain: Option<DomainEdges>,
-    /// The images of each light within this distance of the domain's
-    /// centre (at most [`MAX_LIGHT_IMAGES`], the nearest) light the scene.
+    /// Each image of a light lights the points within this distance of
+    /// it, faded out smoothly over the last unit, so the lighting is
+    /// continuous across the faces; the images kept are those within this
+    /// distance of the domain (at most [`MAX_LIGHT_IMAGES`]).
     /// Invariant: in `(0, MAX_LIGHT_REACH]`.
     pub light_reach: f64,
 }

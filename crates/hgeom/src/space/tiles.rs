@@ -50,20 +50,29 @@ impl QuotientSpace {
     }
 
     /// The images of `p` (a hyperboloid point) within `reach` of the
-    /// domain's centre, nearest first, at most `limit`. The search goes on
-    /// through tiles whose image of the centre is within `reach` plus
-    /// twice the domain's largest finite radius (all of them, for a closed
-    /// space; near a cusp, images beyond that margin may be missed).
+    /// domain's centre, nearest first, at most `limit`. They lie in the
+    /// tiles that meet the ball of radius `reach` about the centre, which
+    /// are face-connected (the ball is convex): the search walks the
+    /// elements `A` whose image of that ball meets the domain (tile
+    /// `A⁻¹ D` meets the ball) by the same test as
+    /// [`QuotientSpace::copies_meeting`], and keeps `A⁻¹ p`. At most
+    /// 20,000 tiles are visited; a cusped domain's tiles near the ball's
+    /// rim can pass the test in numbers, so for a large reach the farthest
+    /// images may be missed (`docs/manifolds.md`).
     pub fn images_within(&self, p: DVec4, reach: f64, limit: usize) -> Vec<DVec4> {
         let centre = self.centre();
-        let margin = 2.0 * self.finite_radius();
+        let sinh_reach = reach.sinh();
+        let faces = &self.faces;
         let found = self.search_unbounded(
-            |b: &Isometry| lorentz::distance(b.to_lorentz() * centre, centre) <= reach + margin,
+            |a: &Isometry| {
+                let c = a.to_lorentz() * centre;
+                faces.iter().all(|n| lorentz::dot(c, *n) > -sinh_reach)
+            },
             MAX_TILES,
         );
         let mut images: Vec<(f64, DVec4)> = found
             .iter()
-            .map(|b| b.to_lorentz() * p)
+            .map(|a| a.inverse().to_lorentz() * p)
             .map(|x| (lorentz::distance(x, centre), x))
             .filter(|(d, _)| *d <= reach)
             .collect();
@@ -116,9 +125,15 @@ impl QuotientSpace {
         }
     }
 
-    /// The largest distance from the centre to a finite vertex, or to a
-    /// face (for a horosphere-inscribed cell, 1: its faces' spacing near
-    /// the base point).
+    /// The largest distance from the domain's centre to a finite vertex,
+    /// or to a face: for a closed space, the radius of the ball about the
+    /// centre that holds the domain; for a cusped one, of the ball that
+    /// holds it but for its cusps; for a horosphere-inscribed cell, 1 (its
+    /// faces' spacing near the base point).
+    pub fn radius(&self) -> f64 {
+        self.finite_radius()
+    }
+
     fn finite_radius(&self) -> f64 {
         let Some(domain) = &self.domain else {
             return 1.0;

@@ -193,6 +193,9 @@ impl<'s> PathTracer<'s> {
         let ShadingPoint { p, n, wo, bsdf } = *at;
         let mut sum = Rgb::BLACK;
         for light in self.scene.lights.iter().filter(|l| l.radius == 0.0) {
+            if light.out_of_reach(p) {
+                continue;
+            }
             let Some(wi) = lorentz::unit_tangent_towards(p, light.position) else {
                 continue;
             };
@@ -201,6 +204,11 @@ impl<'s> PathTracer<'s> {
                 continue;
             }
             let apart = Separation::between(p, light.position);
+            // An image beyond its reach (quotient spaces) lights nothing.
+            let weight = light.fade(apart.distance());
+            if weight == 0.0 {
+                continue;
+            }
             stats.rays += 1;
             let shadow = self.scene.transmittance(
                 &Ray { origin: p, dir: wi },
@@ -218,7 +226,7 @@ impl<'s> PathTracer<'s> {
             // the way filters it.
             let intensity = light.diffuse.tint(self.filtered(p, wi, apart.distance())) * 0.25;
             sum += bsdf.eval(n, wo, wi).tint(intensity)
-                * (cos * shadow / light.falloff_sinh2(apart.sinh_squared()));
+                * (cos * shadow * weight / light.falloff_sinh2(apart.sinh_squared()));
         }
         for e in &self.emitters {
             let (u1, u2) = (stream.next_unit(), stream.next_unit());

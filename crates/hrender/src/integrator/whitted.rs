@@ -269,6 +269,9 @@ impl<'s> Whitted<'s> {
         at: &Shading<'_>,
         stats: &mut TraceStats,
     ) -> Rgb {
+        if light.out_of_reach(at.p) {
+            return Rgb::default();
+        }
         let Some(to_light) = lorentz::unit_tangent_towards(at.p, from) else {
             return Rgb::default();
         };
@@ -279,6 +282,12 @@ impl<'s> Whitted<'s> {
         // The distance, its tangent (the shadow ray's arc) and its sinh
         // (the attenuation) by algebra from one Lorentz separation.
         let apart = Separation::between(at.p, from);
+        // An image of a light in a quotient space beyond its reach lights
+        // nothing here: no shadow ray.
+        let weight = light.fade(apart.distance());
+        if weight == 0.0 {
+            return Rgb::default();
+        }
         let shadow = match seen {
             Visibility::Clear => 1.0,
             Visibility::Trace => {
@@ -298,7 +307,7 @@ impl<'s> Whitted<'s> {
         if shadow == 0.0 {
             return Rgb::default();
         }
-        let f_att = 1.0 / (4.0 * PI * light.falloff_sinh2(apart.sinh_squared()));
+        let f_att = weight / (4.0 * PI * light.falloff_sinh2(apart.sinh_squared()));
         let lit = at.phong(light.diffuse, light.specular, to_light, cos_theta.min(1.0))
             * (shadow * f_att);
         // Tinted glass between the point and the light filters it.

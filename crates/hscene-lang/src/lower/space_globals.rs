@@ -67,7 +67,7 @@ impl Lowerer<'_> {
                                 hgeom::Compact(x)
                             ),
                         )
-                        .with_help("the images of a light within this distance of the domain's centre light the scene; 2.5 is the default"),
+                        .with_help("each image of a light lights the points within this distance of it; 2.5 is the default"),
                     );
                     return;
                 }
