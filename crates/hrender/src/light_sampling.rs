@@ -255,6 +255,7 @@ mod tests {
             radius: 0.3,
             samples: 16,
             near_sinh2: 0.0,
+            reach: f64::INFINITY,
         };
         let p = Point::ORIGIN.to_hyperboloid();
         let mut stream = SampleStream::new(7);
