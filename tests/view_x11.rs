@@ -68,6 +68,10 @@ impl Display {
                     "640x480x24",
                     "-nolisten",
                     "tcp",
+                    // Without it the server resets when its last client
+                    // (the probe below) leaves, and a viewer connecting
+                    // during the reset is refused.
+                    "-noreset",
                 ])
                 .stdout(Stdio::null())
                 .stderr(Stdio::null())
