@@ -84,13 +84,7 @@ impl Isometry {
         if !q.is_finite() {
             return Err(GeomError::NotFinite);
         }
-        let d = q * q.transpose() - DMat3::IDENTITY;
-        let defect = d
-            .x_axis
-            .abs()
-            .max(d.y_axis.abs())
-            .max(d.z_axis.abs())
-            .max_element();
+        let defect = orthogonality_defect(&q);
         if !(defect <= 1e-12) {
             return Err(GeomError::NotOrthogonal { defect });
         }
@@ -225,13 +219,7 @@ impl Isometry {
             rest.y_axis.truncate(),
             rest.z_axis.truncate(),
         );
-        let d = q * q.transpose() - DMat3::IDENTITY;
-        let defect = d
-            .x_axis
-            .abs()
-            .max(d.y_axis.abs())
-            .max(d.z_axis.abs())
-            .max_element();
+        let defect = orthogonality_defect(&q);
         if !(defect <= 1e-9) {
             return Err(GeomError::NotOrthogonal { defect });
         }
@@ -455,6 +443,16 @@ impl Isometry {
             q: qt,
         }
     }
+}
+
+/// `max |Q Qᵀ - I|`, entrywise.
+fn orthogonality_defect(q: &DMat3) -> f64 {
+    let d = *q * q.transpose() - DMat3::IDENTITY;
+    d.x_axis
+        .abs()
+        .max(d.y_axis.abs())
+        .max(d.z_axis.abs())
+        .max_element()
 }
 
 #[cfg(test)]

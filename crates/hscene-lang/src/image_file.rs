@@ -5,9 +5,10 @@
 //! [`MAX_IMAGE_FILE_BYTES`] bytes of file; a device, FIFO or directory is
 //! refused before it is opened for reading.
 
-use std::io::{BufReader, Read};
+use std::io::BufReader;
 use std::path::Path;
 
+use crate::bounded_read::{BoundedReadError, read_regular_file};
 use hscene_ir::{MAX_TEXTURE_PIXELS, TextureImage, TextureImageError, srgb_to_linear};
 
 /// The largest image file read: 256 MiB.
@@ -61,26 +62,11 @@ pub fn load(path: &Path) -> Result<TextureImage, ImageFileError> {
         Some("exr") => true,
         _ => return Err(ImageFileError::UnknownFormat),
     };
-    // Opening a FIFO for reading blocks until a writer comes; look first.
-    let meta = std::fs::metadata(path)?;
-    if !meta.is_file() {
-        return Err(ImageFileError::NotAFile);
-    }
-    if meta.len() > MAX_IMAGE_FILE_BYTES {
-        return Err(ImageFileError::TooLarge { size: meta.len() });
-    }
-    let file = std::fs::File::open(path)?;
-    if !file.metadata()?.is_file() {
-        return Err(ImageFileError::NotAFile);
-    }
-    let mut bytes = Vec::new();
-    file.take(MAX_IMAGE_FILE_BYTES + 1)
-        .read_to_end(&mut bytes)?;
-    if bytes.len() as u64 > MAX_IMAGE_FILE_BYTES {
-        return Err(ImageFileError::TooLarge {
-            size: bytes.len() as u64,
-        });
-    }
+    let bytes = read_regular_file(path, MAX_IMAGE_FILE_BYTES).map_err(|e| match e {
+        BoundedReadError::NotAFile => ImageFileError::NotAFile,
+        BoundedReadError::TooLarge(size) => ImageFileError::TooLarge { size },
+        BoundedReadError::Io(e) => ImageFileError::Io(e),
+    })?;
     if exr {
         decode_exr(&bytes)
     } else {

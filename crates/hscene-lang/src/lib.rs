@@ -15,6 +15,7 @@
 //! assert_eq!(scene.objects.len(), 1);
 //! ```
 
+mod bounded_read;
 pub mod diagnostic;
 pub mod format;
 pub mod image_file;

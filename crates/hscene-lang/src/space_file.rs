@@ -11,8 +11,9 @@
 //! (SnapPy's order; `"time": "last"` for hgeom's). Checked here as a file;
 //! as a gluing by [`hgeom::QuotientSpace::from_pairings`].
 
-use std::io::Read;
 use std::path::Path;
+
+use crate::bounded_read::{BoundedReadError, read_regular_file};
 
 use hgeom::glam::DMat4;
 use serde::Deserialize;
@@ -62,23 +63,13 @@ struct SpaceFile {
 /// The pairings in `path`, as Lorentz matrices with the time coordinate
 /// last.
 pub fn load(path: &Path) -> Result<Vec<DMat4>, SpaceFileError> {
-    // Opening a FIFO for reading blocks until a writer comes; look first.
-    let meta = std::fs::metadata(path)?;
-    if !meta.is_file() {
-        return Err(SpaceFileError::NotAFile);
-    }
-    if meta.len() > MAX_SPACE_FILE_BYTES {
-        return Err(SpaceFileError::TooLarge { size: meta.len() });
-    }
-    let file = std::fs::File::open(path)?;
-    let mut text = String::new();
-    file.take(MAX_SPACE_FILE_BYTES + 1)
-        .read_to_string(&mut text)?;
-    if text.len() as u64 > MAX_SPACE_FILE_BYTES {
-        return Err(SpaceFileError::TooLarge {
-            size: text.len() as u64,
-        });
-    }
+    let bytes = read_regular_file(path, MAX_SPACE_FILE_BYTES).map_err(|e| match e {
+        BoundedReadError::NotAFile => SpaceFileError::NotAFile,
+        BoundedReadError::TooLarge(size) => SpaceFileError::TooLarge { size },
+        BoundedReadError::Io(e) => SpaceFileError::Io(e),
+    })?;
+    let text = String::from_utf8(bytes)
+        .map_err(|e| SpaceFileError::Format(format!("not UTF-8 text: {e}")))?;
     parse(&text)
 }
 
