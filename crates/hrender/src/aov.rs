@@ -210,18 +210,6 @@ fn cell_of(scene: &Scene, index: usize, part: u32) -> (f64, f64) {
         return (f64::NAN, f64::from(class));
     }
     // The palettes count round their lengths' least common multiple.
-    let k = lcm(
-        h.materials.palette.len().max(1),
-        h.materials.face_palette.len().max(1),
-    );
+    let k = hscene_ir::palette_period(h.materials.palette.len(), h.materials.face_palette.len());
     (f64::from(class), f64::from(class) % k as f64)
-}
-
-/// The least common multiple of two positive counts.
-fn lcm(a: usize, b: usize) -> usize {
-    let (mut x, mut y) = (a, b);
-    while y != 0 {
-        (x, y) = (y, x % y);
-    }
-    a / x * b
 }

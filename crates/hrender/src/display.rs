@@ -66,11 +66,7 @@ pub fn srgb_encode(x: f64) -> f64 {
 /// The inverse of [`srgb_encode`]: stored value -> linear.
 #[inline]
 pub fn srgb_decode(v: f64) -> f64 {
-    if v <= 0.040_45 {
-        v / 12.92
-    } else {
-        ((v + 0.055) / 1.055).powf(2.4)
-    }
+    hscene_ir::srgb_to_linear(v)
 }
 
 /// Tone curve and transfer function together.

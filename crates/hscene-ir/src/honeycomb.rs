@@ -89,6 +89,18 @@ impl PartMaterials {
     }
 }
 
+/// How many cell classes two palettes of `a` and `b` materials count round
+/// together: the least common multiple of their lengths (an empty palette
+/// counts as one).
+pub fn palette_period(a: usize, b: usize) -> usize {
+    let (a, b) = (a.max(1), b.max(1));
+    let (mut x, mut y) = (a, b);
+    while y != 0 {
+        (x, y) = (y, x % y);
+    }
+    a / x * b
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -36,7 +36,7 @@ pub use animation::{Animation, FrameError, Motion, Track, TrackBase, compose, fr
 pub use camera::{Camera, Net, Resolution, Window, move_camera};
 pub use chart::{TextureChart, disc_frame};
 pub use color::Rgb;
-pub use honeycomb::{Honeycomb, PartMaterials};
+pub use honeycomb::{Honeycomb, PartMaterials, palette_period};
 pub use integrator::IntegratorKind;
 pub use lens::{Lens, MAX_APERTURE, MAX_FOCUS, confusion_angle};
 pub use material::{ImageTexture, Material, MaterialId, Pattern, Texture};

@@ -230,7 +230,7 @@ impl Lowerer<'_> {
             // least common multiple of their lengths (at most 16 · 15). A
             // uniform honeycomb's classes are its parts' kinds (0 to 3).
             cell_classes: if rings.is_regular() {
-                lcm(palette.len().max(1), face_palette.len().max(1)) as u32
+                hscene_ir::palette_period(palette.len(), face_palette.len()) as u32
             } else {
                 1
             },
@@ -287,12 +287,4 @@ impl Lowerer<'_> {
             }
         }
     }
-}
-/// The least common multiple of two positive counts.
-fn lcm(a: usize, b: usize) -> usize {
-    let (mut x, mut y) = (a, b);
-    while y != 0 {
-        (x, y) = (y, x % y);
-    }
-    a / x * b
 }
