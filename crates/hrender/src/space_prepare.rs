@@ -11,7 +11,8 @@ use hgeom::{
 };
 use hscene_ir::view::PixelFootprint;
 use hscene_ir::{
-    self as ir, DomainEdges, Light, MAX_LIGHT_IMAGES, Object, PartMaterials, Scene, Space,
+    self as ir, DomainEdges, Light, MAX_LIGHT_IMAGES, MAX_SPACE_LIGHTS, Object, PartMaterials,
+    Scene, Space,
 };
 
 use crate::error::RenderError;
@@ -66,6 +67,12 @@ pub(crate) fn unfold(
     }
     if let Some(d) = space.domain {
         unfolded.objects.extend(domain_edges(&q, d)?);
+    }
+    if scene.lights.len() > MAX_SPACE_LIGHTS {
+        return Err(invalid(format!(
+            "{} lights in a space: at most {MAX_SPACE_LIGHTS} (each shines through its images)",
+            scene.lights.len()
+        )));
     }
     unfolded.lights.clear();
     for (index, l) in scene.lights.iter().enumerate() {

@@ -45,6 +45,7 @@ pub use scene::{Fog, Light, PointRecord, Scene, Settings};
 pub use shape::{BoxedSurface, MESH_TRIANGLES_PER_PRIMITIVE, Shape, Surfaces, mesh_budget_cost};
 pub use sky::{Sky, equirectangular};
 pub use space::{
-    DEFAULT_LIGHT_REACH, DomainEdges, MAX_LIGHT_IMAGES, MAX_LIGHT_REACH, MAX_SPACE_CROSSINGS, Space,
+    DEFAULT_LIGHT_REACH, DomainEdges, MAX_LIGHT_IMAGES, MAX_LIGHT_REACH, MAX_SPACE_CROSSINGS,
+    MAX_SPACE_LIGHTS, Space,
 };
 pub use texture_image::{MAX_TEXTURE_PIXELS, TextureImage, TextureImageError, srgb_to_linear};

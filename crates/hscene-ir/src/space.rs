@@ -21,6 +21,11 @@ pub const MAX_LIGHT_REACH: f64 = 6.0;
 /// those within the light reach of some point of the domain.
 pub const MAX_LIGHT_IMAGES: usize = 1024;
 
+/// The most lights a scene in a space may have: each is traced through
+/// its images (hundreds within the reach of the domain), at every shading
+/// point.
+pub const MAX_SPACE_LIGHTS: usize = 16;
+
 /// The most faces a ray crosses before it stops at the horizon.
 pub const MAX_SPACE_CROSSINGS: u32 = 1024;
 

@@ -218,3 +218,26 @@ fn a_space_file_that_glues_no_manifold_is_refused_at_its_name() {
     assert_eq!(&src[d.span.start..d.span.end], "\"broken.json\"");
     assert!(d.message.contains("glue no manifold"), "{}", d.message);
 }
+
+#[test]
+fn a_space_takes_at_most_sixteen_lights() {
+    let lights: String = (0..17)
+        .map(|k| {
+            format!(
+                "({}, 0, 0.05), (0.1, 0.1, 0.1), (0, 0, 0);\n",
+                0.01 * f64::from(k)
+            )
+        })
+        .collect();
+    let found = diagnostics("space = seifert_weber;", &format!("Lights {{ {lights} }}"));
+    let errors: Vec<_> = found
+        .iter()
+        .filter(|(code, sev, _)| code == "HSC0314" && *sev == Severity::Error)
+        .map(|(_, _, at)| at.as_str())
+        .collect();
+    assert_eq!(
+        errors,
+        ["(0.16, 0, 0.05), (0.1, 0.1, 0.1), (0, 0, 0);"],
+        "{found:?}"
+    );
+}

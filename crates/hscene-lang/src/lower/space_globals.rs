@@ -13,7 +13,9 @@ use hgeom::{HOROSPHERE_CELL_REACH, MAX_COPIES, QuotientSpace, SPACE_NAMES, Space
 use super::Lowerer;
 use super::text::quote;
 use crate::diagnostic::{Code, Diagnostic, Span};
-use crate::ir::{DEFAULT_LIGHT_REACH, DomainEdges, MAX_LIGHT_REACH, MaterialId, Space};
+use crate::ir::{
+    DEFAULT_LIGHT_REACH, DomainEdges, MAX_LIGHT_REACH, MAX_SPACE_LIGHTS, MaterialId, Space,
+};
 use crate::space_file::{self, SpaceFileError};
 use crate::syntax::Value;
 
@@ -253,6 +255,16 @@ impl Lowerer<'_> {
             }
         }
         for (k, (l, span)) in self.lights.iter().enumerate() {
+            if k == MAX_SPACE_LIGHTS {
+                found.push(
+                    Diagnostic::new(
+                        Code::NotInSpace,
+                        *span,
+                        format!("a scene in a space may have at most {MAX_SPACE_LIGHTS} lights; this is one more"),
+                    )
+                    .with_help("each light in a space shines through hundreds of its images; merge lights, or light the scene with `emission`"),
+                );
+            }
             if l.radius > 0.0 {
                 found.push(
                     Diagnostic::new(
