@@ -211,9 +211,7 @@ impl Isometry {
         }
         let a = Point::from_hyperboloid(m.w_axis).ok_or(GeomError::NotFinite)?;
         let boost = Isometry::transvection_from_origin(a).to_lorentz();
-        // The inverse of a Lorentz matrix is J Lᵀ J.
-        let j = DMat4::from_diagonal(glam::DVec4::new(1.0, 1.0, 1.0, -1.0));
-        let rest = j * boost.transpose() * j * m;
+        let rest = crate::lorentz::inverse(boost) * m;
         let q = DMat3::from_cols(
             rest.x_axis.truncate(),
             rest.y_axis.truncate(),

@@ -71,6 +71,35 @@ pub fn orthogonal_complement(a: DVec4, b: DVec4, c: DVec4) -> DVec4 {
     DVec4::new(e.x, e.y, e.z, -e.w)
 }
 
+/// The inverse of a Lorentz matrix: `J Lᵀ J` with `J = diag(1, 1, 1, -1)`.
+pub(crate) fn inverse(l: glam::DMat4) -> glam::DMat4 {
+    let j = glam::DMat4::from_diagonal(DVec4::new(1.0, 1.0, 1.0, -1.0));
+    j * l.transpose() * j
+}
+
+/// The Lorentz matrix of the reflection `X -> X - 2 <X,n> n` in the plane
+/// with unit spacelike normal `n`.
+pub(crate) fn reflection_matrix(n: DVec4) -> glam::DMat4 {
+    // Column j is the image of e_j: e_j - 2 <e_j,n> n, with <e_j,n> = n_j
+    // for space and -n_w for time.
+    let jn = DVec4::new(n.x, n.y, n.z, -n.w);
+    glam::DMat4::from_cols(
+        DVec4::X - 2.0 * jn.x * n,
+        DVec4::Y - 2.0 * jn.y * n,
+        DVec4::Z - 2.0 * jn.z * n,
+        DVec4::W - 2.0 * jn.w * n,
+    )
+}
+
+/// Restores `<O,O> = -1`, `<D,D> = 1`, `<O,D> = 0` for a point and a
+/// tangent there after rounding (either may carry any positive scale).
+#[inline]
+pub(crate) fn renormalise(o: &mut DVec4, d: &mut DVec4) {
+    *o /= (-dot(*o, *o)).sqrt();
+    *d += dot(*o, *d) * *o;
+    *d /= dot(*d, *d).sqrt();
+}
+
 /// Distance between two hyperboloid points. Uses `2 asinh(|X-Y|_L / 2)`, which
 /// is well conditioned for small distances where `acosh(-<X,Y>)` is not.
 ///

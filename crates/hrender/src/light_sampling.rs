@@ -256,6 +256,7 @@ mod tests {
             samples: 16,
             near_sinh2: 0.0,
             reach: f64::INFINITY,
+            cosh_reach: f64::INFINITY,
         };
         let p = Point::ORIGIN.to_hyperboloid();
         let mut stream = SampleStream::new(7);

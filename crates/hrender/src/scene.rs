@@ -213,6 +213,9 @@ pub struct PreparedLight {
     /// only within that distance of it, faded out over the last unit
     /// ([`PreparedLight::fade`]); infinite in H³.
     pub reach: f64,
+    /// `cosh` of `reach`, which [`PreparedLight::out_of_reach`] compares
+    /// with at every shading point.
+    pub cosh_reach: f64,
 }
 
 impl PreparedLight {
@@ -226,7 +229,7 @@ impl PreparedLight {
     /// one Lorentz product, before any direction or shadow ray is formed.
     #[inline]
     pub fn out_of_reach(&self, p: DVec4) -> bool {
-        self.reach.is_finite() && -hgeom::lorentz::dot(p, self.position) > self.reach.cosh()
+        -hgeom::lorentz::dot(p, self.position) > self.cosh_reach
     }
 
     /// The weight of this light at distance `d` from a point: 1 within
@@ -433,6 +436,11 @@ impl PreparedScene {
                 Point::at_distance_from_origin(DVec3::Z, p.distance_from_origin() + l.radius)
                     .map_err(|_| out_of_range())?;
             }
+            let reach = scene
+                .settings
+                .space
+                .as_ref()
+                .map_or(f64::INFINITY, |s| s.light_reach);
             lights.push(PreparedLight {
                 position: p.to_hyperboloid(),
                 diffuse: l.diffuse,
@@ -440,11 +448,8 @@ impl PreparedScene {
                 radius: l.radius,
                 samples: l.samples,
                 near_sinh2: l.near.sinh().powi(2),
-                reach: scene
-                    .settings
-                    .space
-                    .as_ref()
-                    .map_or(f64::INFINITY, |s| s.light_reach),
+                reach,
+                cosh_reach: reach.cosh(),
             });
         }
         let (surfaces, accel) = hierarchy(&objects);

@@ -115,18 +115,35 @@ fn the_domain_draws_the_honeycombs_edges() {
 /// that face into the neighbouring cell.
 #[test]
 fn the_mirrored_cell_is_the_ball_reflected_by_hand() {
-    let ball = "Sphere (0.1, 0.05, 0.15), 0.12, #red;";
-    let mirrored = compile("space = {4,3,5};", ball);
-    let mut by_hand = compile("", ball);
-    let cube = QuotientSpace::new(SpaceKind::Mirrors(Schlafli::new(4, 3, 5).unwrap())).unwrap();
+    let (drawn, reflected, differ) = mirrored_against_by_hand(
+        (4, 3, 5),
+        "from = (0.03, 0.02, 0.01); to = (0.2, 0.1, 0.3);",
+        "Sphere (0.1, 0.05, 0.15), 0.12, #red;",
+    );
+    assert!(reflected > 80, "{reflected}");
+    assert!(differ <= drawn / 200, "{differ} of {drawn}");
+}
+
+/// The mirrored cell of `{p,q,r}` with `ball` in it, and `Honeycomb
+/// {p,q,r}`'s space with the ball and its images in the cell's faces put
+/// there by hand, seen from `camera`: the pixels the hand-made picture
+/// draws, those its images add, and those where the two differ.
+fn mirrored_against_by_hand(
+    (p, q, r): (u32, u32, u32),
+    camera: &str,
+    ball: &str,
+) -> (usize, usize, usize) {
+    let mirrored = compile_from(camera, &format!("space = {{{p},{q},{r}}};"), ball);
+    let mut by_hand = compile_from(camera, "", ball);
+    let cell = QuotientSpace::new(SpaceKind::Mirrors(Schlafli::new(p, q, r).unwrap())).unwrap();
     let original = by_hand.objects[0].clone();
-    for n in cube.faces() {
+    for n in cell.faces() {
         let mirror = Isometry::reflection(&HPlane::from_normal(*n).unwrap());
-        by_hand
-            .objects
-            .push(move_object(&original, &mirror).unwrap());
+        if let Some(image) = move_object(&original, &mirror) {
+            by_hand.objects.push(image);
+        }
     }
-    let alone = pixels(&render(&compile("", ball)));
+    let alone = pixels(&render(&compile_from(camera, "", ball)));
     let (a, b) = (pixels(&render(&mirrored)), pixels(&render(&by_hand)));
     let drawn = b.iter().filter(|p| !is_black(p)).count();
     let reflected = drawn - alone.iter().filter(|p| !is_black(p)).count();
@@ -135,9 +152,10 @@ fn the_mirrored_cell_is_the_ball_reflected_by_hand() {
         .zip(&b)
         .filter(|(x, y)| !is_black(y) && x != y)
         .count();
-    println!("{drawn} pixels drawn by hand ({reflected} by the images), {differ} differ");
-    assert!(reflected > 80, "{reflected}");
-    assert!(differ <= drawn / 200, "{differ} of {drawn}");
+    println!(
+        "{{{p},{q},{r}}}: {drawn} pixels drawn by hand ({reflected} by the images), {differ} differ"
+    );
+    (drawn, reflected, differ)
 }
 
 /// The same for a cell inscribed in a horosphere, `{6,3,4}`, whose faces
@@ -149,27 +167,11 @@ fn the_mirrored_cell_is_the_ball_reflected_by_hand() {
 /// doubly reflected image in the kaleidoscope: `docs/manifolds.md`.)
 #[test]
 fn the_mirrored_horosphere_cell_is_the_ball_reflected_by_hand() {
-    let ball = "Sphere (-0.12, 0.05, 0.25), 0.15, #red;";
-    let mirrored = compile_from(IN_HOROSPHERE_CELL, "space = {6,3,4};", ball);
-    let mut by_hand = compile_from(IN_HOROSPHERE_CELL, "", ball);
-    let cell = QuotientSpace::new(SpaceKind::Mirrors(Schlafli::new(6, 3, 4).unwrap())).unwrap();
-    let original = by_hand.objects[0].clone();
-    for n in cell.faces() {
-        let mirror = Isometry::reflection(&HPlane::from_normal(*n).unwrap());
-        if let Some(image) = move_object(&original, &mirror) {
-            by_hand.objects.push(image);
-        }
-    }
-    let alone = pixels(&render(&compile_from(IN_HOROSPHERE_CELL, "", ball)));
-    let (a, b) = (pixels(&render(&mirrored)), pixels(&render(&by_hand)));
-    let drawn = b.iter().filter(|p| !is_black(p)).count();
-    let reflected = drawn - alone.iter().filter(|p| !is_black(p)).count();
-    let differ = a
-        .iter()
-        .zip(&b)
-        .filter(|(x, y)| !is_black(y) && x != y)
-        .count();
-    println!("{drawn} pixels drawn by hand ({reflected} by the images), {differ} differ");
+    let (drawn, reflected, differ) = mirrored_against_by_hand(
+        (6, 3, 4),
+        IN_HOROSPHERE_CELL,
+        "Sphere (-0.12, 0.05, 0.25), 0.15, #red;",
+    );
     assert!(reflected > 60, "{reflected}");
     assert!(differ <= drawn / 200, "{differ} of {drawn}");
 }

@@ -20,11 +20,7 @@ use crate::roots::exp_roots_lazy;
 
 use super::domain_ray::MAX_WALLS;
 
-/// The inverse of a Lorentz matrix: `J Lᵀ J`.
-pub(super) fn lorentz_inverse(l: DMat4) -> DMat4 {
-    let j = DMat4::from_diagonal(DVec4::new(1.0, 1.0, 1.0, -1.0));
-    j * l.transpose() * j
-}
+pub(super) use crate::lorentz::inverse as lorentz_inverse;
 
 /// `x - 2 <x,n> n`.
 #[inline]
@@ -45,13 +41,7 @@ pub(super) fn times_reflection(m: &DMat4, n: DVec4) -> DMat4 {
     )
 }
 
-/// Restores `<O,O> = -1`, `<D,D> = 1`, `<O,D> = 0` after rounding.
-#[inline]
-pub(super) fn renormalise(o: &mut DVec4, d: &mut DVec4) {
-    *o /= (-lorentz::dot(*o, *o)).sqrt();
-    *d += lorentz::dot(*o, *d) * *o;
-    *d /= lorentz::dot(*d, *d).sqrt();
-}
+pub(super) use crate::lorentz::renormalise;
 
 /// The roots of `c_1(τ)² + c_2(τ)² = sinh² w` with
 /// `c_i = o_i cosh τ + v_i sinh τ` (the tube), as values of `e^{2τ}`, from

@@ -176,18 +176,7 @@ impl CoxeterSimplex {
     }
 }
 
-/// The Lorentz matrix of `X -> X - 2 <X,n> n` for a unit spacelike `n`.
-pub(crate) fn reflection_matrix(n: DVec4) -> DMat4 {
-    // Column j is the image of e_j: e_j - 2 <e_j,n> n, with <e_j,n> = n_j
-    // for space and -n_w for time.
-    let jn = DVec4::new(n.x, n.y, n.z, -n.w);
-    DMat4::from_cols(
-        DVec4::X - 2.0 * jn.x * n,
-        DVec4::Y - 2.0 * jn.y * n,
-        DVec4::Z - 2.0 * jn.z * n,
-        DVec4::W - 2.0 * jn.w * n,
-    )
-}
+pub(crate) use crate::lorentz::reflection_matrix;
 
 #[cfg(test)]
 mod tests {

@@ -326,9 +326,7 @@ fn by_correspondence(faces: Vec<DVec4>, pairings: &[FacePairing]) -> Result<Glui
         partner[i] = j;
         partner[j] = i;
         matrices[i] = m;
-        // J Mᵀ J is the inverse of a Lorentz matrix.
-        let jm = DMat4::from_diagonal(DVec4::new(1.0, 1.0, 1.0, -1.0));
-        matrices[j] = jm * m.transpose() * jm;
+        matrices[j] = crate::lorentz::inverse(m);
     }
     if let Some(face) = partner.iter().position(|&p| p == usize::MAX) {
         return Err(GeomError::BadPairing {

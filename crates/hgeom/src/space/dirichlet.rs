@@ -84,7 +84,7 @@ impl QuotientSpace {
         let mut partner = Vec::with_capacity(pairings.len());
         let mut walk = Vec::with_capacity(pairings.len());
         for (i, m) in pairings.iter().enumerate() {
-            let inverse = j() * m.transpose() * j();
+            let inverse = lorentz::inverse(*m);
             let target = inverse * DVec4::W;
             let found = images
                 .iter()

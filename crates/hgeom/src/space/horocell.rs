@@ -45,11 +45,7 @@ pub(super) struct HoroCell {
     mirrors: [DMat4; 4],
 }
 
-/// The Lorentz matrix of the reflection `X -> X - 2 <X,n> n`.
-pub(super) fn reflection(n: DVec4) -> DMat4 {
-    let jn = DVec4::new(n.x, n.y, n.z, -n.w);
-    DMat4::IDENTITY - 2.0 * DMat4::from_cols(n * jn.x, n * jn.y, n * jn.z, n * jn.w)
-}
+pub(super) use crate::lorentz::reflection_matrix as reflection;
 
 impl HoroCell {
     /// The cell of `simplex` (whose cells are horosphere-inscribed) and its
@@ -165,9 +161,7 @@ impl HoroCell {
             }
             t += s.atanh();
             if k == 3 {
-                // A⁻¹ = J Aᵀ J for a Lorentz matrix.
-                let j = DMat4::from_diagonal(DVec4::new(1.0, 1.0, 1.0, -1.0));
-                let normal = j * a.transpose() * j * self.normals[3];
+                let normal = lorentz::inverse(a) * self.normals[3];
                 return Some(Crossing {
                     face: usize::MAX,
                     t,
@@ -178,9 +172,7 @@ impl HoroCell {
             // Step to the wall and fold the ray back into the chamber.
             let mut x = o + s * d;
             let mut v = s * o + d;
-            x /= (-lorentz::dot(x, x)).sqrt();
-            v += lorentz::dot(x, v) * x;
-            v /= lorentz::dot(v, v).sqrt();
+            lorentz::renormalise(&mut x, &mut v);
             o = self.mirrors[k] * x;
             d = self.mirrors[k] * v;
             a = self.mirrors[k] * a;

@@ -228,10 +228,7 @@ impl QuotientSpace {
         };
         let mut o = *m * x;
         let mut v = *m * d;
-        // Restore <O,O> = -1, <D,D> = 1, <O,D> = 0 after rounding.
-        o /= (-lorentz::dot(o, o)).sqrt();
-        v += lorentz::dot(o, v) * o;
-        v /= lorentz::dot(v, v).sqrt();
+        lorentz::renormalise(&mut o, &mut v);
         Ray { origin: o, dir: v }
     }
 }
