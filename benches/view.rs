@@ -67,6 +67,7 @@ fn main() -> ExitCode {
         let options = hscene_lang::Options {
             base_dir: std::path::Path::new(path).parent().map(|p| p.to_path_buf()),
             frame: 0,
+            ..Default::default()
         };
         let Some(scene) = hscene_lang::compile_with(&source, &options).scene else {
             eprintln!("{path}: does not compile");

@@ -409,6 +409,10 @@ pub struct FmtArgs {
     /// The file name to show in messages for a scene read from stdin (`-`).
     #[arg(long, value_name = "PATH")]
     pub stdin_filename: Option<PathBuf>,
+    /// Replace a file that is read-only, has other hard links or belongs
+    /// to another user (refused without it, as `render` refuses).
+    #[arg(long)]
+    pub force: bool,
 }
 
 /// The pixel layers of `--aov`, each once, in the order given.

@@ -93,6 +93,14 @@ pub fn run(args: &ExportArgs, color: ColorChoice) -> ExitCode {
     let Some(scene) = compiled.scene else {
         return ExitCode::from(EXIT_SCENE_ERRORS);
     };
+    // Now that the files the scene names are known, none may be an output.
+    let mut inputs: Vec<&Path> = vec![&args.scene];
+    inputs.extend(compiled.inputs.iter().map(PathBuf::as_path));
+    for path in &paths {
+        if let Err(e) = hrender::check_output_file(path, &inputs, overwrite) {
+            return fail(e);
+        }
+    }
     if args.frame >= scene.settings.frames {
         return fail(format!(
             "--frame {} is past the scene's last frame ({})",

@@ -1,5 +1,12 @@
 //! `hscene fmt`: the canonical layout (`hscene_lang::format`) applied to
 //! files in place, checked (`--check`), or from stdin to stdout (`-`).
+//!
+//! A file is written the way `render` writes an output (hrender's
+//! `replace_file`): atomically and signal-safely, through a symbolic link
+//! to the file it names, keeping permissions and owner; a FIFO or device is
+//! refused before it is read; a read-only, hard-linked or another user's
+//! file only with `--force`; and a file that changed on disk while it was
+//! being formatted (an editor saving) is left as it is now.
 
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
@@ -22,6 +29,11 @@ enum Outcome {
 }
 
 pub fn run(args: &FmtArgs, color: ColorChoice) -> ExitCode {
+    // An interrupted run leaves no temporary file behind.
+    let _ = ctrlc::set_handler(|| {
+        hrender::remove_unfinished_outputs();
+        std::process::exit(130);
+    });
     let mut worst = ExitCode::SUCCESS;
     let mut unformatted = false;
     let mut errors = false;
@@ -33,7 +45,7 @@ pub fn run(args: &FmtArgs, color: ColorChoice) -> ExitCode {
                 .unwrap_or_else(|| PathBuf::from("<stdin>"));
             stdin(&name, args.check, color)
         } else {
-            file(path, args.check, color)
+            file(path, args, color)
         };
         match outcome {
             Outcome::Unchanged => {}
@@ -100,13 +112,30 @@ fn stdin(name: &Path, check: bool, color: ColorChoice) -> Outcome {
     }
 }
 
-fn file(path: &Path, check: bool, color: ColorChoice) -> Outcome {
-    let source = match crate::input::read_scene(path) {
-        Ok(s) => s,
-        Err(e) => {
-            eprintln!("error: cannot read {}: {e}", path.display());
-            return Outcome::Io;
+fn file(path: &Path, args: &FmtArgs, color: ColorChoice) -> Outcome {
+    let fail = |e: &dyn std::fmt::Display| {
+        eprintln!("error: {e}");
+        Outcome::Io
+    };
+    // Links are followed: the file they name is formatted, the link stays.
+    let target = hrender::output_target(path);
+    match std::fs::metadata(&target) {
+        Ok(m) if !m.is_file() => {
+            return fail(&format!(
+                "{} is not a regular file; format a stream with `hscene fmt -`",
+                path.display()
+            ));
         }
+        Ok(_) => {}
+        Err(e) => return fail(&format!("cannot read {}: {e}", path.display())),
+    }
+    let stamp = match hrender::FileStamp::of(&target) {
+        Ok(s) => s,
+        Err(e) => return fail(&format!("cannot read {}: {e}", path.display())),
+    };
+    let source = match crate::input::read_scene(&target) {
+        Ok(s) => s,
+        Err(e) => return fail(&format!("cannot read {}: {e}", path.display())),
     };
     let Some(text) = formatted(path, &source, color) else {
         return Outcome::SyntaxErrors;
@@ -114,35 +143,30 @@ fn file(path: &Path, check: bool, color: ColorChoice) -> Outcome {
     if text == source {
         return Outcome::Unchanged;
     }
-    if check {
+    if args.check {
         println!("would reformat {}", path.display());
         return Outcome::Changed;
     }
-    match write_atomically(path, &text) {
+    let overwrite = if args.force {
+        hrender::Overwrite::Force
+    } else {
+        hrender::Overwrite::Writable
+    };
+    if let Err(e) = hrender::check_output_file(&target, &[], overwrite) {
+        return fail(&e);
+    }
+    let written = hrender::replace_file(&target, Some(&stamp), |out| {
+        out.write_all(text.as_bytes())
+            .map_err(|source| hrender::RenderError::Io {
+                path: path.to_path_buf(),
+                source,
+            })
+    });
+    match written {
         Ok(()) => {
             eprintln!("formatted {}", path.display());
             Outcome::Changed
         }
-        Err(e) => {
-            eprintln!("error: cannot write {}: {e}", path.display());
-            Outcome::Io
-        }
+        Err(e) => fail(&e),
     }
-}
-
-/// Writes a temporary file beside `path` and renames it over `path`, so a
-/// failure leaves the original whole. The original's permissions are kept.
-fn write_atomically(path: &Path, text: &str) -> std::io::Result<()> {
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => Path::new("."),
-    };
-    let mut tmp = tempfile::NamedTempFile::new_in(dir)?;
-    tmp.write_all(text.as_bytes())?;
-    tmp.as_file().sync_all()?;
-    if let Ok(meta) = std::fs::metadata(path) {
-        tmp.as_file().set_permissions(meta.permissions())?;
-    }
-    tmp.persist(path).map_err(|e| e.error)?;
-    Ok(())
 }

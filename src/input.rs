@@ -38,7 +38,35 @@ pub fn read_scene(path: &Path) -> Result<String, InputError> {
     if path == Path::new("-") {
         return read_bounded(std::io::stdin().lock());
     }
-    read_bounded(std::fs::File::open(path).map_err(InputError::Io)?)
+    read_bounded(open(path).map_err(InputError::Io)?)
+}
+
+/// Opens `path` for reading without waiting: opening a FIFO blocks until a
+/// writer opens it too, which may never happen. Opened non-blocking, a FIFO
+/// with no writer reads as empty; one with a writer (`check <(cmd)`) is
+/// then read as usual, blocking until the writer is done.
+#[cfg(unix)]
+fn open(path: &Path) -> std::io::Result<std::fs::File> {
+    use std::os::fd::AsRawFd;
+    use std::os::unix::fs::OpenOptionsExt;
+    let file = std::fs::OpenOptions::new()
+        .read(true)
+        .custom_flags(libc::O_NONBLOCK)
+        .open(path)?;
+    // SAFETY: fcntl on a descriptor this function owns, with flags read
+    // from it; no memory is passed.
+    unsafe {
+        let flags = libc::fcntl(file.as_raw_fd(), libc::F_GETFL);
+        if flags >= 0 {
+            libc::fcntl(file.as_raw_fd(), libc::F_SETFL, flags & !libc::O_NONBLOCK);
+        }
+    }
+    Ok(file)
+}
+
+#[cfg(not(unix))]
+fn open(path: &Path) -> std::io::Result<std::fs::File> {
+    std::fs::File::open(path)
 }
 
 fn read_bounded(input: impl Read) -> Result<String, InputError> {

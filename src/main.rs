@@ -7,6 +7,7 @@ mod exit;
 mod explain;
 mod export_cmd;
 mod fmt_cmd;
+mod frames;
 mod input;
 mod lsp;
 mod report;
@@ -22,6 +23,7 @@ use hrender::{DisplayTransform, Encoding, Exposure, RenderOptions, SampleDepth, 
 use hscene_ir::{Net, Resolution};
 
 use exit::{EXIT_SCENE_ERRORS, EXIT_USAGE_OR_IO, print_bytes};
+use frames::frame_path;
 
 use cli::{
     CheckArgs, Cli, ColorChoice, Command, Depth, Emit, EncodingArg, ExposureArg, Format,
@@ -32,6 +34,7 @@ use cli::{
 const DEFAULT_NOISE: f64 = 0.01;
 
 fn main() -> ExitCode {
+    ignore_file_size_signal();
     let cli = Cli::parse();
     let color = cli.color;
     match cli.command {
@@ -61,11 +64,25 @@ fn main() -> ExitCode {
     }
 }
 
+/// A write past the file-size limit (`ulimit -f`) raises SIGXFSZ, whose
+/// default action kills the process before it can remove its temporary
+/// file. Ignored, the write fails with `EFBIG` instead, an I/O error like
+/// any other: reported, and the temporary file removed.
+fn ignore_file_size_signal() {
+    #[cfg(unix)]
+    // SAFETY: setting a signal's disposition to SIG_IGN runs no handler
+    // code; done first, before any thread starts.
+    unsafe {
+        libc::signal(libc::SIGXFSZ, libc::SIG_IGN);
+    }
+}
+
 /// Mesh files are found relative to the scene file.
 pub(crate) fn compile_options(scene: &Path, frame: u32) -> hscene_lang::Options {
     hscene_lang::Options {
         base_dir: scene.parent().map(Path::to_path_buf),
         frame,
+        ..Default::default()
     }
 }
 
@@ -170,8 +187,15 @@ fn frame_past_end(k: u32, frames: u32) -> String {
     )
 }
 
-/// Everything about the outputs is checked before the first ray.
-fn check_outputs(args: &RenderArgs, outputs: &[std::path::PathBuf]) -> Result<(), ExitCode> {
+/// Everything about the outputs is checked before the first ray; none may
+/// be the scene file or a file the scene names (`inputs`).
+fn check_outputs(
+    args: &RenderArgs,
+    outputs: &[std::path::PathBuf],
+    inputs: &[std::path::PathBuf],
+) -> Result<(), ExitCode> {
+    let mut all: Vec<&Path> = vec![&args.scene];
+    all.extend(inputs.iter().map(std::path::PathBuf::as_path));
     let overwrite = if args.force {
         hrender::Overwrite::Force
     } else {
@@ -180,11 +204,11 @@ fn check_outputs(args: &RenderArgs, outputs: &[std::path::PathBuf]) -> Result<()
     for output in outputs {
         let checked = if hrender::VideoFormat::from_path(output).is_some() {
             hrender::check_video(output)
-                .and_then(|_| hrender::check_output_file(output, &[&args.scene], overwrite))
+                .and_then(|_| hrender::check_output_file(output, &all, overwrite))
         } else {
             hrender::ImageFormat::from_path(output).and_then(|format| {
                 let depth = sample_depth(args.depth, format);
-                hrender::check_output(output, depth, &[&args.scene], overwrite).map(drop)
+                hrender::check_output(output, depth, &all, overwrite).map(drop)
             })
         };
         if let Err(e) = checked {
@@ -243,7 +267,7 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
         }
     }
     // Refuse a bad output before spending time on the scene.
-    if let Err(code) = check_outputs(args, std::slice::from_ref(&args.output)) {
+    if let Err(code) = check_outputs(args, std::slice::from_ref(&args.output), &[]) {
         return code;
     }
     // `--exposure auto` is measured on the first frame rendered and kept.
@@ -287,11 +311,25 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
         eprintln!("error: {}", frame_past_end(k, frames));
         return ExitCode::from(EXIT_USAGE_OR_IO);
     }
-    if args.frame.is_none() && frames > 1 && video.is_none() {
-        let outputs: Vec<_> = (0..frames).map(|k| frame_path(&args.output, k)).collect();
-        if let Err(code) = check_outputs(args, &outputs) {
-            return code;
-        }
+    let outputs: Vec<_> = if args.frame.is_none() && frames > 1 && video.is_none() {
+        (0..frames).map(|k| frame_path(&args.output, k)).collect()
+    } else {
+        vec![args.output.clone()]
+    };
+    if let Err(code) = check_outputs(args, &outputs, &compiled.inputs) {
+        return code;
+    }
+    // Every frame is checked before the first is written.
+    if args.frame.is_none()
+        && frames > 1
+        && let Err(code) = frames::check_every_frame(
+            &scene,
+            frames,
+            &|k| hscene_lang::compile_with(&source, &compile_options(&args.scene, k)),
+            &show,
+        )
+    {
+        return code;
     }
     if (args.frame.is_some() || frames == 1) && video.is_none() {
         return render_frame(
@@ -447,19 +485,6 @@ fn sample_depth(depth: Option<Depth>, format: hrender::ImageFormat) -> SampleDep
         Some(Depth::Float32) => SampleDepth::Float32,
         None => format.default_depth(),
     }
-}
-
-/// `out.png` -> `out-0007.png` for frame 7 (at least four digits).
-fn frame_path(output: &Path, frame: u32) -> std::path::PathBuf {
-    let stem = output
-        .file_stem()
-        .map(|s| s.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let name = match output.extension() {
-        Some(ext) => format!("{stem}-{frame:04}.{}", ext.to_string_lossy()),
-        None => format!("{stem}-{frame:04}"),
-    };
-    output.with_file_name(name)
 }
 
 fn render_frame(

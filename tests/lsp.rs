@@ -440,3 +440,204 @@ fn a_client_that_goes_away_ends_the_server() {
         std::thread::sleep(Duration::from_millis(20));
     }
 }
+
+impl Server {
+    /// Writes raw bytes, as a broken or hostile client would.
+    fn send_raw(&mut self, bytes: &[u8]) {
+        self.stdin.write_all(bytes).unwrap();
+        self.stdin.flush().unwrap();
+    }
+
+    fn initialise(&mut self) {
+        self.request(
+            "initialize",
+            json!({"processId": null, "rootUri": null, "capabilities": {}}),
+        );
+        self.notify("initialized", json!({}));
+    }
+
+    /// Waits for the server to exit; its status.
+    fn exit_status(&mut self) -> std::process::ExitStatus {
+        let started = std::time::Instant::now();
+        loop {
+            if let Some(status) = self.child.try_wait().unwrap() {
+                return status;
+            }
+            assert!(started.elapsed() < TIMEOUT, "the server did not exit");
+            std::thread::sleep(Duration::from_millis(20));
+        }
+    }
+}
+
+fn framed(body: &[u8]) -> Vec<u8> {
+    let mut v = format!("Content-Length: {}\r\n\r\n", body.len()).into_bytes();
+    v.extend_from_slice(body);
+    v
+}
+
+/// Each malformed message gets the JSON-RPC error for it, and the server
+/// answers the next request as if nothing happened.
+#[test]
+fn malformed_messages_are_answered_and_the_server_goes_on() {
+    let mut server = Server::start();
+    server.initialise();
+    let mut deep = "[".repeat(100_000);
+    deep.push_str(&"]".repeat(100_000));
+    let cases: Vec<(&str, Vec<u8>, i64)> = vec![
+        ("not JSON", b"{\"jsonrpc\": \"2.0\", ".to_vec(), -32700),
+        (
+            "invalid UTF-8",
+            b"{\"jsonrpc\":\"2.0\",\"method\":\"\xc3\x28\"}".to_vec(),
+            -32700,
+        ),
+        (
+            "a lone surrogate",
+            br#"{"jsonrpc":"2.0","id":1,"method":"\udc00"}"#.to_vec(),
+            -32700,
+        ),
+        ("deep nesting", deep.into_bytes(), -32700),
+        (
+            "a batch",
+            br#"[{"jsonrpc":"2.0","id":1,"method":"shutdown"}]"#.to_vec(),
+            -32600,
+        ),
+        ("no method", br#"{"jsonrpc":"2.0","id":5}"#.to_vec(), -32600),
+    ];
+    for (name, body, code) in cases {
+        server.send_raw(&framed(&body));
+        let answer = server.next_message(name);
+        assert_eq!(answer["error"]["code"], code, "{name}: {answer}");
+        assert!(
+            answer["id"].is_null() || answer["id"] == 5,
+            "{name}: {answer}"
+        );
+        // Still serving.
+        let hover = server.request("textDocument/hover", at(SCENE, "%2", 0));
+        assert!(
+            hover["error"]["message"]
+                .as_str()
+                .unwrap()
+                .contains("not open"),
+            "{name}"
+        );
+    }
+    assert!(server.request("shutdown", Value::Null).is_null());
+    server.notify("exit", Value::Null);
+    assert!(server.exit_status().success());
+}
+
+/// Requests before `initialize` are refused with -32002, and `exit`
+/// without `shutdown` ends the server with status 1.
+#[test]
+fn the_protocol_order_is_kept() {
+    let mut server = Server::start();
+    let early = server.request("textDocument/hover", at(SCENE, "%2", 0));
+    assert_eq!(early["error"]["code"], -32002, "{early}");
+    server.initialise();
+    server.notify("exit", Value::Null);
+    assert_eq!(server.exit_status().code(), Some(1));
+}
+
+/// A `Content-Length` of 2^64 - 1 or 2^62 is not allocated: the body is
+/// skipped as it arrives, and the stream's end ends the server.
+#[test]
+fn a_huge_content_length_is_skipped_not_allocated() {
+    for length in ["18446744073709551615", "4611686018427387904"] {
+        let mut server = Server::start();
+        server.initialise();
+        server.send_raw(format!("Content-Length: {length}\r\n\r\n{{\"jsonrpc\"").as_bytes());
+        drop(server.stdin);
+        let status = {
+            let started = std::time::Instant::now();
+            loop {
+                if let Some(status) = server.child.try_wait().unwrap() {
+                    break status;
+                }
+                assert!(started.elapsed() < TIMEOUT, "the server did not exit");
+                std::thread::sleep(Duration::from_millis(20));
+            }
+        };
+        assert!(
+            status.code().is_some(),
+            "{length}: killed by a signal: {status}"
+        );
+    }
+}
+
+/// Endless bytes with no header line end (`hscene lsp < /dev/zero`):
+/// the header limit ends the server with status 2 and a reason, in
+/// bounded memory.
+#[test]
+fn endless_garbage_ends_the_server_with_a_reason() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_hscene"))
+        .arg("lsp")
+        .stdin(std::fs::File::open("/dev/zero").unwrap())
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("header line longer than"), "{stderr}");
+}
+
+/// An editor that stops reading: the server's writes fail with a broken
+/// pipe, and it ends with status 2 and no panic.
+#[test]
+fn a_client_that_stops_reading_ends_the_server_without_a_panic() {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_hscene"))
+        .arg("lsp")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdin = child.stdin.take().unwrap();
+    drop(child.stdout.take());
+    let init =
+        json!({"jsonrpc": "2.0", "id": 1, "method": "initialize", "params": {"capabilities": {}}});
+    let _ = stdin.write_all(&framed(init.to_string().as_bytes()));
+    let _ = stdin.flush();
+    let out = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+}
+
+/// Positions of a document with lone-CR line ends, and a document over the
+/// scene limit, which is held but not analysed.
+#[test]
+fn line_ends_and_the_size_limit_are_those_of_check() {
+    let mut server = Server::start();
+    server.initialise();
+    let text = "Points { a = (0,0,0); }\rBRDFs { m: diffuse = (1,1,1); }\rObjects { Sphere %nowhere, 0.1, #m; }\r";
+    server.notify(
+        "textDocument/didOpen",
+        json!({"textDocument": {"uri": URI, "languageId": "hscene", "version": 1, "text": text}}),
+    );
+    let published = server.diagnostics();
+    let undefined = published["diagnostics"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|d| d["code"] == "HSC0201")
+        .unwrap_or_else(|| panic!("{published}"))
+        .clone();
+    let column = "Objects { Sphere ".len();
+    assert_eq!(
+        undefined["range"]["start"],
+        json!({"line": 2, "character": column})
+    );
+    let big = format!("// {}\n", "x".repeat(16 << 20));
+    server.notify(
+        "textDocument/didChange",
+        json!({"textDocument": {"uri": URI, "version": 2}, "contentChanges": [{"text": big}]}),
+    );
+    let published = server.diagnostics();
+    let all = published["diagnostics"].as_array().unwrap();
+    assert_eq!(all.len(), 1, "{published}");
+    assert!(
+        all[0]["message"]
+            .as_str()
+            .unwrap()
+            .contains("larger than the limit")
+    );
+}

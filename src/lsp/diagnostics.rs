@@ -12,6 +12,19 @@ use super::documents::Document;
 use super::position::range;
 
 pub fn to_lsp(uri: &Uri, doc: &Document) -> Vec<Diagnostic> {
+    if doc.too_large() {
+        return vec![Diagnostic {
+            range: lsp_types::Range::default(),
+            severity: Some(DiagnosticSeverity::ERROR),
+            source: Some("hscene".into()),
+            message: format!(
+                "this document is {} bytes, larger than the limit of {} bytes for a scene file: it is not analysed",
+                doc.text.len(),
+                crate::input::MAX_SCENE_BYTES
+            ),
+            ..Diagnostic::default()
+        }];
+    }
     doc.compiled
         .diagnostics
         .iter()
@@ -23,12 +36,12 @@ pub fn to_lsp(uri: &Uri, doc: &Document) -> Vec<Diagnostic> {
             let related: Vec<DiagnosticRelatedInformation> = related(&doc.symbols, d)
                 .into_iter()
                 .map(|(span, message)| DiagnosticRelatedInformation {
-                    location: Location::new(uri.clone(), range(&doc.text, span)),
+                    location: Location::new(uri.clone(), range(&doc.lines, span)),
                     message,
                 })
                 .collect();
             Diagnostic {
-                range: range(&doc.text, d.span),
+                range: range(&doc.lines, d.span),
                 severity: Some(match d.severity {
                     Severity::Error => DiagnosticSeverity::ERROR,
                     Severity::Warning => DiagnosticSeverity::WARNING,
@@ -81,4 +94,85 @@ fn related(symbols: &SymbolIndex, d: &hscene_lang::Diagnostic) -> Vec<(hscene_la
             ))
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use std::str::FromStr;
+
+    use proptest::prelude::*;
+
+    use super::*;
+    use crate::cli::Format;
+    use crate::lsp::documents::Documents;
+
+    /// Pieces of scenes, right and wrong, with every kind of line end and
+    /// characters of 1 to 4 UTF-8 bytes (1 or 2 UTF-16 units).
+    const PIECES: &[&str] = &[
+        "Points { p = (0,0,0); q = (0.5,0,0); }",
+        "Points { é = (0,0,0); }",
+        "// 𝕏 é comment\n",
+        "BRDFs { m: diffuse = (1,1,1); }",
+        "Objects { Sphere %p, 0.1, #m; }",
+        "Objects { Sphere %nowhere, 0.1, #missing; }",
+        "Objects { Sphere %p, -1, #m; }",
+        "Globals { from = %p; to = %q; fov = 1e308; }",
+        "Lights { %q, (1,1,1), (0,0,0); }",
+        "Bogus { x = 1; }",
+        "Points { a = (1,1,1); }",
+        "{",
+        "}",
+        ";",
+        "\n",
+        "\r\n",
+        "\r",
+        "  ",
+        "\"𝕏\"",
+    ];
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// `check --format json` and the language server put every
+        /// diagnostic at the same place: the server's UTF-16 position is
+        /// the check's line and character column, converted.
+        #[test]
+        fn check_and_the_server_agree_on_positions(picks in proptest::collection::vec(0..PIECES.len(), 1..40)) {
+            let text: String = picks.iter().map(|&i| PIECES[i]).collect();
+            let uri = lsp_types::Uri::from_str("untitled:prop").unwrap();
+            let mut docs = Documents::default();
+            docs.open(uri.clone(), text.clone(), 1);
+            let doc = docs.get(&uri).unwrap();
+            let ours = to_lsp(&uri, doc);
+            // `check` reads files decoded (lone CR and CRLF as they are
+            // counted, the text otherwise unchanged).
+            let decoded = hscene_lang::source::decode(text.clone().into_bytes()).unwrap();
+            let compiled = hscene_lang::compile(&decoded);
+            let report = crate::report::format_diagnostics(
+                std::path::Path::new("prop.hsc"),
+                &decoded,
+                &compiled.diagnostics,
+                Format::Json,
+                false,
+            );
+            let checked: Vec<serde_json::Value> = report
+                .lines()
+                .map(|l| serde_json::from_str(l).unwrap())
+                .filter(|v: &serde_json::Value| v["severity"] != "note")
+                .collect();
+            prop_assert!(checked.len() <= ours.len());
+            let lines: Vec<&str> = decoded.split('\n').collect();
+            for (c, d) in checked.iter().zip(&ours) {
+                prop_assert_eq!(c["code"].as_str(), d.code.as_ref().map(|code| match code {
+                    NumberOrString::String(s) => s.as_str(),
+                    NumberOrString::Number(_) => "",
+                }));
+                let line = c["line"].as_u64().unwrap() as usize;
+                let column = c["column"].as_u64().unwrap() as usize;
+                prop_assert_eq!(d.range.start.line as usize, line - 1);
+                let units: usize = lines[line - 1].chars().take(column - 1).map(char::len_utf16).sum();
+                prop_assert_eq!(d.range.start.character as usize, units);
+            }
+        }
+    }
 }

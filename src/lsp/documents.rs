@@ -4,18 +4,33 @@ use std::collections::HashMap;
 use std::path::PathBuf;
 
 use hscene_lang::symbols::SymbolIndex;
+use hscene_lang::{FileCache, LineIndex};
 use lsp_types::Uri;
 
 use super::request_error::RequestError;
+use crate::input::MAX_SCENE_BYTES;
 
 /// One open document, analysed when it was opened or changed.
 pub struct Document {
     pub text: String,
+    /// Lines and columns of `text`, for every position conversion.
+    pub lines: LineIndex,
     pub version: i32,
     /// The compiler's result: diagnostics, and the IR when error-free.
+    /// Empty for a document over [`MAX_SCENE_BYTES`].
     pub compiled: hscene_lang::Compiled,
     /// Declarations and references.
     pub symbols: SymbolIndex,
+    /// The meshes and images it names, read once and again only when
+    /// they change on disk.
+    files: FileCache,
+}
+
+impl Document {
+    /// Whether the text is over the limit and was not analysed.
+    pub fn too_large(&self) -> bool {
+        self.text.len() as u64 > MAX_SCENE_BYTES
+    }
 }
 
 #[derive(Default)]
@@ -24,21 +39,46 @@ pub struct Documents {
 }
 
 impl Documents {
-    /// Stores (or replaces) a document and analyses it.
+    /// Stores (or replaces) a document and analyses it, unless it is
+    /// larger than a scene file may be (then it is held unanalysed, and
+    /// [`Document::too_large`] says so).
     pub fn open(&mut self, uri: Uri, text: String, version: i32) {
-        let options = hscene_lang::Options {
-            base_dir: file_path(&uri).and_then(|p| p.parent().map(PathBuf::from)),
-            frame: 0,
+        let files = self
+            .docs
+            .remove(uri.as_str())
+            .map(|d| d.files)
+            .unwrap_or_default();
+        let (compiled, symbols) = if text.len() as u64 > MAX_SCENE_BYTES {
+            let empty = hscene_lang::parse("");
+            (
+                hscene_lang::Compiled {
+                    scene: None,
+                    diagnostics: Vec::new(),
+                    inputs: Vec::new(),
+                },
+                SymbolIndex::new(&empty.file),
+            )
+        } else {
+            let options = hscene_lang::Options {
+                base_dir: file_path(&uri).and_then(|p| p.parent().map(PathBuf::from)),
+                frame: 0,
+                files: files.clone(),
+            };
+            (
+                hscene_lang::compile_with(&text, &options),
+                SymbolIndex::new(&hscene_lang::parse(&text).file),
+            )
         };
-        let compiled = hscene_lang::compile_with(&text, &options);
-        let symbols = SymbolIndex::new(&hscene_lang::parse(&text).file);
+        let lines = LineIndex::new(&text);
         self.docs.insert(
             uri.as_str().to_owned(),
             Document {
                 text,
+                lines,
                 version,
                 compiled,
                 symbols,
+                files,
             },
         );
     }
@@ -63,7 +103,7 @@ impl Documents {
         p: &lsp_types::TextDocumentPositionParams,
     ) -> Result<(&Document, usize), RequestError> {
         let doc = self.require(&p.text_document.uri)?;
-        Ok((doc, super::position::offset(&doc.text, p.position)))
+        Ok((doc, super::position::offset(&doc.lines, p.position)))
     }
 }
 

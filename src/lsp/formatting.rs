@@ -19,6 +19,9 @@ pub fn format(
     if formatted == doc.text {
         return Ok(Some(Vec::new()));
     }
-    let whole = Range::new(position(&doc.text, 0), position(&doc.text, doc.text.len()));
+    let whole = Range::new(
+        position(&doc.lines, 0),
+        position(&doc.lines, doc.text.len()),
+    );
     Ok(Some(vec![TextEdit::new(whole, formatted)]))
 }

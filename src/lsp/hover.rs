@@ -41,7 +41,7 @@ pub fn hover(docs: &Documents, p: HoverParams) -> Result<Option<Hover>, RequestE
             kind: MarkupKind::Markdown,
             value: text,
         }),
-        range: Some(range(&doc.text, hit_span)),
+        range: Some(range(&doc.lines, hit_span)),
     }))
 }
 

@@ -3,7 +3,8 @@
 //! Every answer comes from the compiler's own results (`hscene_lang`:
 //! parse, compile, symbol index, formatter); this module only translates
 //! between them and the protocol. One concept per file: the server loop
-//! here, the document store, position conversion and one file per request.
+//! here, the wire (`transport.rs`), the document store, position conversion
+//! and one file per request.
 
 mod completion;
 mod diagnostics;
@@ -14,10 +15,12 @@ mod navigation;
 mod outline;
 mod position;
 mod request_error;
+mod transport;
 
+use std::io::{BufRead, Write};
 use std::process::ExitCode;
 
-use lsp_server::{Connection, ErrorCode, Message, Notification, Request, Response};
+use lsp_server::{ErrorCode, Message, Notification, Request, Response};
 use lsp_types::notification::{
     DidChangeTextDocument, DidCloseTextDocument, DidOpenTextDocument, Notification as _,
     PublishDiagnostics,
@@ -34,21 +37,25 @@ use lsp_types::{
 
 use documents::Documents;
 use request_error::RequestError;
+use transport::{Incoming, Transport, WireError};
 
-/// Runs the server until the client says `exit` (or closes stdin).
+/// Runs the server until the client says `exit` or closes stdin. Exit
+/// status 0 after `shutdown` then `exit` or at the end of input, 1 for
+/// `exit` without `shutdown` (as the protocol asks), 2 when the stream
+/// breaks (malformed headers, a client that stopped reading).
 pub fn run() -> ExitCode {
-    let (connection, io_threads) = Connection::stdio();
-    let code = match serve(&connection) {
-        Ok(()) => ExitCode::SUCCESS,
+    let mut transport = Transport::new(std::io::stdin().lock(), std::io::stdout().lock());
+    match serve(&mut transport) {
+        Ok(code) => code,
         Err(e) => {
-            eprintln!("hscene lsp: {e}");
-            ExitCode::from(crate::exit::EXIT_USAGE_OR_IO)
-        }
-    };
-    drop(connection);
-    match io_threads.join() {
-        Ok(()) => code,
-        Err(e) => {
+            if let WireError::Framing(reason) = &e {
+                // Said on the wire too, in case the client logs it.
+                let _ = transport.write_value(&transport::error_response(
+                    None,
+                    transport::PARSE_ERROR,
+                    &format!("{reason}; the server stops"),
+                ));
+            }
             eprintln!("hscene lsp: {e}");
             ExitCode::from(crate::exit::EXIT_USAGE_OR_IO)
         }
@@ -74,7 +81,85 @@ fn capabilities() -> ServerCapabilities {
     }
 }
 
-fn serve(connection: &Connection) -> Result<(), Box<dyn std::error::Error>> {
+/// Where the conversation is: requests before `initialize` and after
+/// `shutdown` are refused, as the protocol asks.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Phase {
+    Uninitialised,
+    Running,
+    ShutDown,
+}
+
+fn serve<R: BufRead, W: Write>(t: &mut Transport<R, W>) -> Result<ExitCode, WireError> {
+    let mut phase = Phase::Uninitialised;
+    let mut docs = Documents::default();
+    while let Some(incoming) = t.read()? {
+        let message = match incoming {
+            Incoming::Invalid(error) => {
+                t.write_value(&error)?;
+                continue;
+            }
+            Incoming::Message(message) => message,
+        };
+        match message {
+            Message::Request(req) => {
+                let response = match (phase, req.method.as_str()) {
+                    (Phase::Uninitialised, "initialize") => {
+                        phase = Phase::Running;
+                        Response::new_ok(req.id, initialize_result())
+                    }
+                    (Phase::Uninitialised, _) => Response::new_err(
+                        req.id,
+                        ErrorCode::ServerNotInitialized as i32,
+                        "the server is not initialised: send `initialize` first".into(),
+                    ),
+                    (Phase::Running, "shutdown") => {
+                        phase = Phase::ShutDown;
+                        Response::new_ok(req.id, serde_json::Value::Null)
+                    }
+                    (Phase::Running, "initialize") => Response::new_err(
+                        req.id,
+                        ErrorCode::InvalidRequest as i32,
+                        "`initialize` was already received".into(),
+                    ),
+                    (Phase::Running, _) => guarded_request(&docs, req),
+                    (Phase::ShutDown, _) => Response::new_err(
+                        req.id,
+                        ErrorCode::InvalidRequest as i32,
+                        "the server is shutting down: only `exit` is accepted".into(),
+                    ),
+                };
+                t.write(Message::Response(response))?;
+            }
+            Message::Notification(note) if note.method == "exit" => {
+                return Ok(if phase == Phase::ShutDown {
+                    ExitCode::SUCCESS
+                } else {
+                    ExitCode::FAILURE
+                });
+            }
+            Message::Notification(note) => {
+                if phase != Phase::Running {
+                    continue;
+                }
+                let applied = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                    handle_notification(&mut docs, note)
+                }));
+                match applied {
+                    Ok(Some(uri)) => publish(t, &docs, &uri)?,
+                    Ok(None) => {}
+                    Err(_) => {
+                        eprintln!("hscene lsp: a notification failed (a bug); the server goes on")
+                    }
+                }
+            }
+            Message::Response(_) => {}
+        }
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+fn initialize_result() -> serde_json::Value {
     let init = InitializeResult {
         capabilities: capabilities(),
         server_info: Some(ServerInfo {
@@ -82,27 +167,21 @@ fn serve(connection: &Connection) -> Result<(), Box<dyn std::error::Error>> {
             version: Some(env!("CARGO_PKG_VERSION").into()),
         }),
     };
-    let (id, _params) = connection.initialize_start()?;
-    connection.initialize_finish(id, serde_json::to_value(init)?)?;
-    let mut docs = Documents::default();
-    for message in &connection.receiver {
-        match message {
-            Message::Request(req) => {
-                if connection.handle_shutdown(&req)? {
-                    return Ok(());
-                }
-                let response = handle_request(&docs, req);
-                connection.sender.send(Message::Response(response))?;
-            }
-            Message::Notification(note) => {
-                if let Some(uri) = handle_notification(&mut docs, note) {
-                    publish(connection, &docs, &uri)?;
-                }
-            }
-            Message::Response(_) => {}
-        }
-    }
-    Ok(())
+    serde_json::to_value(init).unwrap_or(serde_json::Value::Null)
+}
+
+/// Answers a request; a bug that panics while answering becomes an
+/// `InternalError` answer instead of the end of the server.
+fn guarded_request(docs: &Documents, req: Request) -> Response {
+    let id = req.id.clone();
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| handle_request(docs, req)))
+        .unwrap_or_else(|_| {
+            Response::new_err(
+                id,
+                ErrorCode::InternalError as i32,
+                "the server failed on this request (a bug); it goes on".into(),
+            )
+        })
 }
 
 /// Applies a document notification; returns the document whose diagnostics
@@ -139,11 +218,11 @@ fn handle_notification(docs: &mut Documents, note: Notification) -> Option<lsp_t
     }
 }
 
-fn publish(
-    connection: &Connection,
+fn publish<R: BufRead, W: Write>(
+    t: &mut Transport<R, W>,
     docs: &Documents,
     uri: &lsp_types::Uri,
-) -> Result<(), Box<dyn std::error::Error>> {
+) -> Result<(), WireError> {
     let Some(doc) = docs.get(uri) else {
         return Ok(());
     };
@@ -152,13 +231,10 @@ fn publish(
         diagnostics: diagnostics::to_lsp(uri, doc),
         version: Some(doc.version),
     };
-    connection
-        .sender
-        .send(Message::Notification(Notification::new(
-            PublishDiagnostics::METHOD.into(),
-            params,
-        )))?;
-    Ok(())
+    t.write(Message::Notification(Notification::new(
+        PublishDiagnostics::METHOD.into(),
+        params,
+    )))
 }
 
 /// Answers one request; unknown methods get `MethodNotFound`.

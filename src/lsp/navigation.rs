@@ -29,7 +29,7 @@ pub fn definition(
     let span = def.name.as_ref().map_or(def.span, |n| n.span);
     Ok(Some(GotoDefinitionResponse::Scalar(Location::new(
         uri.clone(),
-        range(&doc.text, span),
+        range(&doc.lines, span),
     ))))
 }
 
@@ -53,7 +53,7 @@ pub fn references(
     Ok(Some(
         spans
             .into_iter()
-            .map(|s| Location::new(uri.clone(), range(&doc.text, s)))
+            .map(|s| Location::new(uri.clone(), range(&doc.lines, s)))
             .collect(),
     ))
 }
@@ -78,12 +78,12 @@ pub fn rename(docs: &Documents, p: RenameParams) -> Result<Option<WorkspaceEdit>
     let sigil = def.kind.sigil().as_char();
     let new = p.new_name.strip_prefix(sigil).unwrap_or(&p.new_name);
     check_name(symbols, d, new)?;
-    let mut edits = vec![TextEdit::new(range(&doc.text, old.span), new.to_owned())];
+    let mut edits = vec![TextEdit::new(range(&doc.lines, old.span), new.to_owned())];
     for u in symbols.uses_of(d) {
         if matches!(u.reference.target, RefTarget::Name(_)) {
             // Keep the sigil; replace the name after it.
             let name = Span::new(u.reference.span.start + 1, u.reference.span.end);
-            edits.push(TextEdit::new(range(&doc.text, name), new.to_owned()));
+            edits.push(TextEdit::new(range(&doc.lines, name), new.to_owned()));
         }
     }
     Ok(Some(WorkspaceEdit::new(HashMap::from([(uri, edits)]))))

@@ -37,8 +37,8 @@ pub fn document_symbols(
                         },
                         tags: None,
                         deprecated: None,
-                        range: range(&doc.text, d.span),
-                        selection_range: range(&doc.text, selection),
+                        range: range(&doc.lines, d.span),
+                        selection_range: range(&doc.lines, selection),
                         children: None,
                     }
                 })
@@ -50,8 +50,8 @@ pub fn document_symbols(
                 kind: SymbolKind::NAMESPACE,
                 tags: None,
                 deprecated: None,
-                range: range(&doc.text, section.span),
-                selection_range: range(&doc.text, section.name.span),
+                range: range(&doc.lines, section.span),
+                selection_range: range(&doc.lines, section.name.span),
                 children: Some(children),
             }
         })

@@ -9,6 +9,11 @@ use crate::plane::HPlane;
 use crate::point::{Point, Vertex};
 use crate::ray::{Hit, Ray};
 
+/// How far from a polygon's first vertex its other vertices may be for that
+/// vertex to anchor the checks (`ConvexPolygon::new`): within it they keep
+/// about 1e-8 of their Klein coordinates' separation.
+const VERTEX_ANCHOR_REACH: f64 = 18.0;
+
 /// Relative tolerance for planarity and convexity checks of user input
 /// (scene files give coordinates to about 14 digits).
 const SHAPE_TOLERANCE: f64 = 1e-9;
@@ -78,12 +83,23 @@ impl ConvexPolygon {
             / n as f64;
         // An interior vertex lands exactly on the origin (x (+) -x = 0), which
         // measured better than the centroid; ideal polygons use the centroid.
+        // A vertex anchor sees the other vertices from one end of the
+        // polygon: a large one (a cube of circumradius 18 has edges 34 long)
+        // puts them beyond what f64 resolves from there, so the centroid,
+        // nearer all of them, anchors it instead.
+        let sees_all = |a: &Point| {
+            vertices.iter().all(|v| match v {
+                Vertex::Interior(p) => a.distance(*p) <= VERTEX_ANCHOR_REACH,
+                Vertex::Ideal(_) => true,
+            })
+        };
         let anchor = vertices
             .iter()
             .find_map(|v| match v {
                 Vertex::Interior(p) => Some(*p),
                 Vertex::Ideal(_) => None,
             })
+            .filter(sees_all)
             .or_else(|| {
                 // Klein -> ball: k / (1 + sqrt(1 - |k|^2)). The centroid of
                 // points of the closed ball is in the closed ball, so

@@ -58,6 +58,42 @@ pub enum RenderError {
     /// The output exists and its permissions forbid writing it.
     #[error("the output {0} exists and is read-only; pass --force to replace it")]
     ReadOnlyOutput(PathBuf),
+    /// The output's file name is longer than file systems hold.
+    #[error(
+        "the output {path} has a file name of {bytes} bytes; file systems hold at most 255: choose a shorter name"
+    )]
+    OutputNameTooLong {
+        /// The output asked for.
+        path: PathBuf,
+        /// The length of its last component, in bytes.
+        bytes: usize,
+    },
+    /// The output has other hard links, which replacing it would leave
+    /// with the old content.
+    #[error(
+        "the output {path} has {links} hard links; replacing it would split them (the others keep the old content): pass --force to replace it anyway"
+    )]
+    OutputHardLinked {
+        /// The output asked for.
+        path: PathBuf,
+        /// Its link count.
+        links: u64,
+    },
+    /// The output belongs to another user; replacing it would make it ours.
+    #[error(
+        "the output {0} belongs to another user; replacing it would make it yours: pass --force to replace it anyway"
+    )]
+    OutputOwnedByOther(PathBuf),
+    /// The output is another user's file in a sticky directory (`/tmp`),
+    /// which no one but its owner may replace.
+    #[error(
+        "the output {0} belongs to another user in a sticky directory (like /tmp), where only its owner may replace it: choose another output name"
+    )]
+    OutputInStickyDirectory(PathBuf),
+    /// The file changed on disk between being read and being replaced
+    /// (`hscene fmt` while an editor saves): left as it is now.
+    #[error("{0} changed while it was being formatted; it was left as it is now: run again")]
+    ChangedMeanwhile(PathBuf),
     /// The output exists and is not a regular file (a directory, a device).
     #[error("the output {0} exists and is not a regular file")]
     OutputNotAFile(PathBuf),

@@ -71,10 +71,10 @@ pub use integrator::{Integrator, MAX_PATH_LENGTH, PathTracer, Whitted};
 pub use nets::{PixelNet, Sample, pixel_footprint};
 pub use noise::{ADAPTIVE_BATCH, Adaptive, PixelNoise};
 pub use output::{
-    ImageFormat, PngLevel, SampleDepth, check_depth, write_atomically, write_bytes, write_image,
-    write_image_with,
+    FileStamp, ImageFormat, PngLevel, SampleDepth, check_depth, output_target, replace_file,
+    write_atomically, write_bytes, write_image, write_image_with,
 };
-pub use output_check::{Overwrite, check_output, check_output_file};
+pub use output_check::{MAX_FILE_NAME_BYTES, Overwrite, check_output, check_output_file};
 pub use ray_budget::{MAX_SECONDARY_RAYS, RayBudget};
 pub use sampling::{SampleStream, Sampler};
 pub use scene::{Nearest, PreparedLight, PreparedObject, PreparedScene, T_MIN};
@@ -138,7 +138,8 @@ impl RenderOptions {
             && !(ev.is_finite() && ev.abs() <= MAX_EXPOSURE)
         {
             return Err(RenderError::InvalidOption(format!(
-                "exposure must be a number of stops from -{MAX_EXPOSURE} to {MAX_EXPOSURE}, not {ev}"
+                "exposure must be a number of stops from -{MAX_EXPOSURE} to {MAX_EXPOSURE}, not {}",
+                hgeom::Compact(ev)
             )));
         }
         if let Some(a) = self.adaptive {
@@ -336,8 +337,17 @@ impl RenderJob<'_> {
                 }
             }
             let c = sum * (self.scale / f64::from(k - first));
-            let px = c.channels().map(|v| v as f32);
-            // Exposure or f32 conversion can overflow a finite radiance.
+            // A finite radiance beyond f32's range (a light of colour 1e18
+            // delivering that at distance 30) is brighter than any display:
+            // it saturates at f32's largest value instead of overflowing
+            // to infinity and failing. Only NaN or infinity fail.
+            let px = c.channels().map(|v| {
+                if v.is_finite() {
+                    v.clamp(-f64::from(f32::MAX), f64::from(f32::MAX)) as f32
+                } else {
+                    f32::NAN
+                }
+            });
             let px = if px.iter().all(|v| v.is_finite()) {
                 px
             } else {
@@ -434,7 +444,7 @@ fn view_window(
     };
     hscene_ir::view::fov_window(fov, net, resolution, view_distance).map_err(|e| {
         RenderError::InvalidOption(match e {
-            FovError::OutOfRange => format!("fov must be between 0 and 180 degrees, not {fov}"),
+            FovError::OutOfRange => format!("fov must be between 0 and 180 degrees, not {}", hgeom::Compact(fov)),
             FovError::BeyondViewPlane(max) => format!(
                 "net {} cannot show fov = {fov}: the view h-plane spans less than {max:.1} degrees from the eye",
                 net.index()

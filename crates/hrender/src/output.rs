@@ -10,7 +10,7 @@
 
 use std::fs::File;
 use std::io::{BufWriter, Write};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use tiff::encoder::{TiffEncoder, colortype};
 
@@ -151,6 +151,25 @@ pub(crate) fn output_dir(path: &Path) -> &Path {
     }
 }
 
+/// The file a path names once symbolic links are followed (up to 40, as
+/// the kernel does): writing an output through a link replaces the file
+/// the link names and keeps the link. A dangling link names the file it
+/// would create.
+pub fn output_target(path: &Path) -> PathBuf {
+    let mut p = path.to_path_buf();
+    for _ in 0..40 {
+        match std::fs::symlink_metadata(&p) {
+            Ok(m) if m.file_type().is_symlink() => match std::fs::read_link(&p) {
+                Ok(t) if t.is_absolute() => p = t,
+                Ok(t) => p = output_dir(&p).join(t),
+                Err(_) => return p,
+            },
+            _ => return p,
+        }
+    }
+    p
+}
+
 /// Write the image to `path` in the format its extension names; integer
 /// samples go through `display`; a PNG is deflated at `png`.
 ///
@@ -186,6 +205,9 @@ pub fn write_bytes(path: &Path, bytes: &[u8]) -> Result<(), RenderError> {
 /// Writes `path` through `write`, atomically: into a temporary file in the
 /// same directory, synced, then renamed over `path`, so a reader sees the
 /// old file or the whole new one and a failed write leaves the old file.
+/// A symbolic link is followed: the file it names is replaced and the link
+/// stays. A replaced file keeps its permissions and (where this process
+/// may give it) its owner and group.
 ///
 /// Errors name `path`, never the temporary file. While the temporary file
 /// exists it is listed for [`remove_unfinished_outputs`], which a signal
@@ -194,37 +216,141 @@ pub fn write_atomically(
     path: &Path,
     write: impl FnOnce(&mut BufWriter<&File>) -> Result<(), RenderError>,
 ) -> Result<(), RenderError> {
+    replace_file(path, None, write)
+}
+
+/// What a file looked like when it was read: replacing it is refused if it
+/// changed since (`hscene fmt`, while an editor saves the same file).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FileStamp {
+    len: u64,
+    modified: Option<std::time::SystemTime>,
+    #[cfg(unix)]
+    inode: (u64, u64),
+}
+
+impl FileStamp {
+    /// The stamp of the file `path` names (links followed).
+    pub fn of(path: &Path) -> std::io::Result<FileStamp> {
+        let meta = std::fs::metadata(path)?;
+        Ok(FileStamp {
+            len: meta.len(),
+            modified: meta.modified().ok(),
+            #[cfg(unix)]
+            inode: {
+                use std::os::unix::fs::MetadataExt;
+                (meta.dev(), meta.ino())
+            },
+        })
+    }
+}
+
+/// [`write_atomically`], refused with [`RenderError::ChangedMeanwhile`]
+/// when `unchanged_since` is given and the file no longer matches it at
+/// the moment before the rename.
+pub fn replace_file(
+    path: &Path,
+    unchanged_since: Option<&FileStamp>,
+    write: impl FnOnce(&mut BufWriter<&File>) -> Result<(), RenderError>,
+) -> Result<(), RenderError> {
     let io = |source| RenderError::Io {
         path: path.to_path_buf(),
         source,
     };
-    let (tmp, live) = crate::unfinished::LIVE
-        .create(|| {
-            tempfile::Builder::new()
-                .prefix(".hscene-")
-                .suffix(".part")
-                .tempfile_in(output_dir(path))
-        })
-        // tempfile names its file in the message; only the kind is kept.
-        .map_err(|e| io(e.kind().into()))?;
+    let started = StartedOutput::new(path)?;
     {
-        let mut out = BufWriter::new(tmp.as_file());
+        let mut out = BufWriter::new(started.tmp.as_file());
         write(&mut out)?;
         out.flush().map_err(io)?;
     }
-    tmp.as_file().sync_all().map_err(io)?;
-    // Temporary files are created private (0600); an output replacing an
-    // existing one keeps that file's permissions, a new one gets the usual
-    // 0644, so the result reads like any file the user wrote.
-    let permissions = match std::fs::metadata(path) {
-        Ok(m) => Some(m.permissions()),
-        Err(_) => default_permissions(),
-    };
-    if let Some(p) = permissions {
-        tmp.as_file().set_permissions(p).map_err(io)?;
-    }
-    live.finish(|| tmp.persist(path).map(drop).map_err(|e| io(e.error)))
+    started.finish(unchanged_since)
 }
+
+/// An output being written: its temporary file beside the file `path`
+/// names (links followed), listed for removal by a signal handler.
+pub(crate) struct StartedOutput<'l> {
+    path: PathBuf,
+    target: PathBuf,
+    pub(crate) tmp: tempfile::NamedTempFile,
+    listed: crate::unfinished::Registered<'l>,
+}
+
+impl StartedOutput<'static> {
+    pub(crate) fn new(path: &Path) -> Result<Self, RenderError> {
+        let target = output_target(path);
+        let (tmp, listed) = crate::unfinished::LIVE
+            .create(|| {
+                tempfile::Builder::new()
+                    .prefix(".hscene-")
+                    .suffix(".part")
+                    .tempfile_in(output_dir(&target))
+            })
+            // tempfile names its file in the message; only the kind is kept.
+            .map_err(|e| RenderError::Io {
+                path: path.to_path_buf(),
+                source: e.kind().into(),
+            })?;
+        Ok(StartedOutput {
+            path: path.to_path_buf(),
+            target,
+            tmp,
+            listed,
+        })
+    }
+}
+
+impl StartedOutput<'_> {
+    /// Syncs the temporary file and renames it over the target.
+    /// Temporary files are created private (0600); an output replacing an
+    /// existing one keeps that file's permissions and owner, a new one gets
+    /// the usual 0644, so the result reads like any file the user wrote.
+    pub(crate) fn finish(self, unchanged_since: Option<&FileStamp>) -> Result<(), RenderError> {
+        let path = self.path;
+        let io = |source| RenderError::Io {
+            path: path.clone(),
+            source,
+        };
+        let tmp = self.tmp;
+        tmp.as_file().sync_all().map_err(io)?;
+        let existing = std::fs::metadata(&self.target).ok();
+        let permissions = match &existing {
+            Some(m) => Some(m.permissions()),
+            None => default_permissions(),
+        };
+        if let Some(p) = permissions {
+            tmp.as_file().set_permissions(p).map_err(io)?;
+        }
+        if let Some(m) = &existing {
+            keep_owner(tmp.as_file(), m);
+        }
+        let target = self.target;
+        self.listed.finish(|| {
+            if let Some(stamp) = unchanged_since
+                && FileStamp::of(&target).ok().as_ref() != Some(stamp)
+            {
+                return Err(RenderError::ChangedMeanwhile(path.clone()));
+            }
+            tmp.persist(&target).map(drop).map_err(|e| io(e.error))
+        })
+    }
+}
+
+/// Gives the new file the old one's owner and group where allowed (root
+/// may give any; a user may give a group of theirs); where not, the checks
+/// before writing (`output_check.rs`) have asked for `--force`.
+#[cfg(unix)]
+fn keep_owner(file: &File, old: &std::fs::Metadata) {
+    use std::os::unix::fs::MetadataExt;
+    let Ok(new) = file.metadata() else {
+        return;
+    };
+    if (new.uid(), new.gid()) != (old.uid(), old.gid()) {
+        let _ = std::os::unix::fs::fchown(file, Some(old.uid()), Some(old.gid()));
+    }
+}
+
+#[cfg(not(unix))]
+fn keep_owner(_: &File, _: &std::fs::Metadata) {}
 
 #[cfg(unix)]
 fn default_permissions() -> Option<std::fs::Permissions> {

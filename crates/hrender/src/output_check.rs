@@ -11,7 +11,7 @@
 use std::path::Path;
 
 use crate::error::RenderError;
-use crate::output::{ImageFormat, SampleDepth, check_depth, output_dir};
+use crate::output::{ImageFormat, SampleDepth, check_depth, output_dir, output_target};
 
 /// Whether an existing read-only output may be replaced.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -37,30 +37,47 @@ pub fn check_output(
     Ok(format)
 }
 
+/// The longest file name (one component of a path) the usual file systems
+/// hold, in bytes (ext4, XFS, Btrfs, APFS, NTFS: 255).
+pub const MAX_FILE_NAME_BYTES: usize = 255;
+
 /// The checks of [`check_output`] that hold for any file, whatever its
-/// format: not an input, a regular file if it exists, writable unless
-/// forced, and a directory a file can be created in.
+/// format: a file name the file system holds, not an input, a regular file
+/// if it exists, one this process may replace (not read-only, not hard
+/// linked elsewhere, not another user's, unless forced; never where a
+/// sticky directory forbids it), and a directory a file can be created in.
 pub fn check_output_file(
     path: &Path,
     inputs: &[&Path],
     overwrite: Overwrite,
 ) -> Result<(), RenderError> {
-    if let Ok(existing) = std::fs::metadata(path) {
-        if inputs.iter().any(|input| same_file(path, input)) {
-            return Err(RenderError::OutputIsInput(path.to_path_buf()));
+    let target = output_target(path);
+    for name in [path, target.as_path()] {
+        let bytes = name.file_name().map_or(0, |n| n.as_encoded_bytes().len());
+        if bytes > MAX_FILE_NAME_BYTES {
+            return Err(RenderError::OutputNameTooLong {
+                path: path.to_path_buf(),
+                bytes,
+            });
         }
+    }
+    if inputs.iter().any(|input| same_file(path, input)) {
+        return Err(RenderError::OutputIsInput(path.to_path_buf()));
+    }
+    if let Ok(existing) = std::fs::metadata(&target) {
         if !existing.is_file() {
             return Err(RenderError::OutputNotAFile(path.to_path_buf()));
         }
         if existing.permissions().readonly() && overwrite == Overwrite::Writable {
             return Err(RenderError::ReadOnlyOutput(path.to_path_buf()));
         }
+        replaceable(path, &target, &existing, overwrite)?;
     }
     let dir_error = |source| RenderError::OutputDirectory {
         path: path.to_path_buf(),
         source,
     };
-    let dir = output_dir(path);
+    let dir = output_dir(&target);
     if !std::fs::metadata(dir).map_err(dir_error)?.is_dir() {
         return Err(dir_error(std::io::ErrorKind::NotADirectory.into()));
     }
@@ -76,6 +93,49 @@ pub fn check_output_file(
         .map_err(|e| dir_error(e.kind().into()))?;
     drop(probe);
     drop(listed);
+    Ok(())
+}
+
+/// An output is replaced by renaming a new file over it: the new file has
+/// one link and belongs to this process's user. Refused unless forced: a
+/// file with other hard links (they would keep the old content) or
+/// another user's (it would become ours). Refused always: another user's
+/// file in a sticky directory this user does not own (the rename fails).
+#[cfg(unix)]
+fn replaceable(
+    path: &Path,
+    target: &Path,
+    existing: &std::fs::Metadata,
+    overwrite: Overwrite,
+) -> Result<(), RenderError> {
+    use std::os::unix::fs::MetadataExt;
+    // SAFETY: geteuid has no preconditions and cannot fail.
+    let me = unsafe { libc::geteuid() };
+    let theirs = me != 0 && existing.uid() != me;
+    if theirs
+        && let Ok(dir) = std::fs::metadata(output_dir(target))
+        && dir.mode() & 0o1000 != 0
+        && dir.uid() != me
+    {
+        return Err(RenderError::OutputInStickyDirectory(path.to_path_buf()));
+    }
+    if overwrite == Overwrite::Force {
+        return Ok(());
+    }
+    if existing.nlink() > 1 {
+        return Err(RenderError::OutputHardLinked {
+            path: path.to_path_buf(),
+            links: existing.nlink(),
+        });
+    }
+    if theirs {
+        return Err(RenderError::OutputOwnedByOther(path.to_path_buf()));
+    }
+    Ok(())
+}
+
+#[cfg(not(unix))]
+fn replaceable(_: &Path, _: &Path, _: &std::fs::Metadata, _: Overwrite) -> Result<(), RenderError> {
     Ok(())
 }
 

@@ -9,7 +9,7 @@
 //! shadow ray passes, and how much) is each integrator's policy, passed in.
 
 use hgeom::Shape as Surface;
-use hgeom::glam::{DVec3, DVec4};
+use hgeom::glam::DVec4;
 use hgeom::{Hit, IdealPoint, Isometry, KleinBox, Point, Ray};
 use hscene_ir::view::PixelFootprint;
 use hscene_ir::{self as ir, Fog, Material, PartMaterials, Rgb, Scene, Sky, Surfaces};
@@ -422,20 +422,8 @@ impl PreparedScene {
                 what: format!("light {}", index + 1),
             };
             // A camera light is at the eye, the canonical frame's origin,
-            // in every frame of an animation.
-            let p = if l.on_camera {
-                Point::ORIGIN
-            } else {
-                stages
-                    .iter()
-                    .try_fold(l.position, |p, iso| iso.checked_apply(&p))
-                    .map_err(|_| out_of_range())?
-            };
-            // Every point of an area light must be placeable too.
-            if l.radius > 0.0 {
-                Point::at_distance_from_origin(DVec3::Z, p.distance_from_origin() + l.radius)
-                    .map_err(|_| out_of_range())?;
-            }
+            // in every frame of an animation; the compiler asked the same.
+            let p = ir::light_in_frame(l, stages).ok_or_else(out_of_range)?;
             let reach = scene
                 .settings
                 .space
@@ -720,6 +708,7 @@ fn fewest_boxes(boxes: Vec<KleinBox>) -> Vec<KleinBox> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use hgeom::glam::DVec3;
     use hgeom::{ConvexPolygon, HPlane, Rod};
 
     fn p(x: f64, y: f64, z: f64) -> Point {

@@ -19,8 +19,7 @@ use std::process::{Child, ChildStdin, Command, Stdio};
 use crate::display::DisplayTransform;
 use crate::error::RenderError;
 use crate::image::Image;
-use crate::output::output_dir;
-use crate::unfinished::{LIVE, Registered};
+use crate::output::StartedOutput;
 
 /// An animation format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -84,8 +83,7 @@ enum Sink {
 /// An animation being written (module docs).
 pub struct VideoWriter {
     path: PathBuf,
-    tmp: tempfile::NamedTempFile,
-    listed: Registered<'static>,
+    started: StartedOutput<'static>,
     sink: Sink,
     width: u32,
     height: u32,
@@ -120,15 +118,8 @@ impl VideoWriter {
         display: DisplayTransform,
     ) -> Result<VideoWriter, RenderError> {
         let format = check_video(path)?;
-        let (tmp, listed) = LIVE
-            .create(|| {
-                tempfile::Builder::new()
-                    .prefix(".hscene-")
-                    .suffix(".part")
-                    .tempfile_in(output_dir(path))
-            })
-            .map_err(|e| io(path)(e.kind().into()))?;
-        let file = || tmp.reopen().map(BufWriter::new).map_err(io(path));
+        let started = StartedOutput::new(path)?;
+        let file = || started.tmp.reopen().map(BufWriter::new).map_err(io(path));
         let too_big = || encode(path)(format!("{width}x{height} is too large for this format"));
         let sink = match format {
             VideoFormat::Gif => {
@@ -174,7 +165,7 @@ impl VideoWriter {
                         "pad=ceil(iw/2)*2:ceil(ih/2)*2",
                     ])
                     .args(["-f", container])
-                    .arg(tmp.path())
+                    .arg(started.tmp.path())
                     .stdin(Stdio::piped())
                     .stdout(Stdio::null())
                     .stderr(Stdio::piped())
@@ -186,8 +177,7 @@ impl VideoWriter {
         };
         Ok(VideoWriter {
             path: path.to_path_buf(),
-            tmp,
-            listed,
+            started,
             sink,
             width,
             height,
@@ -240,8 +230,7 @@ impl VideoWriter {
     pub fn finish(self) -> Result<(), RenderError> {
         let VideoWriter {
             path,
-            tmp,
-            listed,
+            started,
             sink,
             ..
         } = self;
@@ -262,16 +251,7 @@ impl VideoWriter {
                 }
             }
         }
-        tmp.as_file().sync_all().map_err(io(&path))?;
-        #[cfg(unix)]
-        {
-            use std::os::unix::fs::PermissionsExt;
-            let mode = std::fs::metadata(&path).map_or(0o644, |m| m.permissions().mode());
-            let _ = tmp
-                .as_file()
-                .set_permissions(std::fs::Permissions::from_mode(mode));
-        }
-        listed.finish(|| tmp.persist(&path).map(drop).map_err(|e| io(&path)(e.error)))
+        started.finish(None)
     }
 }
 

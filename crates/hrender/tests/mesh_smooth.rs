@@ -19,6 +19,7 @@ fn bunny(options: &str) -> hrender::Image {
         &hscene_lang::Options {
             base_dir: Some(meshes.into()),
             frame: 0,
+            ..Default::default()
         },
     );
     assert!(!compiled.has_errors(), "{:?}", compiled.diagnostics);
@@ -81,6 +82,7 @@ fn smooth_glass_refracts_like_the_sphere_it_approximates() {
             &hscene_lang::Options {
                 base_dir: Some(dir.path().into()),
                 frame: 0,
+                ..Default::default()
             },
         );
         assert!(!compiled.has_errors(), "{:?}", compiled.diagnostics);

@@ -17,8 +17,10 @@
 
 mod bounded_read;
 pub mod diagnostic;
+mod file_cache;
 pub mod format;
 pub mod image_file;
+mod line_index;
 mod lower;
 pub mod mesh_file;
 mod numbers;
@@ -37,8 +39,10 @@ pub use hscene_ir as ir;
 /// The view geometry of the IR (`hscene_ir::view`).
 pub use hscene_ir::view;
 
-pub use diagnostic::{Code, Diagnostic, LineIndex, Severity, Span};
+pub use diagnostic::{Code, Diagnostic, Severity, Span};
+pub use file_cache::FileCache;
 pub use format::{FormatError, format};
+pub use line_index::LineIndex;
 pub use lower::{MAX_FRAMES, MAX_PIXELS, MAX_SAMPLES};
 pub use options::Options;
 pub use parser::{Parsed, parse};
@@ -51,6 +55,10 @@ pub struct Compiled {
     pub scene: Option<ir::Scene>,
     /// All diagnostics, in source order.
     pub diagnostics: Vec<Diagnostic>,
+    /// The files the scene names and the compiler read (meshes, images,
+    /// space files), each once, as resolved from the base directory: an
+    /// output must be none of them.
+    pub inputs: Vec<std::path::PathBuf>,
 }
 
 impl Compiled {
@@ -68,9 +76,17 @@ pub fn compile(source: &str) -> Compiled {
 
 /// Parse, validate and lower a scene with explicit [`Options`].
 pub fn compile_with(source: &str, options: &Options) -> Compiled {
+    options.files.start_compile();
     let parsed = parse(source);
     let mut diagnostics = parsed.diagnostics;
-    let scene = lower::lower(&parsed.file, source, options, &mut diagnostics);
+    let mut inputs = Vec::new();
+    let scene = lower::lower(&parsed.file, source, options, &mut diagnostics, &mut inputs);
     diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
-    Compiled { scene, diagnostics }
+    let mut seen = std::collections::HashSet::new();
+    inputs.retain(|p| seen.insert(p.clone()));
+    Compiled {
+        scene,
+        diagnostics,
+        inputs,
+    }
 }

@@ -23,6 +23,7 @@ mod materials;
 mod moves;
 mod names;
 mod objects;
+mod placement;
 mod points;
 mod ranges;
 mod resolve;
@@ -42,8 +43,9 @@ use std::path::Path;
 
 use hgeom::{HPlane, Segment};
 
-use crate::diagnostic::{Code, Diagnostic, LineIndex, Span};
+use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::{Animation, Light, Material, Object, PointRecord, Scene, Settings, frame_time};
+use crate::line_index::LineIndex;
 use crate::syntax::{Clause, Section, SourceFile, Value};
 
 pub(crate) use globals::GLOBAL_KEYS;
@@ -87,8 +89,11 @@ struct Lowerer<'d> {
     lens: lens_globals::LensParts,
     /// The space keys (`space_globals.rs`).
     space: space_globals::SpaceParts,
-    /// The images read so far, by path: a file named twice is read once.
-    images: std::collections::HashMap<std::path::PathBuf, std::sync::Arc<hscene_ir::TextureImage>>,
+    /// The meshes and images read, by path: a file named twice is read once.
+    files: &'d crate::file_cache::FileCache,
+    /// Every file named and read (meshes, images, space files), in order:
+    /// what an output must never overwrite.
+    inputs: Vec<std::path::PathBuf>,
     /// A point reference failed (undefined, or something else where a point
     /// was needed, or text was skipped): the point meant may look unused.
     point_ref_failed: bool,
@@ -123,6 +128,7 @@ pub(crate) fn lower(
     source: &str,
     options: &crate::options::Options,
     diags: &mut Vec<Diagnostic>,
+    inputs: &mut Vec<std::path::PathBuf>,
 ) -> Option<Scene> {
     let frames = declared_frames(file);
     let frame = options.frame.min(frames - 1);
@@ -153,7 +159,8 @@ pub(crate) fn lower(
         view: view_globals::ViewParts::default(),
         lens: lens_globals::LensParts::default(),
         space: space_globals::SpaceParts::default(),
-        images: std::collections::HashMap::new(),
+        files: &options.files,
+        inputs: Vec::new(),
         point_ref_failed: file.incomplete,
         primitives: 0,
         primitive_cap_reported: false,
@@ -192,6 +199,7 @@ pub(crate) fn lower(
     lw.settle_lens(camera.as_ref());
     lw.settle_space();
     if let Some(camera) = &camera {
+        lw.refuse_too_far_from_eye(camera);
         lw.lint_scene(camera);
         lw.lint_outside_view(camera);
         lw.lint_squeezed_disk(camera);
@@ -201,6 +209,7 @@ pub(crate) fn lower(
     lw.lint_unused();
     lw.lint_still_animation();
     lw.lint_ambient_under_path();
+    inputs.append(&mut lw.inputs);
     if lw.diags.iter().any(Diagnostic::is_error) {
         return None;
     }

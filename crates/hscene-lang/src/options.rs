@@ -11,4 +11,7 @@ pub struct Options {
     /// diagnostics except those about where things end up (lints on the
     /// final positions, numeric failures of the moves).
     pub frame: u32,
+    /// The meshes and images read, shared with earlier compiles of the same
+    /// scene (see [`FileCache`]); the default is a fresh one.
+    pub files: crate::file_cache::FileCache,
 }

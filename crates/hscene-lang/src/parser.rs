@@ -335,7 +335,7 @@ Transformations { hline (%1,%5); %1->Rotate(%2,-0.7); %2->Translate(%1); }
                 .windows(2)
                 .all(|w| w[0].span.start <= w[1].span.start)
         );
-        let idx = crate::diagnostic::LineIndex::new(src);
+        let idx = crate::line_index::LineIndex::new(src);
         assert_eq!(idx.line_col(p.diagnostics[0].span.start), (2, 28));
         assert_eq!(idx.line_col(p.diagnostics[1].span.start), (3, 1));
     }

@@ -36,6 +36,7 @@ fn compiled(source: &str, frame: u32) -> Scene {
         &Options {
             base_dir: None,
             frame,
+            ..Options::default()
         },
     );
     assert!(!out.has_errors(), "{:?}", out.diagnostics);

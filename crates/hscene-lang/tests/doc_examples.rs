@@ -20,7 +20,7 @@ fn compile(source: &str) -> Compiled {
         source,
         &Options {
             base_dir: Some(root),
-            frame: 0,
+            ..Options::default()
         },
     )
 }
@@ -150,7 +150,7 @@ fn example_scenes_compile_without_errors() {
             let src = std::fs::read_to_string(&path).unwrap();
             let options = Options {
                 base_dir: path.parent().map(Path::to_path_buf),
-                frame: 0,
+                ..Options::default()
             };
             let c = compile_with(&src, &options);
             assert!(!c.has_errors(), "{}: {:#?}", path.display(), c.diagnostics);

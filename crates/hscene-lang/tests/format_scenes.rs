@@ -60,6 +60,7 @@ fn every_shipped_scene_formats_idempotently_to_the_same_ir() {
         let options = |frame| Options {
             base_dir: path.parent().map(Path::to_path_buf),
             frame,
+            ..Options::default()
         };
         let before = compile_with(&source, &options(0));
         let frames = before.scene.as_ref().map_or(1, |s| s.settings.frames);

@@ -30,6 +30,7 @@ fn compile(src: &str) -> Compiled {
         &Options {
             base_dir: Some(dir),
             frame: 0,
+            ..Options::default()
         },
     )
 }

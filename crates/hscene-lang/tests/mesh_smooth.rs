@@ -39,6 +39,7 @@ fn mesh(dir: &Path, file: &str, text: &str, options: &str) -> Result<TriangleMes
         &Options {
             base_dir: Some(dir.to_path_buf()),
             frame: 0,
+            ..Options::default()
         },
     );
     if compiled.has_errors() {

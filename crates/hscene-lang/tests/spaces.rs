@@ -169,6 +169,7 @@ fn compile_in_manifolds(globals: &str) -> hscene_lang::Compiled {
         &hscene_lang::Options {
             base_dir: Some(dir),
             frame: 0,
+            ..Default::default()
         },
     )
 }
@@ -207,6 +208,7 @@ fn a_space_file_that_glues_no_manifold_is_refused_at_its_name() {
         &hscene_lang::Options {
             base_dir: Some(dir.path().to_path_buf()),
             frame: 0,
+            ..Default::default()
         },
     );
     let d = c

@@ -33,7 +33,7 @@ use crate::material::reflectances;
 use crate::sampling::SampleStream;
 use crate::scene::{Nearest, PreparedScene, T_MIN};
 use crate::spherical_triangle::SphericalTriangle;
-use crate::tangent::is_unit;
+use crate::tangent::{arriving_direction, is_unit, on_hyperboloid};
 use crate::trace_stats::TraceStats;
 
 /// The most surfaces a path scatters from: far beyond where Russian
@@ -408,7 +408,8 @@ impl Integrator for PathTracer<'_> {
                 break;
             };
             beta = self.fogged(&mut radiance, beta, travelled + hit.t);
-            let d = ray.tangent_at(hit.t);
+            let p = on_hyperboloid(hit.point);
+            let d = arriving_direction(&ray, hit.t, p);
             if !(is_unit(d) && is_unit(hit.normal) && is_unit(hit.shading)) {
                 stats.failures += 1;
                 return self.scene.background;
@@ -430,7 +431,6 @@ impl Integrator for PathTracer<'_> {
                 beta = beta.tint(absorbed(m, travelled + hit.t));
             }
             let n = if entering { hit.shading } else { -hit.shading };
-            let p = hit.point;
             let wo = -d;
             let (_, diffuse) = reflectances(object, m, &hit);
             let bsdf = Bsdf::new(m, diffuse);

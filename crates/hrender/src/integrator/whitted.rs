@@ -22,7 +22,7 @@ use crate::material::{Shading, reflectances};
 use crate::ray_budget::RayBudget;
 use crate::sampling::SampleStream;
 use crate::scene::{Nearest, PreparedLight, PreparedScene, T_MIN};
-use crate::tangent::{is_unit, renormalize};
+use crate::tangent::{arriving_direction, is_unit, on_hyperboloid, renormalize};
 use crate::trace_stats::TraceStats;
 
 /// Rays whose weight in the final pixel falls below this are not traced.
@@ -126,7 +126,10 @@ impl<'s> Whitted<'s> {
         let object = &self.scene.objects[index];
         // PreparedScene::new checked every material index.
         let m = &self.scene.materials[object.material_of(&hit)];
-        let d = ray.tangent_at(hit.t);
+        // Each bounce starts on the hyperboloid, so the rounding of one
+        // segment is not carried into the next (`tangent.rs`).
+        let p = on_hyperboloid(hit.point);
+        let d = arriving_direction(ray, hit.t, p);
         // The hyperboloid loses unit tangent vectors far from the eye (its
         // f64 range ends near distance 19, docs/geometry.md section 16). Along a ray the error of
         // the invariants grows like `1e-16 cosh^2(s) cosh^2(t)` for an origin
@@ -148,7 +151,6 @@ impl<'s> Whitted<'s> {
         // turned to the ray's side with the geometric normal, which alone
         // decides sides, reflections and refractions (docs/rendering.md).
         let lit_normal = if entering { hit.shading } else { -hit.shading };
-        let p = hit.point;
         let (ambient, diffuse) = reflectances(object, m, &hit);
 
         let mut color = ambient.tint(self.scene.ambient);

@@ -39,15 +39,9 @@ impl Lowerer<'_> {
             Some(dir) => dir.join(text),
             None => PathBuf::from(text),
         };
-        if let Some(image) = self.images.get(&path) {
-            return Some((text.clone(), Arc::clone(image)));
-        }
-        match image_file::load(&path) {
-            Ok(image) => {
-                let image = Arc::new(image);
-                self.images.insert(path, Arc::clone(&image));
-                Some((text.clone(), image))
-            }
+        self.inputs.push(path.clone());
+        match self.files.image(&path, image_file::load) {
+            Ok(image) => Some((text.clone(), image)),
             Err(ImageFileError::Io(e)) => {
                 self.report(
                     Diagnostic::new(

@@ -78,7 +78,7 @@ impl Lowerer<'_> {
                         Diagnostic::new(
                             Code::InvalidValue,
                             value.span(),
-                            format!("`{KEY}` must be a hyperbolic distance from 0 (exclusive) to {MAX_DISTANCE}, got {d}"),
+                            format!("`{KEY}` must be a hyperbolic distance from 0 (exclusive) to {MAX_DISTANCE}, got {}", hgeom::Compact(d)),
                         )
                         .with_help("`irradiance_at = 1` makes the colours the light a surface receives at distance 1"),
                     );

@@ -311,6 +311,7 @@ impl Lowerer<'_> {
             Some(dir) => dir.join(text),
             None => PathBuf::from(text),
         };
+        self.inputs.push(path.clone());
         let pairings = match space_file::load(&path) {
             Ok(p) => p,
             Err(SpaceFileError::Io(e)) => {

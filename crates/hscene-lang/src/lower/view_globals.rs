@@ -47,7 +47,7 @@ impl Lowerer<'_> {
                         Diagnostic::new(
                             Code::InvalidValue,
                             value.span(),
-                            format!("the field of view must be between 0 and 180 degrees, not {x}"),
+                            format!("the field of view must be between 0 and 180 degrees, not {}", hgeom::Compact(x)),
                         )
                         .with_help("`fov` is the horizontal opening angle at the eye in degrees, e.g. `fov = 60;`"),
                     );
@@ -69,7 +69,7 @@ impl Lowerer<'_> {
                         Diagnostic::new(
                             Code::InvalidValue,
                             value.span(),
-                            format!("the fog distance must be positive, not {x}"),
+                            format!("the fog distance must be positive, not {}", hgeom::Compact(x)),
                         )
                         .with_help("`fog_distance = D` is the hyperbolic length over which light keeps 1/e of itself, e.g. `fog_distance = 3;`"),
                     );

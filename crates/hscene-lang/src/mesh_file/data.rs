@@ -105,19 +105,35 @@ impl MeshData {
     }
 
     /// The centre of the bounding box and the largest distance of a vertex
-    /// from it (`None` if every vertex is the same point).
-    pub fn bounding_ball(&self) -> Option<(DVec3, f64)> {
+    /// from it (`None` if every vertex is the same point). Any finite
+    /// coordinates are fine: a mesh 1e-200 across or 2e308 across (whose
+    /// squared lengths would underflow or overflow) is measured in units of
+    /// its own largest coordinate offset.
+    pub fn bounding_ball(&self) -> Option<BoundingBall> {
         let (lo, hi) = self.positions.iter().fold(
             (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
             |(lo, hi), p| (lo.min(*p), hi.max(*p)),
         );
-        let centre = 0.5 * (lo + hi);
+        // Halved first: `lo + hi` overflows for a mesh 2e308 across.
+        let centre = 0.5 * lo + 0.5 * hi;
+        let scale = self
+            .positions
+            .iter()
+            .map(|p| (*p - centre).abs().max_element())
+            .fold(0.0, f64::max);
+        if !(scale > 0.0 && scale.is_finite()) {
+            return None;
+        }
         let radius = self
             .positions
             .iter()
-            .map(|p| (*p - centre).length())
+            .map(|p| ((*p - centre) / scale).length())
             .fold(0.0, f64::max);
-        (radius > 0.0 && radius.is_finite()).then_some((centre, radius))
+        Some(BoundingBall {
+            centre,
+            scale,
+            radius,
+        })
     }
 
     /// The vertices laid out in the ball: centred, scaled to unit size, and
@@ -125,12 +141,12 @@ impl MeshData {
     /// at hyperbolic distance `size` from the origin (see the module docs).
     /// `None` if the mesh has no extent.
     pub fn layout(&self, size: f64) -> Option<Vec<Point>> {
-        let (centre, radius) = self.bounding_ball()?;
+        let ball = self.bounding_ball()?;
         // Sized up front: collecting `Option`s would grow the vector by
         // doubling, up to twice the memory of the points.
         let mut points = Vec::with_capacity(self.positions.len());
         for p in &self.positions {
-            let u = (*p - centre) / radius;
+            let u = ball.unit(*p);
             let len = u.length();
             points.push(if len == 0.0 {
                 Point::ORIGIN
@@ -139,6 +155,23 @@ impl MeshData {
             });
         }
         Some(points)
+    }
+}
+
+/// A mesh's bounding ball, from the centre of its bounding box.
+#[derive(Clone, Copy, Debug)]
+pub struct BoundingBall {
+    centre: DVec3,
+    /// The largest coordinate offset from the centre: the unit of `radius`.
+    scale: f64,
+    /// The largest distance from the centre, in units of `scale` (1 to √3).
+    radius: f64,
+}
+
+impl BoundingBall {
+    /// `p` relative to the ball: its farthest vertex at length 1.
+    pub fn unit(&self, p: DVec3) -> DVec3 {
+        ((p - self.centre) / self.scale) / self.radius
     }
 }
 

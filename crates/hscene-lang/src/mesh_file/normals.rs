@@ -22,7 +22,7 @@ impl MeshData {
         if self.corner_normals.is_empty() {
             return None;
         }
-        let (centre, radius) = self.bounding_ball()?;
+        let ball = self.bounding_ball()?;
         // One tangent per (vertex, file normal) pair in use: a file may
         // share one normal between vertices, whose tangent spaces differ.
         let mut index: HashMap<(u32, u32), u32> = HashMap::new();
@@ -34,7 +34,7 @@ impl MeshData {
                 let Some(&n) = self.normals.get(c[j] as usize) else {
                     continue;
                 };
-                let u = (self.positions[t[j] as usize] - centre) / radius;
+                let u = ball.unit(self.positions[t[j] as usize]);
                 let next = u32::try_from(normals.len()).ok()?;
                 row[j] = *index.entry((t[j], c[j])).or_insert_with(|| {
                     normals.push(laid_out(u, n, size));

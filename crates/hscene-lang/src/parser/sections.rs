@@ -197,17 +197,22 @@ impl Scanner<'_> {
 
     /// Whether the `{` ending just before `pos` opens a Schläfli symbol
     /// (`Honeycomb {4,3,5}`) rather than a section: its first token is a
-    /// number. No section body starts with one (statements start with a
-    /// name, a reference, a label or a tuple), so `Name {` followed by a
-    /// digit is a value, and a missing `}` before a section is still found.
+    /// number (a digit, or a sign or point before one: `{-4,3,5}` is a
+    /// symbol the lowering refuses by name). No section body starts with
+    /// one (statements start with a name, a reference, a label or a tuple),
+    /// so `Name {` followed by a number is a value, and a missing `}` before
+    /// a section is still found.
     fn symbol_at(&self, pos: usize) -> bool {
         let (at, unterminated) = skip_trivia(self.src, pos);
-        unterminated.is_none()
-            && self
-                .src
-                .as_bytes()
-                .get(at)
-                .is_some_and(|b| b.is_ascii_digit())
+        let bytes = self.src.as_bytes();
+        let digit = |i: usize| bytes.get(i).is_some_and(u8::is_ascii_digit);
+        let number_at = |i: usize| match bytes.get(i) {
+            Some(b'0'..=b'9') => true,
+            Some(b'.') => digit(i + 1),
+            Some(b'+' | b'-') => digit(i + 1) || (bytes.get(i + 1) == Some(&b'.') && digit(i + 2)),
+            _ => false,
+        };
+        unterminated.is_none() && number_at(at)
     }
 
     fn report_unclosed(&mut self, name: Option<&Ident>, open: Span, next: Option<&Ident>) {
@@ -386,6 +391,19 @@ mod tests {
         );
         assert_eq!(p.file.sections.len(), 3);
         assert!(p.file.sections.iter().all(|s| s.statements.len() == 1));
+    }
+
+    #[test]
+    fn a_signed_first_entry_is_still_a_symbol() {
+        for src in [
+            "S { Honeycomb {-4,3,5}, #1; }",
+            "S { Honeycomb { +4,3,5}, #1; }",
+            "S { Honeycomb {.5,3,5}, #1; }",
+        ] {
+            let p = parse(src);
+            assert!(p.diagnostics.is_empty(), "{src}: {:?}", p.diagnostics);
+            assert_eq!(p.file.sections.len(), 1, "{src}");
+        }
     }
 
     #[test]

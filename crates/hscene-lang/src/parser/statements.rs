@@ -241,7 +241,7 @@ Objects {
                 "Sphere %9, 0.05, #1;"
             ]
         );
-        let idx = crate::diagnostic::LineIndex::new(src);
+        let idx = crate::line_index::LineIndex::new(src);
         let d = &p.diagnostics;
         assert_eq!(d[0].message, "expected `,` or `;`, found `#1`");
         assert_eq!(idx.line_col(d[0].span.start), (3, 19));

@@ -52,7 +52,8 @@ impl Lowerer<'_> {
             Some(dir) => dir.join(file),
             None => std::path::PathBuf::from(file),
         };
-        let data = match mesh_file::load(&path) {
+        self.inputs.push(path.clone());
+        let data = match self.files.mesh(&path, mesh_file::load) {
             Ok(data) => data,
             Err(MeshFileError::Io(e)) => {
                 self.report(
@@ -95,12 +96,11 @@ impl Lowerer<'_> {
         if !self.fits(crate::ir::mesh_budget_cost(total as u64), file_span) {
             return None;
         }
-        // The file's normals are laid out only when smoothing asks for them;
-        // then the file's data goes before the mesh is built, so the two
-        // are not held at once (the triangles move into the mesh).
+        // The file's normals are laid out only when smoothing asks for them.
+        // The file's data stays in the cache (`file_cache.rs`) for the next
+        // statement or compile that names it.
         let given = smooth.and_then(|_| data.layout_normals(size));
-        let triangles = data.triangles;
-        drop((data.positions, data.normals, data.corner_normals));
+        let triangles = data.triangles.clone();
         let built = TriangleMesh::new(vertices, triangles).and_then(|mesh| match smooth {
             Some(angle) => mesh.smoothed(angle, given.as_ref()),
             None => Ok(mesh),

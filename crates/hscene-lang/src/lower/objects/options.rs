@@ -165,7 +165,7 @@ impl Lowerer<'_> {
             match kind {
                 ObjectOption::Wireframe | ObjectOption::Edges => {
                     let what = format!("the `{}` thickness", key.text);
-                    match self.positive(value, &what) {
+                    match self.length(value, &what) {
                         Some(t) if kind == ObjectOption::Wireframe => {
                             out.wireframe = Some((t, key.span.to(value.span())))
                         }
