@@ -85,6 +85,7 @@ pub fn run(args: &ExportArgs, color: ColorChoice) -> ExitCode {
                 &args.scene,
                 &source,
                 &compiled.diagnostics,
+                compiled.omitted,
                 ReportFormat::Human,
                 color.enabled(stderr_tty)
             )

@@ -72,7 +72,14 @@ fn formatted(name: &Path, source: &str, color: ColorChoice) -> Option<String> {
             let format = if tty { Format::Human } else { Format::Short };
             eprint!(
                 "{}",
-                report::format_diagnostics(name, source, &diagnostics, format, color.enabled(tty))
+                report::format_diagnostics(
+                    name,
+                    source,
+                    &diagnostics,
+                    Default::default(),
+                    format,
+                    color.enabled(tty)
+                )
             );
             eprintln!(
                 "error: {} not formatted: it has syntax errors",

@@ -144,6 +144,7 @@ fn check(args: &CheckArgs, color: ColorChoice) -> ExitCode {
             path,
             &source,
             &compiled.diagnostics,
+            compiled.omitted,
             format,
             color.enabled(diag_tty),
         );
@@ -285,6 +286,7 @@ fn render(args: &RenderArgs, color: ColorChoice) -> ExitCode {
                 &args.scene,
                 &source,
                 diagnostics,
+                Default::default(),
                 format,
                 color.enabled(stderr_tty)
             )

@@ -29,6 +29,7 @@ pub fn format_diagnostics(
     path: &Path,
     source: &str,
     diagnostics: &[Diagnostic],
+    omitted: hscene_lang::Omitted,
     format: Format,
     color: bool,
 ) -> String {
@@ -86,16 +87,19 @@ pub fn format_diagnostics(
             }
         }
     }
+    // Past the shown ones: those kept and not shown, and those the
+    // compiler counted without keeping (`hscene_lang::Omitted`).
     let rest = &diagnostics[shown.len()..];
-    if !rest.is_empty() {
+    if !rest.is_empty() || omitted.total() > 0 {
         let errors = rest
             .iter()
             .filter(|d| d.severity == Severity::Error)
-            .count();
-        let warnings = rest.len() - errors;
+            .count()
+            + omitted.errors;
+        let warnings = rest.len() + omitted.total() - errors;
         let message = format!(
             "{} more diagnostic(s) not shown ({errors} error(s), {warnings} warning(s)); at most {MAX_SHOWN} are shown per file",
-            rest.len()
+            errors + warnings
         );
         match format {
             Format::Json => {
@@ -155,7 +159,14 @@ mod tests {
     fn far_columns_fall_back_to_the_short_format() {
         let source = format!("{}@", " ".repeat(70_000));
         let d = error_at(70_000, 70_001);
-        let text = format_diagnostics(Path::new("s.hsc"), &source, &[d], Format::Human, false);
+        let text = format_diagnostics(
+            Path::new("s.hsc"),
+            &source,
+            &[d],
+            Default::default(),
+            Format::Human,
+            false,
+        );
         assert!(
             text.starts_with("s.hsc:1:70001: error: bad [HSC0001]"),
             "{text}"
@@ -167,7 +178,14 @@ mod tests {
         let source = ";".repeat(1000);
         let all: Vec<_> = (0..1000).map(|i| error_at(i, i + 1)).collect();
         for format in [Format::Human, Format::Short, Format::Json] {
-            let text = format_diagnostics(Path::new("s.hsc"), &source, &all, format, false);
+            let text = format_diagnostics(
+                Path::new("s.hsc"),
+                &source,
+                &all,
+                Default::default(),
+                format,
+                false,
+            );
             assert_eq!(text.matches("HSC0001").count(), MAX_SHOWN, "{format:?}");
             assert!(text.contains("900 more diagnostic(s) not shown (900 error(s), 0 warning(s))"));
         }

@@ -42,6 +42,7 @@ impl SceneSource for SceneFile {
                 &self.path,
                 &source,
                 &compiled.diagnostics,
+                compiled.omitted,
                 Format::Human,
                 self.color,
             )

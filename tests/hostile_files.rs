@@ -19,6 +19,7 @@ const WALL_LIMIT: Duration = Duration::from_secs(60);
 
 struct Outcome {
     code: i32,
+    /// stderr, then stdout.
     stderr: String,
 }
 
@@ -28,7 +29,7 @@ fn run_limited(dir: &Path, args: &[&str], file_size_blocks: Option<u64>) -> Outc
     cmd.args(args)
         .current_dir(dir)
         .stdin(Stdio::null())
-        .stdout(Stdio::null())
+        .stdout(Stdio::piped())
         .stderr(Stdio::piped());
     if let Some(blocks) = file_size_blocks {
         // SAFETY: setrlimit is async-signal-safe and touches only the child.
@@ -49,9 +50,15 @@ fn run_limited(dir: &Path, args: &[&str], file_size_blocks: Option<u64>) -> Outc
     }
     let mut child = cmd.spawn().expect("the binary starts");
     let mut err = child.stderr.take().unwrap();
+    let mut out = child.stdout.take().unwrap();
     let reader = std::thread::spawn(move || {
         let mut s = Vec::new();
         let _ = err.read_to_end(&mut s);
+        s
+    });
+    let out_reader = std::thread::spawn(move || {
+        let mut s = Vec::new();
+        let _ = out.read_to_end(&mut s);
         s
     });
     let started = Instant::now();
@@ -65,7 +72,9 @@ fn run_limited(dir: &Path, args: &[&str], file_size_blocks: Option<u64>) -> Outc
         }
         std::thread::sleep(Duration::from_millis(20));
     };
-    let stderr = String::from_utf8_lossy(&reader.join().unwrap()).into_owned();
+    // What it said, on either stream (`check` reports on stdout).
+    let stderr = String::from_utf8_lossy(&reader.join().unwrap()).into_owned()
+        + &String::from_utf8_lossy(&out_reader.join().unwrap());
     let code = status
         .code()
         .unwrap_or_else(|| panic!("hscene {args:?} was killed ({status}); stderr:\n{stderr}"));
@@ -211,20 +220,29 @@ fn an_output_may_be_no_file_the_scene_names() {
     let dir = tempfile::tempdir().unwrap();
     let tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
     fs::write(dir.path().join("m.obj"), tri).unwrap();
-    let scene = SCENE.replace(
-        "Objects { Sphere %t, 0.2, #m; }",
-        "Objects { Mesh \"m.obj\", 0.2, #m; }",
-    );
+    let texture = image::RgbImage::from_pixel(2, 2, image::Rgb([200, 100, 50]));
+    texture.save(dir.path().join("t.png")).unwrap();
+    let png = fs::read(dir.path().join("t.png")).unwrap();
+    let scene = SCENE
+        .replace(
+            "BRDFs { m: diffuse = (1,1,1); }",
+            "BRDFs { m: diffuse = (1,1,1), texture = \"t.png\"; }",
+        )
+        .replace(
+            "Objects { Sphere %t, 0.2, #m; }",
+            "Objects { Sphere %t, 0.2, #m; Mesh \"m.obj\", 0.2, #m; }",
+        );
     fs::write(dir.path().join("s.hsc"), scene).unwrap();
     for args in [
-        vec!["render", "s.hsc", "-o", "m.obj"],
+        vec!["render", "s.hsc", "-o", "t.png"],
         vec!["export", "s.hsc", "-o", "m.obj"],
     ] {
         let out = run(dir.path(), &args);
         assert_eq!(out.code, 2, "{args:?}: {}", out.stderr);
         assert!(out.stderr.contains("input"), "{args:?}: {}", out.stderr);
-        assert_eq!(fs::read_to_string(dir.path().join("m.obj")).unwrap(), tri);
     }
+    assert_eq!(fs::read_to_string(dir.path().join("m.obj")).unwrap(), tri);
+    assert_eq!(fs::read(dir.path().join("t.png")).unwrap(), png);
 }
 
 #[test]
@@ -323,6 +341,22 @@ fn limits_and_messages_agree() {
             "size {size}: {}",
             out.stderr
         );
+    }
+    // A polygon of ideal vertices moved far along its own plane: three of
+    // its four vertices within 1e-9 of each other in the ball, told apart
+    // by f64 all the same.
+    for d in [20, 30] {
+        let out = check(
+            "ideal.hsc",
+            format!(
+                "Points {{ eye = (0,0,0); t = (0.5,0,0); a = (1,0,0); b = (0,1,0); c = (-1,0,0); e = (0,-1,0); }}\n\
+                 Globals {{ from = %eye; to = %t; fov = 60; }}\n\
+                 BRDFs {{ m: diffuse = (1,1,1); }}\n\
+                 Objects {{ Polygon (%a, %b, %c, %e), #m; }}\n\
+                 Transformations {{ x: hline((0,0,0), (0.5,0,0)); %a->Translate(%x, {d}); %b->Translate(%x, {d}); %c->Translate(%x, {d}); %e->Translate(%x, {d}); }}\n"
+            ),
+        );
+        assert_eq!(out.code, 0, "moved {d}: {}", out.stderr);
     }
     // Meshes of any finite extent.
     for (name, a) in [("tiny.obj", "1e-200"), ("huge.obj", "1e308")] {

@@ -2,8 +2,11 @@
 //! appended to the message, and as related information the declaration a
 //! diagnostic's references point to (or the earlier one of a duplicate name).
 
+use std::collections::HashMap;
+
 use hscene_lang::symbols::SymbolIndex;
-use hscene_lang::{Code, Severity};
+use hscene_lang::syntax::Ident;
+use hscene_lang::{Code, Severity, Span};
 use lsp_types::{
     Diagnostic, DiagnosticRelatedInformation, DiagnosticSeverity, Location, NumberOrString, Uri,
 };
@@ -25,7 +28,10 @@ pub fn to_lsp(uri: &Uri, doc: &Document) -> Vec<Diagnostic> {
             ..Diagnostic::default()
         }];
     }
-    doc.compiled
+    let omitted = doc.compiled.omitted;
+    let related = Related::new(&doc.symbols);
+    let mut all: Vec<Diagnostic> = doc
+        .compiled
         .diagnostics
         .iter()
         .map(|d| {
@@ -33,7 +39,8 @@ pub fn to_lsp(uri: &Uri, doc: &Document) -> Vec<Diagnostic> {
                 Some(help) => format!("{}\nhelp: {help}", d.message),
                 None => d.message.clone(),
             };
-            let related: Vec<DiagnosticRelatedInformation> = related(&doc.symbols, d)
+            let related: Vec<DiagnosticRelatedInformation> = related
+                .of(d)
                 .into_iter()
                 .map(|(span, message)| DiagnosticRelatedInformation {
                     location: Location::new(uri.clone(), range(&doc.lines, span)),
@@ -53,47 +60,110 @@ pub fn to_lsp(uri: &Uri, doc: &Document) -> Vec<Diagnostic> {
                 ..Diagnostic::default()
             }
         })
-        .collect()
+        .collect();
+    if omitted.total() > 0 {
+        // Past the compiler's cap: one line says how many more there are.
+        all.push(Diagnostic {
+            range: lsp_types::Range::default(),
+            severity: Some(DiagnosticSeverity::INFORMATION),
+            source: Some("hscene".into()),
+            message: format!(
+                "{} more diagnostic(s) ({} error(s), {} warning(s)) were found and not kept: at most {} are kept",
+                omitted.total(),
+                omitted.errors,
+                omitted.warnings,
+                hscene_lang::MAX_KEPT_DIAGNOSTICS
+            ),
+            ..Diagnostic::default()
+        });
+    }
+    all
 }
 
-/// Places worth showing beside a diagnostic.
-fn related(symbols: &SymbolIndex, d: &hscene_lang::Diagnostic) -> Vec<(hscene_lang::Span, String)> {
-    let inside = |s: hscene_lang::Span| d.span.start <= s.start && s.end <= d.span.end;
-    if d.code == Code::DuplicateName {
-        // The declarations with the name the diagnostic is at, other than itself.
-        let Some(name) = symbols
+/// The declarations and references of a document, indexed once per
+/// publication, so that the related places of every diagnostic are found
+/// by binary search: 10,000 diagnostics against 100,000 references stay
+/// linear-logarithmic.
+struct Related<'s> {
+    symbols: &'s SymbolIndex,
+    /// Indices into `symbols.uses`, by the start of the reference.
+    uses: Vec<usize>,
+    /// Declared names, by position.
+    names: Vec<&'s Ident>,
+    /// Where each name is declared.
+    by_text: HashMap<&'s str, Vec<Span>>,
+}
+
+impl<'s> Related<'s> {
+    fn new(symbols: &'s SymbolIndex) -> Self {
+        let mut uses: Vec<usize> = (0..symbols.uses.len()).collect();
+        uses.sort_by_key(|&i| symbols.uses[i].reference.span.start);
+        let mut names: Vec<&Ident> = symbols
             .definitions
             .iter()
             .filter_map(|def| def.name.as_ref())
-            .find(|n| inside(n.span) || (n.span.start <= d.span.start && d.span.end <= n.span.end))
-        else {
-            return Vec::new();
-        };
-        return symbols
-            .definitions
-            .iter()
-            .filter_map(|def| def.name.as_ref())
-            .filter(|n| n.text == name.text && n.span != name.span)
-            .map(|n| (n.span, format!("`{}` is also declared here", n.text)))
             .collect();
+        names.sort_by_key(|n| n.span.start);
+        let mut by_text: HashMap<&str, Vec<Span>> = HashMap::new();
+        for n in &names {
+            by_text.entry(n.text.as_str()).or_default().push(n.span);
+        }
+        Related {
+            symbols,
+            uses,
+            names,
+            by_text,
+        }
     }
-    symbols
-        .uses
-        .iter()
-        .filter(|u| inside(u.reference.span))
-        .filter_map(|u| {
-            let def = &symbols.definitions[u.definition?];
-            Some((
-                def.span,
-                format!(
-                    "`{}` is declared here ({} {})",
-                    u.reference,
-                    def.kind.as_str(),
-                    def.label()
-                ),
-            ))
-        })
-        .collect()
+
+    /// Places worth showing beside a diagnostic: for a duplicate name the
+    /// other declarations of the name, else the declarations the
+    /// references inside the diagnostic name.
+    fn of(&self, d: &hscene_lang::Diagnostic) -> Vec<(Span, String)> {
+        let inside = |s: Span| d.span.start <= s.start && s.end <= d.span.end;
+        if d.code == Code::DuplicateName {
+            // The first declared name, in source order, inside the
+            // diagnostic or holding it.
+            let at = self.names.partition_point(|n| n.span.start < d.span.start);
+            let holds = |n: &&Ident| n.span.start <= d.span.start && d.span.end <= n.span.end;
+            let before = at.checked_sub(1).map(|i| self.names[i]).filter(holds);
+            let here = self
+                .names
+                .get(at)
+                .copied()
+                .filter(|n| inside(n.span) || holds(n));
+            let Some(name) = before.or(here) else {
+                return Vec::new();
+            };
+            return self.by_text[name.text.as_str()]
+                .iter()
+                .filter(|&&span| span != name.span)
+                .map(|&span| (span, format!("`{}` is also declared here", name.text)))
+                .collect();
+        }
+        let uses = &self.symbols.uses;
+        let first = self
+            .uses
+            .partition_point(|&i| uses[i].reference.span.start < d.span.start);
+        self.uses[first..]
+            .iter()
+            .map(|&i| &uses[i])
+            .take_while(|u| u.reference.span.start <= d.span.end)
+            .filter(|u| inside(u.reference.span))
+            .filter_map(|u| {
+                let def = &self.symbols.definitions[u.definition?];
+                Some((
+                    def.span,
+                    format!(
+                        "`{}` is declared here ({} {})",
+                        u.reference,
+                        def.kind.as_str(),
+                        def.label()
+                    ),
+                ))
+            })
+            .collect()
+    }
 }
 
 #[cfg(test)]
@@ -152,6 +222,7 @@ mod tests {
                 std::path::Path::new("prop.hsc"),
                 &decoded,
                 &compiled.diagnostics,
+                compiled.omitted,
                 Format::Json,
                 false,
             );

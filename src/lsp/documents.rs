@@ -54,6 +54,7 @@ impl Documents {
                 hscene_lang::Compiled {
                     scene: None,
                     diagnostics: Vec::new(),
+                    omitted: hscene_lang::Omitted::default(),
                     inputs: Vec::new(),
                 },
                 SymbolIndex::new(&empty.file),

@@ -101,15 +101,12 @@ impl ConvexPolygon {
             })
             .filter(sees_all)
             .or_else(|| {
-                // Klein -> ball: k / (1 + sqrt(1 - |k|^2)). The centroid of
-                // points of the closed ball is in the closed ball, so
-                // 1 - |k|^2 >= 0 exactly; the `max` only absorbs rounding.
-                // It is not a clamp of user input: the anchor is any point
-                // near the polygon (it only sets the conditioning), and a
-                // centroid rounding onto the absolute is rejected by
-                // `new` below, falling back to building in place.
-                Point::from_coords(klein / (1.0 + (1.0 - klein.length_squared()).max(0.0).sqrt()))
-                    .ok()
+                // The Klein centroid, then walked to the middle. Not a clamp
+                // of user input: the anchor is any point near the polygon
+                // (it only sets the conditioning), and a centroid rounding
+                // onto the absolute falls back to building in place.
+                let first = Point::from_coords(klein_to_ball(klein)).ok()?;
+                Some(centred_anchor(&vertices, first))
             })
             .filter(|p| p.coords() != DVec3::ZERO);
         let anchor_gap = anchor.map_or(1.0, |a| a.gap());
@@ -313,6 +310,48 @@ impl ConvexPolygon {
 /// keeps interior and ideal vertices on a common footing.
 fn unit_time(x: DVec4) -> DVec4 {
     x / x.w
+}
+
+/// Klein -> ball: `k / (1 + sqrt(1 - |k|^2))`. The centroid of points of
+/// the closed ball is in the closed ball, so `1 - |k|^2 >= 0` exactly; the
+/// `max` only absorbs rounding.
+fn klein_to_ball(k: DVec3) -> DVec3 {
+    k / (1.0 + (1.0 - k.length_squared()).max(0.0).sqrt())
+}
+
+/// Steps (at most this many) by which [`centred_anchor`] walks towards the
+/// middle of a polygon.
+const ANCHOR_STEPS: usize = 64;
+
+/// The anchor of a polygon seen from `first` (its Klein centroid), moved
+/// on while the vertices' Klein centroid, seen from the anchor, is far
+/// from it: a polygon with ideal vertices moved 20 from the origin has
+/// three of four vertices within 1e-9 of each other seen from there, and
+/// its centroid (about 1 out) sees them no better; each step goes to the
+/// centroid seen from the last, until the vertices surround the anchor.
+/// The anchor only sets the conditioning of the checks, never the result.
+fn centred_anchor(vertices: &[Vertex], first: Point) -> Point {
+    let mut anchor = first;
+    for _ in 0..ANCHOR_STEPS {
+        let to_anchor = Isometry::transvection_from_origin(anchor);
+        let back = to_anchor.inverse();
+        let klein = vertices
+            .iter()
+            .map(|v| unit_time(back.apply_vertex(v).to_hyperboloid()))
+            .sum::<DVec4>()
+            .truncate()
+            / vertices.len() as f64;
+        let step = klein_to_ball(klein);
+        // Within 0.5 of the anchor (ball radius tanh 0.25): centred enough.
+        if !(step.length() > 0.245) {
+            break;
+        }
+        match Point::from_coords(step) {
+            Ok(p) if to_anchor.apply(&p).gap() > 0.0 => anchor = to_anchor.apply(&p),
+            _ => break,
+        }
+    }
+    anchor
 }
 
 #[cfg(test)]

@@ -58,6 +58,14 @@ pub enum RenderError {
     /// The output exists and its permissions forbid writing it.
     #[error("the output {0} exists and is read-only; pass --force to replace it")]
     ReadOnlyOutput(PathBuf),
+    /// Memory for a buffer could not be had.
+    #[error("cannot allocate {bytes} bytes for {what}: not enough memory")]
+    OutOfMemory {
+        /// What the memory was for.
+        what: &'static str,
+        /// How much was asked for.
+        bytes: usize,
+    },
     /// The output's file name is longer than file systems hold.
     #[error(
         "the output {path} has a file name of {bytes} bytes; file systems hold at most 255: choose a shorter name"

@@ -587,7 +587,17 @@ fn render_in_pool(
     let columns = region.x..region.x + region.width;
     // Each row is traced straight into its place in the image: no row of
     // its own to allocate, and no copy of the whole image after.
-    let mut pixels = vec![[0.0f32; 3]; region.width as usize * region.height as usize];
+    // Allocated fallibly, before the first ray: a machine without the
+    // memory refuses the render with an error instead of aborting in it.
+    let count = region.width as usize * region.height as usize;
+    let mut pixels: Vec<[f32; 3]> = Vec::new();
+    pixels
+        .try_reserve_exact(count)
+        .map_err(|_| RenderError::OutOfMemory {
+            what: "the image",
+            bytes: count.saturating_mul(std::mem::size_of::<[f32; 3]>()),
+        })?;
+    pixels.resize(count, [0.0; 3]);
     let (failed, traced) = pixels
         .par_chunks_mut(region.width as usize)
         .zip(region.y..region.y + region.height)

@@ -451,7 +451,9 @@ fn encode_tiff(
     match depth {
         SampleDepth::Eight => write!(colortype::RGB8, display.to_rgb8(image.pixels())),
         SampleDepth::Sixteen => write!(colortype::RGB16, display.to_rgb16(image.pixels())),
-        SampleDepth::Float32 => write!(colortype::RGB32Float, image.to_rgb32f()),
+        // The image's pixels are interleaved f32 RGB already: written from
+        // where they are, not copied (2^27 pixels are 1.6 GB).
+        SampleDepth::Float32 => write!(colortype::RGB32Float, image.pixels().as_flattened()),
     }
 }
 

@@ -17,6 +17,7 @@
 
 mod bounded_read;
 pub mod diagnostic;
+mod diagnostic_list;
 mod file_cache;
 pub mod format;
 pub mod image_file;
@@ -40,6 +41,7 @@ pub use hscene_ir as ir;
 pub use hscene_ir::view;
 
 pub use diagnostic::{Code, Diagnostic, Severity, Span};
+pub use diagnostic_list::{MAX_KEPT_DIAGNOSTICS, Omitted};
 pub use file_cache::FileCache;
 pub use format::{FormatError, format};
 pub use line_index::LineIndex;
@@ -53,8 +55,11 @@ pub use parser::{Parsed, parse};
 pub struct Compiled {
     /// The lowered scene; `None` if any error was reported.
     pub scene: Option<ir::Scene>,
-    /// All diagnostics, in source order.
+    /// The diagnostics, in source order: the first
+    /// [`MAX_KEPT_DIAGNOSTICS`] found.
     pub diagnostics: Vec<Diagnostic>,
+    /// How many more were found and not kept.
+    pub omitted: Omitted,
     /// The files the scene names and the compiler read (meshes, images,
     /// space files), each once, as resolved from the base directory: an
     /// output must be none of them.
@@ -62,9 +67,9 @@ pub struct Compiled {
 }
 
 impl Compiled {
-    /// True if any diagnostic is an error.
+    /// True if any diagnostic, kept or not, is an error.
     pub fn has_errors(&self) -> bool {
-        self.diagnostics.iter().any(Diagnostic::is_error)
+        self.omitted.errors > 0 || self.diagnostics.iter().any(Diagnostic::is_error)
     }
 }
 
@@ -78,15 +83,17 @@ pub fn compile(source: &str) -> Compiled {
 pub fn compile_with(source: &str, options: &Options) -> Compiled {
     options.files.start_compile();
     let parsed = parse(source);
-    let mut diagnostics = parsed.diagnostics;
+    let mut list = diagnostic_list::DiagnosticList::from_parts(parsed.diagnostics, parsed.omitted);
     let mut inputs = Vec::new();
-    let scene = lower::lower(&parsed.file, source, options, &mut diagnostics, &mut inputs);
+    let scene = lower::lower(&parsed.file, source, options, &mut list, &mut inputs);
+    let (mut diagnostics, omitted) = list.into_parts();
     diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
     let mut seen = std::collections::HashSet::new();
     inputs.retain(|p| seen.insert(p.clone()));
     Compiled {
         scene,
         diagnostics,
+        omitted,
         inputs,
     }
 }

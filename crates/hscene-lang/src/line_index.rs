@@ -247,7 +247,7 @@ mod tests {
         let idx = LineIndex::new(text);
         assert_eq!(idx.utf16_position(3), (1, 1));
         assert_eq!(idx.utf16_offset(1, 1), 3);
-        assert_eq!(idx.utf16_position(7), (2, 0));
+        assert_eq!(idx.utf16_position(6), (2, 0));
         assert_eq!(idx.utf16_offset(1, 9), 4);
     }
 

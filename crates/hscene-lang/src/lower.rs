@@ -44,6 +44,7 @@ use std::path::Path;
 use hgeom::{HPlane, Segment};
 
 use crate::diagnostic::{Code, Diagnostic, Span};
+use crate::diagnostic_list::DiagnosticList;
 use crate::ir::{Animation, Light, Material, Object, PointRecord, Scene, Settings, frame_time};
 use crate::line_index::LineIndex;
 use crate::syntax::{Clause, Section, SourceFile, Value};
@@ -68,7 +69,7 @@ pub(crate) const SECTIONS: [&str; 6] = [
 
 /// The state of one lowering.
 struct Lowerer<'d> {
-    diags: &'d mut Vec<Diagnostic>,
+    diags: &'d mut DiagnosticList,
     points: names::Table<points::DeclaredPoint>,
     materials: names::Table<Material>,
     lines: names::Table<Option<Segment>>,
@@ -127,7 +128,7 @@ pub(crate) fn lower(
     file: &SourceFile,
     source: &str,
     options: &crate::options::Options,
-    diags: &mut Vec<Diagnostic>,
+    diags: &mut DiagnosticList,
     inputs: &mut Vec<std::path::PathBuf>,
 ) -> Option<Scene> {
     let frames = declared_frames(file);
@@ -210,7 +211,7 @@ pub(crate) fn lower(
     lw.lint_still_animation();
     lw.lint_ambient_under_path();
     inputs.append(&mut lw.inputs);
-    if lw.diags.iter().any(Diagnostic::is_error) {
+    if lw.diags.has_errors() {
         return None;
     }
     let camera = camera?;

@@ -31,6 +31,7 @@ mod tree;
 use pest_derive::Parser;
 
 use crate::diagnostic::Diagnostic;
+use crate::diagnostic_list::DiagnosticList;
 use crate::syntax::SourceFile;
 
 #[derive(Parser)]
@@ -46,14 +47,17 @@ pub const MAX_NESTING: usize = 64;
 pub struct Parsed {
     /// The sections and statements that could be parsed.
     pub file: SourceFile,
-    /// Syntax diagnostics, sorted by position.
+    /// Syntax diagnostics, sorted by position: the first
+    /// [`crate::MAX_KEPT_DIAGNOSTICS`] found.
     pub diagnostics: Vec<Diagnostic>,
+    /// How many more were found and not kept.
+    pub omitted: crate::Omitted,
 }
 
 impl Parsed {
     /// Whether any diagnostic is an error.
     pub fn has_errors(&self) -> bool {
-        self.diagnostics.iter().any(Diagnostic::is_error)
+        self.omitted.errors > 0 || self.diagnostics.iter().any(Diagnostic::is_error)
     }
 }
 
@@ -66,14 +70,18 @@ pub fn parse(source: &str) -> Parsed {
     let mut p = Scanner {
         src: source,
         pos: 0,
-        diagnostics: Vec::new(),
+        diagnostics: DiagnosticList::default(),
         comment_unterminated: false,
         incomplete: false,
     };
     let file = p.file();
-    let mut diagnostics = p.diagnostics;
+    let (mut diagnostics, omitted) = p.diagnostics.into_parts();
     diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
-    Parsed { file, diagnostics }
+    Parsed {
+        file,
+        diagnostics,
+        omitted,
+    }
 }
 
 /// The state of one parse: where the scanner is, and what it has found
@@ -81,7 +89,7 @@ pub fn parse(source: &str) -> Parsed {
 struct Scanner<'a> {
     src: &'a str,
     pos: usize,
-    diagnostics: Vec<Diagnostic>,
+    diagnostics: DiagnosticList,
     /// Set once an unterminated `/*` swallowed the rest of the file; the
     /// problems that follow from it (unclosed section, cut statement) are
     /// then not reported again.
@@ -322,7 +330,10 @@ Transformations { hline (%1,%5); %1->Rotate(%2,-0.7); %2->Translate(%1); }
         let big = format!("S {{ ({} }}", "1,".repeat(200_000));
         assert_eq!(codes(&parse(&big)), [Code::Syntax]);
         let many = format!("S {{ {} }}", "x y; ".repeat(20_000));
-        assert_eq!(parse(&many).diagnostics.len(), 20_000);
+        let parsed = parse(&many);
+        // The first 10,000 kept, the rest counted.
+        assert_eq!(parsed.diagnostics.len(), crate::MAX_KEPT_DIAGNOSTICS);
+        assert_eq!(parsed.omitted.errors, 20_000 - crate::MAX_KEPT_DIAGNOSTICS);
     }
 
     #[test]

@@ -30,7 +30,7 @@ impl Scanner<'_> {
                     "tuples are at most one or two levels deep; remove the extra parentheses",
                 ),
             );
-            out.broken.push(self.broken(start, end));
+            self.keep_broken(out, start, end);
             return;
         }
         // A statement missing its `;` at the end of a line is split there
@@ -49,7 +49,7 @@ impl Scanner<'_> {
                                 Span::new(start, end),
                                 "internal error: unexpected parse tree for this statement",
                             ));
-                            out.broken.push(self.broken(start, end));
+                            self.keep_broken(out, start, end);
                         }
                     }
                     return;
@@ -67,11 +67,11 @@ impl Scanner<'_> {
                                     "end the file name with `\"`; a string cannot span lines",
                                 ),
                         );
-                        out.broken.push(self.broken(start, end));
+                        self.keep_broken(out, start, end);
                         return;
                     }
                     self.report_pest_error(&err, start, end);
-                    out.broken.push(self.broken(start, end));
+                    self.keep_broken(out, start, end);
                     return;
                 }
             }
@@ -154,6 +154,17 @@ impl Scanner<'_> {
 
     /// What can be salvaged from a statement that did not parse: a leading
     /// name and its references.
+    /// Keeps the broken statement `start..end` for the lowering (its name
+    /// and references, so they do not cascade into more errors), while the
+    /// diagnostics are under their cap: past it, a file of millions of
+    /// broken statements (16 MiB of `;`) would hold one record each, for
+    /// errors that are only counted.
+    fn keep_broken(&mut self, out: &mut Body, start: usize, end: usize) {
+        if !self.diagnostics.is_full() {
+            out.broken.push(self.broken(start, end));
+        }
+    }
+
     fn broken(&self, start: usize, end: usize) -> BrokenStatement {
         let tokens = self.tokens(start, end);
         let text = |span: Span| &self.src[span.start..span.end];
