@@ -380,3 +380,45 @@ fn limits_and_messages_agree() {
     assert!(out.stderr.contains("1e308"), "{}", out.stderr);
     assert!(!out.stderr.contains("0000000000"), "{}", out.stderr);
 }
+
+/// SIGTERM or SIGINT at any moment of `fmt`: the file is the old one or
+/// the whole formatted one, and no temporary file is left.
+#[test]
+fn a_signal_during_fmt_leaves_the_file_whole_and_no_temporary_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("big.hsc");
+    let text = format!("Points{{{}}}\n", "p=(0.1,0.2,0.3);".repeat(200_000));
+    let formatted = {
+        fs::write(&path, &text).unwrap();
+        let out = run(dir.path(), &["fmt", "big.hsc"]);
+        assert_eq!(out.code, 0, "{}", out.stderr);
+        fs::read_to_string(&path).unwrap()
+    };
+    for (signal, delays) in [
+        (libc::SIGTERM, [20u64, 80, 200, 500]),
+        (libc::SIGINT, [30, 120, 300, 700]),
+    ] {
+        for delay in delays {
+            fs::write(&path, &text).unwrap();
+            let mut child = Command::new(env!("CARGO_BIN_EXE_hscene"))
+                .args(["fmt", "big.hsc"])
+                .current_dir(dir.path())
+                .stdout(Stdio::null())
+                .stderr(Stdio::null())
+                .spawn()
+                .unwrap();
+            std::thread::sleep(Duration::from_millis(delay));
+            // SAFETY: a signal to our own child.
+            unsafe {
+                libc::kill(child.id() as libc::pid_t, signal);
+            }
+            let status = child.wait().unwrap();
+            let now = fs::read_to_string(&path).unwrap();
+            assert!(
+                now == text || now == formatted,
+                "signal {signal} after {delay} ms ({status}): the file is neither old nor new"
+            );
+            assert!(hidden(dir.path()).is_empty(), "{:?}", hidden(dir.path()));
+        }
+    }
+}

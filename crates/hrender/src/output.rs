@@ -690,4 +690,63 @@ mod tests {
         ));
         assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
     }
+
+    /// `fmt` reads, formats, then replaces: a save in between (another
+    /// length, another time) is kept and the replacement refused.
+    #[test]
+    fn a_file_changed_since_it_was_read_is_not_replaced() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("s.hsc");
+        std::fs::write(&path, b"Points{}").unwrap();
+        let stamp = FileStamp::of(&path).unwrap();
+        std::fs::write(&path, b"Points { saved; }").unwrap();
+        let result = replace_file(&path, Some(&stamp), |out| {
+            out.write_all(b"Points {}\n")
+                .map_err(|source| RenderError::Io {
+                    path: path.clone(),
+                    source,
+                })
+        });
+        assert!(
+            matches!(result, Err(RenderError::ChangedMeanwhile(_))),
+            "{result:?}"
+        );
+        assert_eq!(std::fs::read(&path).unwrap(), b"Points { saved; }");
+        assert_eq!(
+            std::fs::read_dir(dir.path()).unwrap().count(),
+            1,
+            "no temporary file"
+        );
+        // Unchanged, it is replaced.
+        let stamp = FileStamp::of(&path).unwrap();
+        replace_file(&path, Some(&stamp), |out| {
+            out.write_all(b"Points {}\n")
+                .map_err(|source| RenderError::Io {
+                    path: path.clone(),
+                    source,
+                })
+        })
+        .unwrap();
+        assert_eq!(std::fs::read(&path).unwrap(), b"Points {}\n");
+    }
+
+    /// An output named through a symbolic link replaces the file the link
+    /// names; the link stays.
+    #[cfg(unix)]
+    #[test]
+    fn a_link_is_followed_and_kept() {
+        let dir = tempfile::tempdir().unwrap();
+        let real = dir.path().join("real.png");
+        std::fs::write(&real, b"old").unwrap();
+        let link = dir.path().join("link.png");
+        std::os::unix::fs::symlink("real.png", &link).unwrap();
+        write_image(&tiny(), &link, SampleDepth::Eight).unwrap();
+        assert!(
+            std::fs::symlink_metadata(&link)
+                .unwrap()
+                .file_type()
+                .is_symlink()
+        );
+        assert_ne!(std::fs::read(&real).unwrap(), b"old");
+    }
 }
