@@ -409,22 +409,9 @@ mod tests {
 /// needs a nightly compiler, and CI has the stable one.
 #[cfg(test)]
 mod fuzz {
+    use hscene_test_support::SplitMix64;
+
     use super::*;
-
-    struct Rng(u64);
-
-    impl Rng {
-        fn next(&mut self) -> u64 {
-            // xorshift64*
-            self.0 ^= self.0 >> 12;
-            self.0 ^= self.0 << 25;
-            self.0 ^= self.0 >> 27;
-            self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
-        }
-        fn below(&mut self, n: usize) -> usize {
-            (self.next() % n.max(1) as u64) as usize
-        }
-    }
 
     const BODIES: &[&str] = &[
         r#"{"jsonrpc":"2.0","id":1,"method":"initialize","params":{"capabilities":{}}}"#,
@@ -437,7 +424,7 @@ mod fuzz {
         r#"{"method":"\ud800"}"#,
     ];
 
-    fn stream(rng: &mut Rng) -> Vec<u8> {
+    fn stream(rng: &mut SplitMix64) -> Vec<u8> {
         let mut out = Vec::new();
         for _ in 0..1 + rng.below(6) {
             let body = BODIES[rng.below(BODIES.len())].as_bytes();
@@ -484,7 +471,7 @@ mod fuzz {
             .and_then(|s| s.parse().ok())
             .unwrap_or(0);
         let started = std::time::Instant::now();
-        let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+        let mut rng = SplitMix64::new(41);
         let mut runs = 0u64;
         while (seconds == 0 && runs < 200) || (seconds > 0 && started.elapsed().as_secs() < seconds)
         {

@@ -11,6 +11,8 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
+use hscene_test_support::SplitMix64;
+
 /// Counts the bytes allocated now and the most at once since the last reset.
 struct Counting;
 
@@ -56,20 +58,6 @@ const BYTES_PER_INPUT_BYTE: usize = 128;
 /// Plus this much whatever the input (tables, the report).
 const ALLOWANCE: usize = 16 << 20;
 
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
-    }
-    fn below(&mut self, n: usize) -> usize {
-        (self.next() % n.max(1) as u64) as usize
-    }
-}
-
 const PIECES: &[&str] = &[
     ";",
     "p = (1,1,1); ",
@@ -93,7 +81,7 @@ const PIECES: &[&str] = &[
     "@b->Translate(%x, 1); ",
 ];
 
-fn input(rng: &mut Rng) -> String {
+fn input(rng: &mut SplitMix64) -> String {
     let target = 1 << (14 + rng.below(5)); // 16 KiB to 256 KiB
     let mut text = String::new();
     let sections = [
@@ -141,7 +129,7 @@ fn fuzz_front_end_memory() {
         .and_then(|s| s.parse().ok())
         .unwrap_or(0);
     let started = std::time::Instant::now();
-    let mut rng = Rng(0x2545_f491_4f6c_dd1d);
+    let mut rng = SplitMix64::new(41);
     let (mut runs, mut worst) = (0u64, 0.0f64);
     while (seconds == 0 && runs < 24) || (seconds > 0 && started.elapsed().as_secs() < seconds) {
         let text = input(&mut rng);

@@ -25,6 +25,12 @@ impl SplitMix64 {
         z ^ (z >> 31)
     }
 
+    /// Uniform in `0..n` (`0` for `n = 0`), from one draw; the modulo's
+    /// bias is below `n / 2^64`, nothing for test inputs.
+    pub fn below(&mut self, n: usize) -> usize {
+        (self.next_u64() % n.max(1) as u64) as usize
+    }
+
     /// Uniform in `[0, 1)`: the top 53 bits of one draw, so every value is
     /// exact.
     pub fn unit(&mut self) -> f64 {
