@@ -409,7 +409,7 @@ mod tests {
 /// needs a nightly compiler, and CI has the stable one.
 #[cfg(test)]
 mod fuzz {
-    use hscene_test_support::SplitMix64;
+    use hscene_test_support::{FuzzClock, SplitMix64};
 
     use super::*;
 
@@ -466,15 +466,9 @@ mod fuzz {
 
     #[test]
     fn fuzz_the_transport() {
-        let seconds: u64 = std::env::var("HSCENE_FUZZ_SECONDS")
-            .ok()
-            .and_then(|s| s.parse().ok())
-            .unwrap_or(0);
-        let started = std::time::Instant::now();
+        let mut clock = FuzzClock::new(200);
         let mut rng = SplitMix64::new(41);
-        let mut runs = 0u64;
-        while (seconds == 0 && runs < 200) || (seconds > 0 && started.elapsed().as_secs() < seconds)
-        {
+        while clock.next_input() {
             let input = stream(&mut rng);
             let mut t = Transport::new(input.as_slice(), Vec::new());
             // Each read consumes input or ends the stream: the number of
@@ -492,8 +486,7 @@ mod fuzz {
                     Ok(None) | Err(_) => break,
                 }
             }
-            runs += 1;
         }
-        eprintln!("fuzz_the_transport: {runs} streams");
+        eprintln!("fuzz_the_transport: {} streams", clock.runs());
     }
 }

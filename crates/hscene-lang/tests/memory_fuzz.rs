@@ -11,7 +11,7 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use hscene_test_support::SplitMix64;
+use hscene_test_support::{FuzzClock, SplitMix64};
 
 /// Counts the bytes allocated now and the most at once since the last reset.
 struct Counting;
@@ -124,14 +124,10 @@ fn input(rng: &mut SplitMix64) -> String {
 
 #[test]
 fn fuzz_front_end_memory() {
-    let seconds: u64 = std::env::var("HSCENE_FUZZ_SECONDS")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(0);
-    let started = std::time::Instant::now();
+    let mut clock = FuzzClock::new(24);
     let mut rng = SplitMix64::new(41);
-    let (mut runs, mut worst) = (0u64, 0.0f64);
-    while (seconds == 0 && runs < 24) || (seconds > 0 && started.elapsed().as_secs() < seconds) {
+    let mut worst = 0.0f64;
+    while clock.next_input() {
         let text = input(&mut rng);
         let base = NOW.load(Ordering::Relaxed);
         PEAK.store(base, Ordering::Relaxed);
@@ -149,9 +145,9 @@ fn fuzz_front_end_memory() {
             text.len(),
             &text[..text.len().min(200)]
         );
-        runs += 1;
     }
     eprintln!(
-        "fuzz_front_end_memory: {runs} inputs, worst {worst:.0} bytes per input byte (inputs of 128 KiB and more)"
+        "fuzz_front_end_memory: {} inputs, worst {worst:.0} bytes per input byte (inputs of 128 KiB and more)",
+        clock.runs()
     );
 }

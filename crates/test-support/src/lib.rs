@@ -1,7 +1,8 @@
 //! What the workspace's tests, examples and benchmarks share, in one place
 //! instead of copies and `#[path]` includes:
 //!
-//! - [`SplitMix64`], the seeded generator every test stream is drawn from;
+//! - [`SplitMix64`], the seeded generator every test stream is drawn from,
+//!   and [`FuzzClock`], how long a fuzz target runs;
 //! - [`reference`], hgeom's operations recomputed with 320-bit floats;
 //! - [`accuracy`], the families of cases that measure hgeom against it;
 //! - with the `render` feature, [`scenes`] (renderer test scenes built from
@@ -16,12 +17,14 @@
 pub mod accuracy;
 #[cfg(feature = "render")]
 pub mod far;
+mod fuzz_clock;
 mod icosphere;
 pub mod reference;
 mod rng;
 #[cfg(feature = "render")]
 pub mod scenes;
 
+pub use fuzz_clock::FuzzClock;
 pub use icosphere::icosphere;
 pub use rng::SplitMix64;
 
