@@ -375,6 +375,26 @@ fn limits_and_messages_agree() {
         assert!(!out.stderr.contains("coincide"), "{name}: {}", out.stderr);
         assert_eq!(out.code, 0, "{name}: {}", out.stderr);
     }
+    // A one-face OBJ whose fan would pass what a scene holds is refused as
+    // it is read (it used to be fanned whole first: 1.1 GB for 64 MiB).
+    let face: String = (0..2_000_100).map(|i| format!(" {}", i % 3 + 1)).collect();
+    fs::write(
+        dir.path().join("fan.obj"),
+        format!("v 0 0 0\nv 1 0 0\nv 0 1 0\nf{face}\n"),
+    )
+    .unwrap();
+    let out = check(
+        "fan.hsc",
+        SCENE.replace(
+            "Objects { Sphere %t, 0.2, #m; }",
+            "Objects { Mesh \"fan.obj\", 0.2, #m; }",
+        ),
+    );
+    assert!(
+        out.stderr.contains("HSC0502") && out.stderr.contains("2000000 triangles"),
+        "{}",
+        out.stderr
+    );
     // Numbers in messages are short, whatever was written.
     let out = check("fov.hsc", SCENE.replace("fov = 60", "fov = 1e308"));
     assert!(out.stderr.contains("1e308"), "{}", out.stderr);

@@ -20,7 +20,7 @@ mod normals;
 mod obj;
 mod ply;
 
-pub use data::{MAX_MESH_FILE_BYTES, MeshData, MeshFileError};
+pub use data::{MAX_MESH_FILE_BYTES, MAX_MESH_TRIANGLES, MeshData, MeshFileError};
 
 /// The formats a mesh is read from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -31,6 +31,12 @@ pub struct MeshData {
 /// far more than a scene can hold (see `docs/limits.md`).
 pub const MAX_MESH_FILE_BYTES: u64 = 64 << 20;
 
+/// Most triangles a mesh file may make (after polygons are split into
+/// fans): 2,000,000, what the primitives budget of one scene holds (500,000
+/// primitives, 4 mesh triangles each). Counted while reading, so a file of
+/// one face of millions of vertices is refused before its fan is built.
+pub const MAX_MESH_TRIANGLES: usize = 2_000_000;
+
 /// Why a mesh file could not be used.
 #[derive(Debug)]
 pub enum MeshFileError {
@@ -44,6 +50,8 @@ pub enum MeshFileError {
         /// Its size in bytes.
         size: u64,
     },
+    /// The file makes more than [`MAX_MESH_TRIANGLES`] triangles.
+    TooManyTriangles,
     /// The extension is neither `.obj` nor `.ply`.
     UnknownFormat,
     /// The file is not valid OBJ/PLY, or lacks what a mesh needs. The text
@@ -62,6 +70,10 @@ impl fmt::Display for MeshFileError {
         match self {
             MeshFileError::Io(e) => write!(f, "{e}"),
             MeshFileError::NotAFile => f.write_str("it is not a regular file"),
+            MeshFileError::TooManyTriangles => write!(
+                f,
+                "it makes more than {MAX_MESH_TRIANGLES} triangles, the most one scene holds"
+            ),
             MeshFileError::TooLarge { size } => write!(
                 f,
                 "it has {size} bytes, more than the limit of {MAX_MESH_FILE_BYTES}"
@@ -176,10 +188,14 @@ impl BoundingBall {
 }
 
 /// Splits a polygon `face` (vertex indices in order) into a fan.
-pub(super) fn fan(face: &[u32], out: &mut Vec<[u32; 3]>) {
+pub(super) fn fan(face: &[u32], out: &mut Vec<[u32; 3]>) -> Result<(), MeshFileError> {
+    if out.len() + face.len().saturating_sub(2) > MAX_MESH_TRIANGLES {
+        return Err(MeshFileError::TooManyTriangles);
+    }
     if let Some((&first, rest)) = face.split_first() {
         for pair in rest.windows(2) {
             out.push([first, pair[0], pair[1]]);
         }
     }
+    Ok(())
 }

@@ -6,7 +6,7 @@
 
 use hgeom::glam::DVec3;
 
-use super::data::{MeshData, MeshFileError, fan};
+use super::data::{MAX_MESH_TRIANGLES, MeshData, MeshFileError, fan};
 
 /// Parses OBJ text (any line-end convention) into positions and triangles.
 /// Face indices are 1-based, or negative to count back from the last vertex
@@ -31,6 +31,11 @@ pub(super) fn parse(bytes: &[u8]) -> Result<MeshData, MeshFileError> {
                 face.clear();
                 face_normals.clear();
                 for word in words {
+                    // A face of millions of vertices makes as many
+                    // triangles: refused as it is read, not once built.
+                    if triangles.len() + face.len() > MAX_MESH_TRIANGLES {
+                        return Err(MeshFileError::TooManyTriangles);
+                    }
                     face.push(vertex_index(word, positions.len()).ok_or_else(|| {
                         invalid("a face refers to a vertex that is not defined before it")
                     })?);
@@ -41,8 +46,14 @@ pub(super) fn parse(bytes: &[u8]) -> Result<MeshData, MeshFileError> {
                 if face.len() < 3 {
                     return Err(invalid("a face needs at least three vertices"));
                 }
-                fan(&face, &mut triangles);
-                fan(&face_normals, &mut corner_normals);
+                let before = triangles.len();
+                fan(&face, &mut triangles)?;
+                // Corner normals only once the file has normals: one row per
+                // triangle, those before the first normal without.
+                if !normals.is_empty() {
+                    corner_normals.resize(before, [u32::MAX; 3]);
+                    fan(&face_normals, &mut corner_normals)?;
+                }
             }
             _ => {}
         }

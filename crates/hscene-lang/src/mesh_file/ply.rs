@@ -184,7 +184,7 @@ pub(super) fn parse<R: BufRead>(source: R, len: u64) -> Result<MeshData, MeshFil
                             i + 1
                         )));
                     };
-                    fan(&face, &mut triangles);
+                    fan(&face, &mut triangles)?;
                 }
                 _ => {}
             }
