@@ -442,3 +442,82 @@ fn a_signal_during_fmt_leaves_the_file_whole_and_no_temporary_file() {
         }
     }
 }
+
+/// Runs `hscene args` in `dir` as the user `nobody` (uid and gid 65534),
+/// from a copy of the binary in `dir`'s parent (the build directory may be
+/// closed to other users).
+fn run_as_nobody(dir: &Path, args: &[&str]) -> Outcome {
+    let exe = dir.parent().unwrap().join("hscene");
+    if !exe.exists() {
+        fs::copy(env!("CARGO_BIN_EXE_hscene"), &exe).unwrap();
+        fs::set_permissions(&exe, fs::Permissions::from_mode(0o755)).unwrap();
+    }
+    let mut cmd = Command::new(&exe);
+    cmd.args(args)
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped());
+    // SAFETY: setgid/setuid are async-signal-safe and touch only the child.
+    unsafe {
+        cmd.pre_exec(|| {
+            if libc::setgid(65534) != 0 || libc::setuid(65534) != 0 {
+                return Err(std::io::Error::last_os_error());
+            }
+            Ok(())
+        });
+    }
+    let out = cmd.output().expect("the binary starts as nobody");
+    let stderr =
+        String::from_utf8_lossy(&out.stderr).into_owned() + &String::from_utf8_lossy(&out.stdout);
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    Outcome {
+        code: out.status.code().expect("not killed"),
+        stderr,
+    }
+}
+
+/// Another user's file: replacing it would make it ours, so it needs
+/// `--force`; in a sticky directory (as /tmp) only its owner may replace
+/// it, so it is refused even then, before anything is written. Run as
+/// root, which can make a file another user's and then be that user.
+#[test]
+fn another_users_file_is_replaced_only_with_force_and_never_in_a_sticky_directory() {
+    // SAFETY: geteuid has no preconditions.
+    if unsafe { libc::geteuid() } != 0 {
+        // Without root no file of another user can be made: what can be
+        // checked is that our own file is replaced without `--force`.
+        let dir = tempfile::tempdir().unwrap();
+        fs::write(dir.path().join("s.hsc"), UNFORMATTED).unwrap();
+        assert_eq!(run(dir.path(), &["fmt", "s.hsc"]).code, 0);
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    for (sub, mode) in [("open", 0o777), ("sticky", 0o1777)] {
+        let d = dir.path().join(sub);
+        fs::create_dir(&d).unwrap();
+        fs::set_permissions(&d, fs::Permissions::from_mode(mode)).unwrap();
+        let file = d.join("s.hsc");
+        fs::write(&file, UNFORMATTED).unwrap();
+        fs::set_permissions(&file, fs::Permissions::from_mode(0o666)).unwrap();
+    }
+    fs::set_permissions(dir.path(), fs::Permissions::from_mode(0o755)).unwrap();
+    let open = dir.path().join("open");
+    let out = run_as_nobody(&open, &["fmt", "s.hsc"]);
+    assert_eq!(out.code, 2, "{}", out.stderr);
+    assert!(out.stderr.contains("another user"), "{}", out.stderr);
+    assert_eq!(fs::read_to_string(open.join("s.hsc")).unwrap(), UNFORMATTED);
+    let out = run_as_nobody(&open, &["fmt", "--force", "s.hsc"]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    assert_ne!(fs::read_to_string(open.join("s.hsc")).unwrap(), UNFORMATTED);
+
+    let sticky = dir.path().join("sticky");
+    let out = run_as_nobody(&sticky, &["fmt", "--force", "s.hsc"]);
+    assert_eq!(out.code, 2, "{}", out.stderr);
+    assert!(out.stderr.contains("sticky"), "{}", out.stderr);
+    assert_eq!(
+        fs::read_to_string(sticky.join("s.hsc")).unwrap(),
+        UNFORMATTED
+    );
+    assert!(hidden(&sticky).is_empty() && hidden(&open).is_empty());
+}
