@@ -1,6 +1,7 @@
 //! The `hscene` command: glue between the scene language, the renderer and
 //! the terminal. Only this crate knows about clap, JSON and terminals.
 
+mod allocator;
 mod cli;
 mod emit;
 mod exit;
@@ -32,6 +33,9 @@ use cli::{
 
 /// The relative standard error `--samples auto` stops at without `--noise`.
 const DEFAULT_NOISE: f64 = 0.01;
+
+#[global_allocator]
+static ALLOCATOR: allocator::Allocator = allocator::Allocator;
 
 fn main() -> ExitCode {
     ignore_file_size_signal();

@@ -25,22 +25,34 @@ struct Outcome {
 
 /// Runs `hscene args` in `dir`; `file_size_blocks` sets `ulimit -f`.
 fn run_limited(dir: &Path, args: &[&str], file_size_blocks: Option<u64>) -> Outcome {
+    run_with_limits(
+        dir,
+        args,
+        file_size_blocks.map(|b| (libc::RLIMIT_FSIZE, b * 512)),
+    )
+}
+
+/// Runs `hscene args` in `dir` under one resource limit (`setrlimit`).
+fn run_with_limits(
+    dir: &Path,
+    args: &[&str],
+    limit: Option<(libc::__rlimit_resource_t, u64)>,
+) -> Outcome {
     let mut cmd = Command::new(env!("CARGO_BIN_EXE_hscene"));
     cmd.args(args)
         .current_dir(dir)
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped());
-    if let Some(blocks) = file_size_blocks {
+    if let Some((resource, value)) = limit {
         // SAFETY: setrlimit is async-signal-safe and touches only the child.
         unsafe {
             cmd.pre_exec(move || {
-                let bytes = (blocks * 512) as libc::rlim_t;
                 let r = libc::rlimit {
-                    rlim_cur: bytes,
-                    rlim_max: bytes,
+                    rlim_cur: value as libc::rlim_t,
+                    rlim_max: value as libc::rlim_t,
                 };
-                if libc::setrlimit(libc::RLIMIT_FSIZE, &r) == 0 {
+                if libc::setrlimit(resource, &r) == 0 {
                     Ok(())
                 } else {
                     Err(std::io::Error::last_os_error())
@@ -520,4 +532,45 @@ fn another_users_file_is_replaced_only_with_force_and_never_in_a_sticky_director
         UNFORMATTED
     );
     assert!(hidden(&sticky).is_empty() && hidden(&open).is_empty());
+}
+
+/// Out of memory (an address-space limit): the image, allocated fallibly
+/// before the first ray, is refused with its size; any other allocation
+/// ends the process with one line and status 2 (not an abort), and no
+/// temporary file is left.
+#[test]
+fn running_out_of_memory_ends_cleanly() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(dir.path().join("s.hsc"), SCENE).unwrap();
+    fs::write(dir.path().join("out.tif"), b"earlier").unwrap();
+    let limit = Some((libc::RLIMIT_AS, 768u64 << 20));
+    let out = run_with_limits(
+        dir.path(),
+        &[
+            "render",
+            "s.hsc",
+            "--resolution",
+            "12000x11000",
+            "--depth",
+            "32f",
+            "-o",
+            "out.tif",
+        ],
+        limit,
+    );
+    assert_eq!(out.code, 2, "{}", out.stderr);
+    assert!(
+        out.stderr
+            .contains("cannot allocate 1584000000 bytes for the image"),
+        "{}",
+        out.stderr
+    );
+    assert_eq!(fs::read(dir.path().join("out.tif")).unwrap(), b"earlier");
+    // A 16 MiB scene whose syntax tree needs about 1.4 GB.
+    let big = format!("Points {{ {} }}", "p = (1,1,1); ".repeat((16 << 20) / 14));
+    fs::write(dir.path().join("big.hsc"), big).unwrap();
+    let out = run_with_limits(dir.path(), &["check", "big.hsc"], limit);
+    assert_eq!(out.code, 2, "{}", out.stderr);
+    assert!(out.stderr.contains("out of memory"), "{}", out.stderr);
+    assert!(hidden(dir.path()).is_empty(), "{:?}", hidden(dir.path()));
 }

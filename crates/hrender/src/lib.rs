@@ -23,6 +23,7 @@ mod display;
 mod error;
 mod exposure;
 mod exr_layers;
+mod fallible;
 mod fog;
 mod horizon_bucket;
 mod horizon_fill;
@@ -65,6 +66,7 @@ pub use exposure::{
     is_black, luminance, suggested_exposure,
 };
 pub use exr_layers::write_exr_with_layers;
+pub use fallible::allocation_is_fallible;
 pub use hscene_ir::IntegratorKind;
 pub use image::Image;
 pub use integrator::{Integrator, MAX_PATH_LENGTH, PathTracer, Whitted};
@@ -81,7 +83,7 @@ pub use scene::{Nearest, PreparedLight, PreparedObject, PreparedScene, T_MIN};
 pub use space_domain::PreparedSpace;
 pub use space_walk::Traced;
 pub use trace_stats::TraceStats;
-pub use unfinished::remove_unfinished_outputs;
+pub use unfinished::{remove_unfinished_outputs, try_remove_unfinished_outputs};
 pub use video::{VideoFormat, VideoWriter, check_video, ffmpeg_available};
 
 /// Most samples per pixel a render accepts.
@@ -591,12 +593,12 @@ fn render_in_pool(
     // memory refuses the render with an error instead of aborting in it.
     let count = region.width as usize * region.height as usize;
     let mut pixels: Vec<[f32; 3]> = Vec::new();
-    pixels
-        .try_reserve_exact(count)
-        .map_err(|_| RenderError::OutOfMemory {
+    fallible::fallibly(|| pixels.try_reserve_exact(count)).map_err(|_| {
+        RenderError::OutOfMemory {
             what: "the image",
             bytes: count.saturating_mul(std::mem::size_of::<[f32; 3]>()),
-        })?;
+        }
+    })?;
     pixels.resize(count, [0.0; 3]);
     let (failed, traced) = pixels
         .par_chunks_mut(region.width as usize)

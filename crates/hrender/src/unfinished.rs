@@ -68,6 +68,23 @@ pub fn remove_unfinished_outputs() {
     std::mem::forget(LIVE.remove_all());
 }
 
+/// [`remove_unfinished_outputs`] for a process that is out of memory and
+/// about to exit: it does nothing when the list is locked (the allocation
+/// that failed may be the one adding to it, on this very thread, and
+/// waiting would never end). Returns whether the cleanup ran.
+pub fn try_remove_unfinished_outputs() -> bool {
+    let mut list = match LIVE.0.try_lock() {
+        Ok(list) => list,
+        Err(std::sync::TryLockError::Poisoned(e)) => e.into_inner(),
+        Err(std::sync::TryLockError::WouldBlock) => return false,
+    };
+    for path in list.drain(..) {
+        let _ = std::fs::remove_file(path);
+    }
+    std::mem::forget(list);
+    true
+}
+
 /// A listed temporary file; dropping it takes it off the list.
 pub(crate) struct Registered<'r> {
     registry: &'r Registry,
