@@ -244,7 +244,8 @@ fn decode(body: &[u8]) -> Incoming {
             );
         }
     }
-    match serde_json::from_value::<Message>(value.clone()) {
+    // Consumed, not cloned: a document's text is most of a message.
+    match serde_json::from_value::<Message>(value) {
         Ok(message) => Incoming::Message(message),
         Err(e) => invalid(
             id.as_ref(),
