@@ -68,15 +68,17 @@ pub fn run(args: &ExportArgs, color: ColorChoice) -> ExitCode {
             return fail(e);
         }
     }
-    let source = match crate::read_scene(&args.scene, ReportFormat::Short) {
+    let source = match crate::input::read_scene_reported(&args.scene, ReportFormat::Short) {
         Ok(s) => s,
         Err(message) => {
             eprint!("{message}");
             return ExitCode::from(EXIT_USAGE_OR_IO);
         }
     };
-    let compiled =
-        hscene_lang::compile_with(&source, &crate::compile_options(&args.scene, args.frame));
+    let compiled = hscene_lang::compile_with(
+        &source,
+        &crate::input::compile_options(&args.scene, args.frame),
+    );
     let stderr_tty = std::io::stderr().is_terminal();
     if !compiled.diagnostics.is_empty() {
         eprint!(

@@ -20,6 +20,14 @@ pub fn frame_path(output: &Path, frame: u32) -> PathBuf {
     output.with_file_name(name)
 }
 
+/// The message for a frame number past the animation's end.
+pub fn frame_past_end(k: u32, frames: u32) -> String {
+    format!(
+        "--frame {k} is past the scene's last frame ({} of `frames = {frames}`, counted from 0)",
+        frames.saturating_sub(1)
+    )
+}
+
 /// Builds frames 1.. of `scene` (frame 0 is `scene`, which the compiler
 /// checked) as the render loop will, and asks of each what the renderer asks before tracing (is every
 /// object and light representable from the eye). The first failure is

@@ -100,3 +100,17 @@ pub fn describe_failure(path: &Path, error: &InputError, format: Format) -> Stri
         Format::Human | Format::Short => format!("error: {message}\n"),
     }
 }
+
+/// Mesh, image and space files are found relative to the scene file.
+pub fn compile_options(scene: &Path, frame: u32) -> hscene_lang::Options {
+    hscene_lang::Options {
+        base_dir: scene.parent().map(Path::to_path_buf),
+        frame,
+        ..Default::default()
+    }
+}
+
+/// [`read_scene`], its failure already worded in `format`.
+pub fn read_scene_reported(path: &Path, format: Format) -> Result<String, String> {
+    read_scene(path).map_err(|e| describe_failure(path, &e, format))
+}

@@ -35,8 +35,9 @@ fn stamp(path: &Path) -> Option<(SystemTime, u64)> {
 impl SceneSource for SceneFile {
     fn load(&mut self) -> Result<Scene, String> {
         self.stamp = stamp(&self.path);
-        let source = crate::read_scene(&self.path, Format::Short)?;
-        let compiled = hscene_lang::compile_with(&source, &crate::compile_options(&self.path, 0));
+        let source = crate::input::read_scene_reported(&self.path, Format::Short)?;
+        let compiled =
+            hscene_lang::compile_with(&source, &crate::input::compile_options(&self.path, 0));
         let shown = || {
             report::format_diagnostics(
                 &self.path,
