@@ -8,8 +8,8 @@
 use std::path::Path;
 use std::sync::Arc;
 
-use hscene_lang::{Diagnostic, LineIndex, Severity};
-use miette::{GraphicalReportHandler, GraphicalTheme, NamedSource};
+use hscene_lang::{Diagnostic, IndexedSource, LineIndex, Severity};
+use miette::{GraphicalReportHandler, GraphicalTheme};
 
 use crate::cli::Format;
 
@@ -34,7 +34,7 @@ pub fn format_diagnostics(
     color: bool,
 ) -> String {
     let name = path.display().to_string();
-    let index = LineIndex::new(source);
+    let index = Arc::new(LineIndex::new(source));
     let shown = &diagnostics[..diagnostics.len().min(MAX_SHOWN)];
     let mut out = String::new();
     match format {
@@ -45,12 +45,12 @@ pub fn format_diagnostics(
                 GraphicalTheme::unicode_nocolor()
             };
             let handler = GraphicalReportHandler::new_themed(theme);
-            // One shared copy of the text for every report.
-            let text: Arc<str> = Arc::from(source);
+            // One index of the text for every report: miette finds each
+            // span's lines through it by binary search.
+            let indexed = IndexedSource::from_index(&name, Arc::clone(&index));
             for d in shown {
                 if fits_graphical(&index, d) {
-                    let report = miette::Report::new(d.clone())
-                        .with_source_code(NamedSource::new(&name, Arc::clone(&text)));
+                    let report = miette::Report::new(d.clone()).with_source_code(indexed.clone());
                     // Writing into a String cannot fail.
                     let _ = handler.render_report(&mut out, report.as_ref());
                 } else {

@@ -157,6 +157,26 @@ impl LineIndex {
         Span::new(start, start + trimmed)
     }
 
+    /// The indexed text.
+    pub fn text(&self) -> &str {
+        &self.source
+    }
+
+    /// The 0-based line holding byte `offset` (clamped to the source).
+    pub fn line_number(&self, offset: usize) -> usize {
+        let offset = offset.min(self.source.len());
+        self.line_starts.partition_point(|&s| s <= offset) - 1
+    }
+
+    /// The first byte of 0-based `line`; a line past the last gives the
+    /// text's end.
+    pub fn line_start(&self, line: usize) -> usize {
+        self.line_starts
+            .get(line)
+            .copied()
+            .unwrap_or(self.source.len())
+    }
+
     /// Number of lines (at least 1, even for an empty source).
     pub fn line_count(&self) -> usize {
         self.line_starts.len()
