@@ -20,6 +20,7 @@
 //! pest's tree to syntax nodes in `tree`, and the wording of parse errors in
 //! `messages`.
 
+mod direct;
 #[cfg(test)]
 mod fixtures;
 mod lexer;
@@ -67,12 +68,24 @@ impl Parsed {
 /// Statements that fail to parse are left out of the tree; sections keep
 /// their good statements.
 pub fn parse(source: &str) -> Parsed {
+    parse_with(source, true)
+}
+
+/// [`parse`] with every statement through pest, to test the direct parser
+/// against it.
+#[cfg(test)]
+fn parse_with_pest_only(source: &str) -> Parsed {
+    parse_with(source, false)
+}
+
+fn parse_with(source: &str, direct: bool) -> Parsed {
     let mut p = Scanner {
         src: source,
         pos: 0,
         diagnostics: DiagnosticList::default(),
         comment_unterminated: false,
         incomplete: false,
+        direct,
     };
     let file = p.file();
     let (mut diagnostics, omitted) = p.diagnostics.into_parts();
@@ -96,6 +109,9 @@ struct Scanner<'a> {
     comment_unterminated: bool,
     /// Set when text was skipped whole (see [`SourceFile::incomplete`]).
     incomplete: bool,
+    /// Whether well-formed statements take the direct parser
+    /// (`parser/direct.rs`); off only to test it against pest.
+    direct: bool,
 }
 
 #[cfg(test)]

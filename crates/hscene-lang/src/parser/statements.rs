@@ -33,6 +33,12 @@ impl Scanner<'_> {
             self.keep_broken(out, start, end);
             return;
         }
+        if self.direct
+            && let Some(statement) = self.direct_statement(start, end)
+        {
+            out.statements.push(statement);
+            return;
+        }
         // A statement missing its `;` at the end of a line is split there
         // and parsing goes on with the next line; each round consumes at
         // least one line, and pest stops at the first error, so this stays
