@@ -62,6 +62,9 @@ Objects {{
     back:   Plane (-0.4, -0.4, 0.75), (0.4, -0.4, 0.75), (0, 0.4, 0.75), #wall;
     hidden: Sphere (0, 0, -0.5), 0.05, #red;
     shade:  Sphere (0.3, 0.3, -0.3), 0.05, #red;
+    fan:    Polygon ((0.28, 0.96, 0), (-0.6, 0.8, 0), (-0.1, 0.36, 0.9275774900244185)), #sky, edges = 0.004, edge_material = #white;
+    gem:    IdealPentagon #blue, at = (0.2, 0.25, 0.7);
+    cage:   IdealOctahedron #white, wireframe = 0.003, at = (-0.25, 0.1, 0.6);
 }}
 "
     );
@@ -83,7 +86,7 @@ Transformations {{
         }
         for name in [
             "key", "fill", "shut", "ball", "drop", "quad", "tri", "stick", "spoke", "tube", "box",
-            "floor", "back", "hidden", "shade",
+            "floor", "back", "hidden", "shade", "fan", "gem", "cage",
         ] {
             for _ in 0..steps as usize {
                 s.push_str(&format!("    @{name}->Translate(%move);\n"));
