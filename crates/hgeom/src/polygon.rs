@@ -75,12 +75,6 @@ impl ConvexPolygon {
         if n < 3 {
             return Err(GeomError::TooFewVertices(n));
         }
-        let klein = vertices
-            .iter()
-            .map(|v| unit_time(v.to_hyperboloid()))
-            .sum::<DVec4>()
-            .truncate()
-            / n as f64;
         // An interior vertex lands exactly on the origin (x (+) -x = 0), which
         // measured better than the centroid; ideal polygons use the centroid.
         // A vertex anchor sees the other vertices from one end of the
@@ -105,7 +99,7 @@ impl ConvexPolygon {
                 // of user input: the anchor is any point near the polygon
                 // (it only sets the conditioning), and a centroid rounding
                 // onto the absolute falls back to building in place.
-                let first = Point::from_coords(klein_to_ball(klein)).ok()?;
+                let first = klein_centroid(&vertices)?;
                 Some(centred_anchor(&vertices, first))
             })
             .filter(|p| p.coords() != DVec3::ZERO);
@@ -312,11 +306,49 @@ fn unit_time(x: DVec4) -> DVec4 {
     x / x.w
 }
 
-/// Klein -> ball: `k / (1 + sqrt(1 - |k|^2))`. The centroid of points of
-/// the closed ball is in the closed ball, so `1 - |k|^2 >= 0` exactly; the
-/// `max` only absorbs rounding.
-fn klein_to_ball(k: DVec3) -> DVec3 {
-    k / (1.0 + (1.0 - k.length_squared()).max(0.0).sqrt())
+/// The ball point at the Klein centroid of `vertices`, with its gap
+/// computed without cancellation, or `None` when the centroid is on the
+/// absolute (all vertices one ideal point).
+///
+/// With `k_i` the Klein points and `g_i = 1 - |k_i|^2` their Klein gaps,
+/// the centroid `k = mean k_i` has
+/// `1 - |k|^2 = mean g_i + (1 / 2n^2) sum_ij |k_i - k_j|^2`
+/// (expand `|k|^2 = (1/n^2) sum_ij k_i.k_j` with
+/// `2 k_i.k_j = |k_i|^2 + |k_j|^2 - |k_i - k_j|^2`): two sums of
+/// non-negative terms. Formed as `1 - |k|^2` it cancels to nothing once the
+/// vertices are closer than `sqrt(eps)`: the ideal vertices of a polygon
+/// moved 25 from the origin are 1e-11 apart, their centroid rounded onto
+/// the absolute and the polygon was refused as collinear. A Klein point
+/// with gap `g` is the ball point `k / (1 + s)` with gap `2 s / (1 + s)`,
+/// `s = sqrt(g)`; for an interior vertex `k_i = 2 p / (2 - gap)` and
+/// `g_i = (gap / (2 - gap))^2`, both exact in the ball's gap.
+fn klein_centroid(vertices: &[Vertex]) -> Option<Point> {
+    let klein: Vec<(DVec3, f64)> = vertices
+        .iter()
+        .map(|v| match v {
+            Vertex::Interior(p) => {
+                let d = 2.0 - p.gap();
+                (2.0 * p.coords() / d, (p.gap() / d).powi(2))
+            }
+            Vertex::Ideal(i) => (i.coords().normalize_or_zero(), 0.0),
+        })
+        .collect();
+    let n = klein.len() as f64;
+    let centroid = klein.iter().map(|(k, _)| *k).sum::<DVec3>() / n;
+    let spread: f64 = klein
+        .iter()
+        .enumerate()
+        .flat_map(|(i, (a, _))| {
+            klein[i + 1..]
+                .iter()
+                .map(move |(b, _)| (*a - *b).length_squared())
+        })
+        .sum();
+    let gap = klein.iter().map(|(_, g)| g).sum::<f64>() / n + spread / (n * n);
+    let s = gap.sqrt();
+    let ball_gap = 2.0 * s / (1.0 + s);
+    let point = Point::new_unchecked(centroid / (1.0 + s), ball_gap);
+    (ball_gap > 0.0 && centroid.is_finite() && point.is_representable()).then_some(point)
 }
 
 /// Steps (at most this many) by which [`centred_anchor`] walks towards the
@@ -335,19 +367,16 @@ fn centred_anchor(vertices: &[Vertex], first: Point) -> Point {
     for _ in 0..ANCHOR_STEPS {
         let to_anchor = Isometry::transvection_from_origin(anchor);
         let back = to_anchor.inverse();
-        let klein = vertices
-            .iter()
-            .map(|v| unit_time(back.apply_vertex(v).to_hyperboloid()))
-            .sum::<DVec4>()
-            .truncate()
-            / vertices.len() as f64;
-        let step = klein_to_ball(klein);
+        let seen: Vec<Vertex> = vertices.iter().map(|v| back.apply_vertex(v)).collect();
+        let Some(step) = klein_centroid(&seen) else {
+            break;
+        };
         // Within 0.5 of the anchor (ball radius tanh 0.25): centred enough.
-        if !(step.length() > 0.245) {
+        if !(step.coords().length() > 0.245) {
             break;
         }
-        match Point::from_coords(step) {
-            Ok(p) if to_anchor.apply(&p).gap() > 0.0 => anchor = to_anchor.apply(&p),
+        match to_anchor.apply(&step) {
+            p if p.gap() > 0.0 && p.is_representable() => anchor = p,
             _ => break,
         }
     }

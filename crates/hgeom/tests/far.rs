@@ -284,3 +284,37 @@ fn horosphere_far_ahead_and_moved_far_and_back() {
     // translation part, `eps / gap ~ 4e-6` radians seen from the origin.
     assert!(worst < 1e-5, "{worst:e}");
 }
+
+/// Ideal polygons moved 20, 25 and 30 from the origin, in many directions:
+/// their ideal vertices land 1e-8 to 1e-13 apart in ball coordinates, yet
+/// each builds (no false "collinear" or "not convex") and keeps its plane
+/// through its vertices.
+#[test]
+fn ideal_polygons_moved_far_still_build() {
+    let mut rng = hscene_test_support::SplitMix64::new(30);
+    let mut failures = Vec::new();
+    for n in 3..=6 {
+        let ideal: Vec<Vertex> = (0..n)
+            .map(|k| {
+                let a = std::f64::consts::TAU * k as f64 / n as f64 + 0.3;
+                Vertex::Ideal(
+                    IdealPoint::from_direction(DVec3::new(a.cos(), a.sin(), 0.2)).unwrap(),
+                )
+            })
+            .collect();
+        for d in [20.0, 25.0, 30.0] {
+            for _ in 0..8 {
+                let iso = Isometry::transvection_from_origin(at(rng.direction(), d));
+                let moved: Vec<Vertex> = ideal.iter().map(|v| iso.apply_vertex(v)).collect();
+                if let Err(e) = ConvexPolygon::new(moved) {
+                    failures.push(format!("{n}-gon at {d}: {e}"));
+                }
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} refused: {failures:#?}",
+        failures.len()
+    );
+}
