@@ -14,7 +14,7 @@ use crate::exit::{EXIT_SCENE_ERRORS, EXIT_USAGE_OR_IO};
 use crate::report;
 
 fn fail(message: impl std::fmt::Display) -> ExitCode {
-    eprintln!("error: {message}");
+    diagln!("error: {message}");
     ExitCode::from(EXIT_USAGE_OR_IO)
 }
 
@@ -45,10 +45,6 @@ fn output_paths(output: &Path, format: Format) -> Vec<PathBuf> {
 }
 
 pub fn run(args: &ExportArgs, color: ColorChoice) -> ExitCode {
-    let _ = ctrlc::set_handler(|| {
-        hrender::remove_unfinished_outputs();
-        std::process::exit(130);
-    });
     let options = match options(args) {
         Ok(o) => o,
         Err(e) => return fail(e),
@@ -71,7 +67,7 @@ pub fn run(args: &ExportArgs, color: ColorChoice) -> ExitCode {
     let source = match crate::input::read_scene_reported(&args.scene, ReportFormat::Short) {
         Ok(s) => s,
         Err(message) => {
-            eprint!("{message}");
+            diag!("{message}");
             return ExitCode::from(EXIT_USAGE_OR_IO);
         }
     };
@@ -81,7 +77,7 @@ pub fn run(args: &ExportArgs, color: ColorChoice) -> ExitCode {
     );
     let stderr_tty = std::io::stderr().is_terminal();
     if !compiled.diagnostics.is_empty() {
-        eprint!(
+        diag!(
             "{}",
             report::format_diagnostics(
                 &args.scene,
@@ -145,7 +141,7 @@ pub fn run(args: &ExportArgs, color: ColorChoice) -> ExitCode {
         }
         bytes += file.bytes.len();
     }
-    eprintln!(
+    diagln!(
         "wrote {}: {} shells, {} triangles, volume {:.1} mm³ (sum of shells), {} parts cut below {} mm, {} bytes, {:.2} s",
         args.output.display(),
         model.shells.len(),

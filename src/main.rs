@@ -1,6 +1,33 @@
 //! The `hscene` command: glue between the scene language, the renderer and
 //! the terminal. Only this crate knows about clap, JSON and terminals.
 
+/// `eprint!` that never panics: a diagnostic that cannot be written
+/// (stderr on a full disk, past `ulimit -f`, closed) is dropped, and the
+/// work it was about goes on.
+macro_rules! diag {
+    ($($arg:tt)*) => {
+        $crate::exit::to_stderr(format_args!($($arg)*))
+    };
+}
+
+/// `eprintln!` that never panics (see [`diag!`]).
+macro_rules! diagln {
+    () => {
+        $crate::exit::to_stderr(format_args!("\n"))
+    };
+    ($($arg:tt)*) => {
+        $crate::exit::to_stderr(format_args!("{}\n", format_args!($($arg)*)))
+    };
+}
+
+/// `println!` that never panics: a report to a closed or full stdout is
+/// lost, not the work (`print_bytes` treats whole-text outputs).
+macro_rules! outln {
+    ($($arg:tt)*) => {
+        $crate::exit::to_stdout(format_args!("{}\n", format_args!($($arg)*)))
+    };
+}
+
 mod allocator;
 mod check_cmd;
 mod cli;
@@ -14,6 +41,7 @@ mod input;
 mod lsp;
 mod render_cmd;
 mod report;
+mod signals;
 mod view_cmd;
 
 use std::process::ExitCode;
@@ -27,6 +55,8 @@ static ALLOCATOR: allocator::Allocator = allocator::Allocator;
 
 fn main() -> ExitCode {
     ignore_file_size_signal();
+    // An interrupted command leaves no temporary file behind.
+    signals::clean_up_on_signals();
     let cli = Cli::parse();
     let color = cli.color;
     match cli.command {

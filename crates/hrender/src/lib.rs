@@ -24,6 +24,7 @@ mod error;
 mod exposure;
 mod exr_layers;
 mod fallible;
+mod ffmpeg;
 mod fog;
 mod horizon_bucket;
 mod horizon_fill;
@@ -84,7 +85,7 @@ pub use space_domain::PreparedSpace;
 pub use space_walk::Traced;
 pub use trace_stats::TraceStats;
 pub use unfinished::{remove_unfinished_outputs, try_remove_unfinished_outputs};
-pub use video::{VideoFormat, VideoWriter, check_video, ffmpeg_available};
+pub use video::{VideoFormat, VideoWriter, check_video, ffmpeg_available, played_fps};
 
 /// Most samples per pixel a render accepts.
 pub use hscene_ir::limits::MAX_SAMPLES;

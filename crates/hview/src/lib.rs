@@ -6,6 +6,22 @@
 //! (`headless`). The scene comes from the caller, which recompiles it when
 //! its file changes (`SceneSource`).
 
+/// `eprint!` that never panics: a message that cannot be written (stderr
+/// closed, on a full disk) is dropped and the viewer goes on.
+macro_rules! diag {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = std::io::stderr().lock().write_fmt(format_args!($($arg)*));
+    }};
+}
+
+/// `eprintln!` that never panics (see [`diag!`]).
+macro_rules! diagln {
+    ($($arg:tt)*) => {
+        diag!("{}\n", format_args!($($arg)*))
+    };
+}
+
 mod headless;
 mod keys;
 mod pose;
