@@ -1,0 +1,238 @@
+//! The fourth hostile-input pass (issue 49): videos cut short or
+//! interrupted, stderr that cannot be written, textures, the viewer's
+//! inputs, late frames, long animated translations, OBJ pairs.
+//!
+//! Tests that need ffmpeg say they were skipped without it, unless
+//! `HSCENE_REQUIRE_FFMPEG` is set (as in tests/video_cli.rs).
+
+use std::fs;
+use std::path::Path;
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+fn hscene() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_hscene"))
+}
+
+const SCENE: &str = "Globals { frames = 12; resolution = (64, 48); from = %eye; to = %centre; }\n\
+     BRDFs { paint: ambient = (0.3, 0.3, 0.3), diffuse = (0.9, 0.3, 0.1); }\n\
+     Points { eye = (0, 0, 0); centre = (0, 0, 0.5); above = (0, 0.3, 0.5); }\n\
+     Lights { (0.2, 0.4, 0.1), (1, 1, 1), (0.5, 0.5, 0.5); }\n\
+     Objects { Cube 0.4, #paint, at = %centre; }\n\
+     Transformations { vertical: hline (%centre, %above); @camera->Rotate(%vertical, 5.2), animate; }\n";
+
+fn ffmpeg() -> bool {
+    let found = ["ffmpeg", "ffprobe"].iter().all(|t| {
+        Command::new(t)
+            .arg("-version")
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .status()
+            .is_ok_and(|s| s.success())
+    });
+    if !found {
+        assert!(
+            std::env::var_os("HSCENE_REQUIRE_FFMPEG").is_none(),
+            "HSCENE_REQUIRE_FFMPEG is set but ffmpeg is missing"
+        );
+        eprintln!("skipped: ffmpeg is not installed");
+    }
+    found
+}
+
+/// The hidden files left in `dir` (temporary outputs).
+fn hidden(dir: &Path) -> Vec<String> {
+    fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with('.'))
+        .collect()
+}
+
+fn frames_in(path: &Path) -> String {
+    let out = Command::new("ffprobe")
+        .args(["-v", "error", "-count_packets", "-select_streams", "v:0"])
+        .args(["-show_entries", "stream=nb_read_packets", "-of", "csv=p=0"])
+        .arg(path)
+        .output()
+        .unwrap();
+    String::from_utf8_lossy(&out.stdout).trim().to_string()
+}
+
+/// Class 1: past `ulimit -f` ffmpeg fails writing its trailer yet exits
+/// 0; hscene verifies the file, exits 2 and keeps the earlier video.
+#[test]
+fn a_video_cut_short_by_the_file_size_limit_keeps_the_earlier_one() {
+    if !ffmpeg() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(dir.path().join("s.hsc"), SCENE).unwrap();
+    for name in ["film.mp4", "film.webm"] {
+        let status = hscene()
+            .args(["render", "s.hsc", "-o", name, "--resolution", "160x120"])
+            .current_dir(dir.path())
+            .stderr(Stdio::null())
+            .status()
+            .unwrap();
+        assert!(status.success(), "{name}");
+        let good = fs::read(dir.path().join(name)).unwrap();
+        assert_eq!(frames_in(&dir.path().join(name)), "12", "{name}");
+        // Half the video, in sh's blocks of 512 bytes: cut, not empty.
+        let blocks = good.len() / 1024;
+        assert!(blocks >= 1, "{name} is {} bytes", good.len());
+        let out = Command::new("sh")
+            .arg("-c")
+            .arg(format!(
+                "ulimit -f {blocks}; exec '{}' render s.hsc -o {name} --resolution 160x120",
+                env!("CARGO_BIN_EXE_hscene")
+            ))
+            .current_dir(dir.path())
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{name}: {stderr}");
+        assert!(stderr.contains("ffmpeg failed"), "{name}: {stderr}");
+        assert!(!stderr.contains(".hscene-"), "{name}: {stderr}");
+        assert_eq!(fs::read(dir.path().join(name)).unwrap(), good, "{name}");
+        assert!(hidden(dir.path()).is_empty(), "{:?}", hidden(dir.path()));
+    }
+}
+
+/// Class 10: a size the codec refuses is reported in ffmpeg's words
+/// before any frame is rendered.
+#[test]
+fn ffmpegs_own_reason_is_shown_before_the_first_frame() {
+    if !ffmpeg() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(dir.path().join("s.hsc"), SCENE).unwrap();
+    let out = hscene()
+        .args(["render", "s.hsc", "-o", "wide.mp4", "--resolution", "20000x2"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("invalid width"), "{stderr}");
+    assert!(!stderr.contains("Broken pipe"), "{stderr}");
+    assert!(!stderr.contains("frame 1/"), "{stderr}");
+    assert!(!dir.path().join("wide.mp4").exists());
+    assert!(hidden(dir.path()).is_empty(), "{:?}", hidden(dir.path()));
+}
+
+/// Class 10: a GIF cannot play faster than 50 frames a second, and says so.
+#[test]
+fn a_gif_says_the_rate_it_plays_at() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(dir.path().join("s.hsc"), SCENE.replace("frames = 12", "frames = 2")).unwrap();
+    let out = hscene()
+        .args(["render", "s.hsc", "-o", "f.gif", "--fps", "240"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    assert!(stderr.contains("plays at 50.000 frames a second"), "{stderr}");
+    let out = hscene()
+        .args(["render", "s.hsc", "-o", "f.apng", "--fps", "23.976"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    assert!(!stderr.contains("plays at"), "{stderr}");
+}
+
+/// Waits (without a deadline that decides the test) until `dir` holds a
+/// temporary output, or the process has ended.
+fn wait_for_part(dir: &Path, child: &mut std::process::Child) {
+    let start = Instant::now();
+    while hidden(dir).is_empty() && child.try_wait().unwrap().is_none() {
+        assert!(start.elapsed() < Duration::from_secs(120), "no temporary file");
+        std::thread::sleep(Duration::from_millis(10));
+    }
+}
+
+/// Class 2: every covered signal, landing while the first frame renders
+/// (ffmpeg started, its file not yet opened), stops and reaps ffmpeg,
+/// removes the temporary file and keeps the earlier video.
+#[test]
+fn a_signal_during_a_video_leaves_no_temporary_file() {
+    if !ffmpeg() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(dir.path().join("s.hsc"), SCENE).unwrap();
+    let video = dir.path().join("film.mp4");
+    fs::write(&video, b"earlier").unwrap();
+    for signal in [
+        libc::SIGINT,
+        libc::SIGTERM,
+        libc::SIGHUP,
+        libc::SIGALRM,
+        libc::SIGUSR1,
+        libc::SIGUSR2,
+        libc::SIGXCPU,
+    ] {
+        let mut child = hscene()
+            .args(["render", "s.hsc", "-o", "film.mp4"])
+            .args(["--resolution", "1600x1200", "--samples", "16"])
+            .current_dir(dir.path())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap();
+        wait_for_part(dir.path(), &mut child);
+        // SAFETY: a signal to our own child.
+        unsafe { libc::kill(child.id() as libc::pid_t, signal) };
+        let status = child.wait().unwrap();
+        assert_eq!(status.code(), Some(128 + signal), "signal {signal}");
+        // ffmpeg was reaped before hscene exited: nothing can recreate
+        // the file now.
+        assert!(hidden(dir.path()).is_empty(), "signal {signal}: {:?}", hidden(dir.path()));
+        assert_eq!(fs::read(&video).unwrap(), b"earlier");
+    }
+}
+
+/// Class 4: a warning that cannot be printed (stderr is /dev/full) does
+/// not stop `render`, `export` or `view`, nor make them panic.
+#[test]
+fn an_unwritable_stderr_loses_the_messages_not_the_work() {
+    let dir = tempfile::tempdir().unwrap();
+    // No lights: "the image is black" is printed after the render.
+    let dark = SCENE
+        .replace("frames = 12", "frames = 1")
+        .replace("Lights { (0.2, 0.4, 0.1), (1, 1, 1), (0.5, 0.5, 0.5); }\n", "");
+    fs::write(dir.path().join("s.hsc"), &dark).unwrap();
+    let full = || fs::OpenOptions::new().write(true).open("/dev/full").unwrap();
+    for args in [
+        vec!["render", "s.hsc", "-o", "dark.png"],
+        vec!["export", "s.hsc", "-o", "m.stl"],
+        vec!["view", "s.hsc", "--headless", "--frames", "1", "-o", "v.png"],
+    ] {
+        let status = hscene()
+            .args(&args)
+            .current_dir(dir.path())
+            .stdout(full())
+            .stderr(full())
+            .status()
+            .unwrap();
+        assert_eq!(status.code(), Some(0), "{args:?}");
+        let out = args[args.len() - 1];
+        assert!(dir.path().join(out).exists(), "{args:?}");
+    }
+    // And stderr in a file past `ulimit -f`.
+    let status = Command::new("sh")
+        .arg("-c")
+        .arg(format!(
+            "ulimit -f 0; exec '{}' render s.hsc -o again.png 2>>log",
+            env!("CARGO_BIN_EXE_hscene")
+        ))
+        .current_dir(dir.path())
+        .status()
+        .unwrap();
+    assert_eq!(status.code(), Some(2), "the image too is past the limit");
+    assert!(!dir.path().join("again.png").exists());
+    assert!(hidden(dir.path()).is_empty(), "{:?}", hidden(dir.path()));
+}
