@@ -14,7 +14,7 @@ use crate::cli::{
 };
 use crate::exit::{EXIT_SCENE_ERRORS, EXIT_USAGE_OR_IO};
 use crate::frames::{self, frame_past_end, frame_path};
-use crate::input::{compile_options, read_scene_reported as read_scene};
+use crate::input::{compile_options_sharing, read_scene_reported as read_scene};
 use crate::report;
 
 /// The relative standard error `--samples auto` stops at without `--noise`.
@@ -70,7 +70,11 @@ pub fn run(args: &RenderArgs, color: ColorChoice) -> ExitCode {
     }
     let stderr_tty = std::io::stderr().is_terminal();
     let first = args.frame.unwrap_or(0);
-    let compiled = hscene_lang::compile_with(&source, &compile_options(&args.scene, first));
+    // Every file the animation needs is read once, by this compile and the
+    // checks of every frame below, before the first frame is written.
+    let files = hscene_lang::FileCache::pinned();
+    let options = |k| compile_options_sharing(&args.scene, k, &files);
+    let compiled = hscene_lang::compile_with(&source, &options(first));
     let show = |diagnostics: &[hscene_lang::Diagnostic], omitted: hscene_lang::Omitted| {
         // The full report whether or not stderr is a terminal; colour only
         // on one.
@@ -115,7 +119,7 @@ pub fn run(args: &RenderArgs, color: ColorChoice) -> ExitCode {
     if let Err(code) = check_outputs(args, &outputs, &compiled.inputs) {
         return code;
     }
-    let compile = |k| hscene_lang::compile_with(&source, &compile_options(&args.scene, k));
+    let compile = |k| hscene_lang::compile_with(&source, &options(k));
     let show_errors =
         |diagnostics: &[hscene_lang::Diagnostic]| show(diagnostics, Default::default());
     // Every frame is checked before the first is written.

@@ -109,7 +109,14 @@ fn ffmpegs_own_reason_is_shown_before_the_first_frame() {
     let dir = tempfile::tempdir().unwrap();
     fs::write(dir.path().join("s.hsc"), SCENE).unwrap();
     let out = hscene()
-        .args(["render", "s.hsc", "-o", "wide.mp4", "--resolution", "20000x2"])
+        .args([
+            "render",
+            "s.hsc",
+            "-o",
+            "wide.mp4",
+            "--resolution",
+            "20000x2",
+        ])
         .current_dir(dir.path())
         .output()
         .unwrap();
@@ -126,7 +133,11 @@ fn ffmpegs_own_reason_is_shown_before_the_first_frame() {
 #[test]
 fn a_gif_says_the_rate_it_plays_at() {
     let dir = tempfile::tempdir().unwrap();
-    fs::write(dir.path().join("s.hsc"), SCENE.replace("frames = 12", "frames = 2")).unwrap();
+    fs::write(
+        dir.path().join("s.hsc"),
+        SCENE.replace("frames = 12", "frames = 2"),
+    )
+    .unwrap();
     let out = hscene()
         .args(["render", "s.hsc", "-o", "f.gif", "--fps", "240"])
         .current_dir(dir.path())
@@ -134,7 +145,10 @@ fn a_gif_says_the_rate_it_plays_at() {
         .unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success(), "{stderr}");
-    assert!(stderr.contains("plays at 50.000 frames a second"), "{stderr}");
+    assert!(
+        stderr.contains("plays at 50.000 frames a second"),
+        "{stderr}"
+    );
     let out = hscene()
         .args(["render", "s.hsc", "-o", "f.apng", "--fps", "23.976"])
         .current_dir(dir.path())
@@ -150,7 +164,10 @@ fn a_gif_says_the_rate_it_plays_at() {
 fn wait_for_part(dir: &Path, child: &mut std::process::Child) {
     let start = Instant::now();
     while hidden(dir).is_empty() && child.try_wait().unwrap().is_none() {
-        assert!(start.elapsed() < Duration::from_secs(120), "no temporary file");
+        assert!(
+            start.elapsed() < Duration::from_secs(120),
+            "no temporary file"
+        );
         std::thread::sleep(Duration::from_millis(10));
     }
 }
@@ -190,7 +207,11 @@ fn a_signal_during_a_video_leaves_no_temporary_file() {
         assert_eq!(status.code(), Some(128 + signal), "signal {signal}");
         // ffmpeg was reaped before hscene exited: nothing can recreate
         // the file now.
-        assert!(hidden(dir.path()).is_empty(), "signal {signal}: {:?}", hidden(dir.path()));
+        assert!(
+            hidden(dir.path()).is_empty(),
+            "signal {signal}: {:?}",
+            hidden(dir.path())
+        );
         assert_eq!(fs::read(&video).unwrap(), b"earlier");
     }
 }
@@ -201,15 +222,29 @@ fn a_signal_during_a_video_leaves_no_temporary_file() {
 fn an_unwritable_stderr_loses_the_messages_not_the_work() {
     let dir = tempfile::tempdir().unwrap();
     // No lights: "the image is black" is printed after the render.
-    let dark = SCENE
-        .replace("frames = 12", "frames = 1")
-        .replace("Lights { (0.2, 0.4, 0.1), (1, 1, 1), (0.5, 0.5, 0.5); }\n", "");
+    let dark = SCENE.replace("frames = 12", "frames = 1").replace(
+        "Lights { (0.2, 0.4, 0.1), (1, 1, 1), (0.5, 0.5, 0.5); }\n",
+        "",
+    );
     fs::write(dir.path().join("s.hsc"), &dark).unwrap();
-    let full = || fs::OpenOptions::new().write(true).open("/dev/full").unwrap();
+    let full = || {
+        fs::OpenOptions::new()
+            .write(true)
+            .open("/dev/full")
+            .unwrap()
+    };
     for args in [
         vec!["render", "s.hsc", "-o", "dark.png"],
         vec!["export", "s.hsc", "-o", "m.stl"],
-        vec!["view", "s.hsc", "--headless", "--frames", "1", "-o", "v.png"],
+        vec![
+            "view",
+            "s.hsc",
+            "--headless",
+            "--frames",
+            "1",
+            "-o",
+            "v.png",
+        ],
     ] {
         let status = hscene()
             .args(&args)
@@ -235,4 +270,49 @@ fn an_unwritable_stderr_loses_the_messages_not_the_work() {
     assert_eq!(status.code(), Some(2), "the image too is past the limit");
     assert!(!dir.path().join("again.png").exists());
     assert!(hidden(dir.path()).is_empty(), "{:?}", hidden(dir.path()));
+}
+
+/// Class 6: an animation whose points move is compiled per frame, yet
+/// reads its texture and mesh once, before the first frame is written: a
+/// texture deleted once frame 0 is on disk changes nothing.
+#[test]
+fn files_deleted_mid_animation_were_read_up_front() {
+    let dir = tempfile::tempdir().unwrap();
+    let texture = image::RgbImage::from_pixel(4, 4, image::Rgb([200, 100, 50]));
+    texture.save(dir.path().join("t.png")).unwrap();
+    fs::write(
+        dir.path().join("m.obj"),
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+    )
+    .unwrap();
+    let scene = "Globals { frames = 8; resolution = (640, 480); samples = 4; from = (0, 0, 0); to = (0, 0, 0.5); }\n\
+        BRDFs { m: ambient = (0.3, 0.3, 0.3), diffuse = (1, 1, 1), texture = \"t.png\"; }\n\
+        Points { p = (0, 0, 0.5); }\n\
+        Lights { (0.2, 0.4, 0.1), (1, 1, 1), (0.5, 0.5, 0.5); }\n\
+        Objects { Sphere %p, 0.2, #m; Mesh \"m.obj\", 0.2, #m, at = %p; }\n\
+        Transformations { ax: hline((0, 0, 0), (0.5, 0, 0)); %p->Translate(%ax, 0.3), animate; }\n";
+    fs::write(dir.path().join("s.hsc"), scene).unwrap();
+    let mut child = hscene()
+        .args(["render", "s.hsc", "-o", "f.png"])
+        .current_dir(dir.path())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let first = dir.path().join("f-0000.png");
+    let start = Instant::now();
+    while !first.exists() && child.try_wait().unwrap().is_none() {
+        assert!(start.elapsed() < Duration::from_secs(120), "no first frame");
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    fs::remove_file(dir.path().join("t.png")).unwrap();
+    fs::remove_file(dir.path().join("m.obj")).unwrap();
+    let out = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    for k in 0..8 {
+        assert!(
+            dir.path().join(format!("f-{k:04}.png")).exists(),
+            "frame {k}"
+        );
+    }
 }
