@@ -316,3 +316,32 @@ fn files_deleted_mid_animation_were_read_up_front() {
         );
     }
 }
+
+/// Class 7: `Translate(%ax, 24), animate` over 3 frames: the middle frame
+/// (12 along) is built as surely as the last (24), for an object and for
+/// the points it is built from.
+#[test]
+fn a_long_animated_translation_is_built_at_every_frame() {
+    let dir = tempfile::tempdir().unwrap();
+    for target in ["@s", "%p"] {
+        let scene = format!(
+            "Globals {{ frames = 3; resolution = (32, 24); from = (0, 0, 0); to = (0, 0, 0.5); }}\n\
+             BRDFs {{ paint: diffuse = (0.9, 0.3, 0.1); }}\n\
+             Points {{ p = (0, 0, 0.5); }}\n\
+             Lights {{ (0.2, 0.4, 0.1), (1, 1, 1), (0.5, 0.5, 0.5); }}\n\
+             Objects {{ s: Sphere %p, 0.2, #paint; }}\n\
+             Transformations {{ ax: hline((0, 0, 0), (0.5, 0, 0)); {target}->Translate(%ax, 24), animate; }}\n"
+        );
+        fs::write(dir.path().join("s.hsc"), scene).unwrap();
+        for k in ["0", "1", "2"] {
+            let out = hscene()
+                .args(["check", "s.hsc", "--format", "short", "--frame", k])
+                .current_dir(dir.path())
+                .output()
+                .unwrap();
+            let text = String::from_utf8_lossy(&out.stdout);
+            assert_eq!(out.status.code(), Some(0), "{target} frame {k}: {text}");
+            assert!(!text.contains("HSC0308"), "{target} frame {k}: {text}");
+        }
+    }
+}
