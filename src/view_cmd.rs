@@ -103,16 +103,10 @@ fn ms(d: std::time::Duration) -> f64 {
 
 fn headless(args: &ViewArgs, scene: &Scene, options: ViewOptions) -> ExitCode {
     let path = match &args.path {
-        Some(p) => match std::fs::read_to_string(p) {
-            Ok(text) => match FlightPath::parse(&text) {
-                Ok(path) => path,
-                Err(e) => {
-                    diagln!("error: {}: {e}", p.display());
-                    return ExitCode::from(EXIT_USAGE_OR_IO);
-                }
-            },
+        Some(p) => match FlightPath::read(p) {
+            Ok(path) => path,
             Err(e) => {
-                diagln!("error: cannot read {}: {e}", p.display());
+                diagln!("error: cannot fly {}: {e}", p.display());
                 return ExitCode::from(EXIT_USAGE_OR_IO);
             }
         },
@@ -136,13 +130,13 @@ fn headless(args: &ViewArgs, scene: &Scene, options: ViewOptions) -> ExitCode {
             return ExitCode::from(EXIT_USAGE_OR_IO);
         }
     };
-    let moves = report.to_coarse.len().max(1) as f64;
-    let coarse: f64 = report.to_coarse.iter().map(|d| ms(*d)).sum::<f64>() / moves;
-    let full: f64 = report.full_pass.iter().map(|d| ms(*d)).sum::<f64>() / moves;
-    let worst = report.to_coarse.iter().map(|d| ms(*d)).fold(0.0, f64::max);
+    let moves = report.moves.max(1) as f64;
+    let coarse = ms(report.to_coarse) / moves;
+    let full = ms(report.full_pass) / moves;
+    let worst = ms(report.worst_coarse);
     outln!(
         "{} moves at {}x{}: move to coarse frame {coarse:.1} ms (worst {worst:.1} ms); full-resolution pass {full:.1} ms; moving {:.1} fps (coarse + full pass), {:.1} fps (coarse only)",
-        report.to_coarse.len(),
+        report.moves,
         options.resolution.width(),
         options.resolution.height(),
         1000.0 / (coarse + full).max(1e-9),

@@ -345,3 +345,53 @@ fn a_long_animated_translation_is_built_at_every_frame() {
         }
     }
 }
+
+/// Class 5: `view --headless` reads only a bounded regular file as its
+/// path (a FIFO or a device is refused unopened), bounds `--frames`, and
+/// says a huge number shortly.
+#[test]
+fn the_viewers_inputs_are_bounded() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(
+        dir.path().join("s.hsc"),
+        SCENE.replace("frames = 12; resolution = (64, 48)", "resolution = (8, 6)"),
+    )
+    .unwrap();
+    let fifo = dir.path().join("fifo");
+    let c = std::ffi::CString::new(fifo.to_str().unwrap()).unwrap();
+    // SAFETY: a valid C string naming a new file in our directory.
+    assert_eq!(unsafe { libc::mkfifo(c.as_ptr(), 0o600) }, 0);
+    fs::write(dir.path().join("big.path"), "yaw 1\n".repeat(200_000)).unwrap();
+    fs::write(dir.path().join("many.path"), "yaw 1\n".repeat(10_001)).unwrap();
+    fs::write(dir.path().join("huge.path"), "forward 1e300\n").unwrap();
+    fs::write(dir.path().join("bom.path"), "\u{feff}yaw 1\n").unwrap();
+    let view = |extra: &[&str]| {
+        hscene()
+            .args(["view", "s.hsc", "--headless", "--samples", "1"])
+            .args(extra)
+            .current_dir(dir.path())
+            .output()
+            .unwrap()
+    };
+    for (extra, says) in [
+        (vec!["--path", "/dev/zero"], "not a regular file"),
+        (vec!["--path", "fifo"], "not a regular file"),
+        (vec!["--path", "big.path"], "more than the 1048576"),
+        (vec!["--path", "many.path"], "more than 10000 moves"),
+        (vec!["--path", "huge.path"], "1e300 is out of range"),
+        (vec!["--frames", "4294967295"], "--frames"),
+        (vec!["--frames", "10001"], "--frames"),
+    ] {
+        let out = view(&extra);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{extra:?}: {stderr}");
+        assert!(stderr.contains(says), "{extra:?}: {stderr}");
+    }
+    let out = view(&["--path", "bom.path"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(String::from_utf8_lossy(&out.stdout).starts_with("1 moves"));
+}

@@ -28,7 +28,9 @@ mod pose;
 mod progressive;
 mod window;
 
-pub use headless::{FlightPath, HeadlessReport, run_headless};
+pub use headless::{
+    FlightError, FlightPath, HeadlessReport, MAX_FLIGHT_FILE_BYTES, MAX_FLIGHT_MOVES, run_headless,
+};
 pub use keys::{Action, action_for_key};
 pub use pose::{Axis, Move, Pose, camera_lines};
 pub use progressive::{Frame, Progressive, ViewOptions};
