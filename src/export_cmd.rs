@@ -58,6 +58,9 @@ pub fn run(args: &ExportArgs, color: ColorChoice) -> ExitCode {
     } else {
         hrender::Overwrite::Writable
     };
+    if let Err(e) = format.check_name(&args.output) {
+        return fail(e);
+    }
     let paths = output_paths(&args.output, format);
     for path in &paths {
         if let Err(e) = hrender::check_output_file(path, &[&args.scene], overwrite) {
@@ -134,13 +137,16 @@ pub fn run(args: &ExportArgs, color: ColorChoice) -> ExitCode {
         Ok(f) => f,
         Err(e) => return fail(e),
     };
-    let mut bytes = 0;
-    for (file, path) in files.iter().zip(&paths) {
-        if let Err(e) = hrender::write_bytes(path, &file.bytes) {
-            return fail(e);
-        }
-        bytes += file.bytes.len();
+    // An OBJ and its MTL are written together: both or neither.
+    let together: Vec<(&Path, &[u8])> = files
+        .iter()
+        .zip(&paths)
+        .map(|(file, path)| (path.as_path(), file.bytes.as_slice()))
+        .collect();
+    if let Err(e) = hrender::write_files_together(&together) {
+        return fail(e);
     }
+    let bytes: usize = files.iter().map(|f| f.bytes.len()).sum();
     diagln!(
         "wrote {}: {} shells, {} triangles, volume {:.1} mm³ (sum of shells), {} parts cut below {} mm, {} bytes, {:.2} s",
         args.output.display(),

@@ -395,3 +395,55 @@ fn the_viewers_inputs_are_bounded() {
     );
     assert!(String::from_utf8_lossy(&out.stdout).starts_with("1 moves"));
 }
+
+/// Class 8: a line break in an OBJ's name is refused before meshing (it
+/// would inject lines through `mtllib`), and an OBJ and its MTL are
+/// written together: when the OBJ cannot be written, the old MTL stays.
+#[test]
+fn an_obj_and_its_mtl_are_written_together_or_not_at_all() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(
+        dir.path().join("s.hsc"),
+        "BRDFs { red: diffuse = (0.8, 0.1, 0.1); }\n\
+         Objects { Sphere (0.2, 0.1, 0), 0.4, #red; Rod (-0.5, 0, 0), (0.5, 0.1, 0), 0.06, #red; }\n",
+    )
+    .unwrap();
+    let out = hscene()
+        .args(["export", "s.hsc", "-o", "a\nv 1 2 3\nb.obj"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("mtllib"), "{stderr}");
+    assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 1);
+    let status = hscene()
+        .args(["export", "s.hsc", "-o", "m.obj"])
+        .current_dir(dir.path())
+        .stderr(Stdio::null())
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let (obj, mtl) = (
+        fs::metadata(dir.path().join("m.obj")).unwrap().len(),
+        fs::metadata(dir.path().join("m.mtl")).unwrap().len(),
+    );
+    // Room for the MTL, not for the OBJ (sh's blocks are 512 bytes).
+    let blocks = mtl / 512 + 1;
+    assert!(blocks * 512 < obj, "{mtl} / {obj}");
+    fs::write(dir.path().join("m.obj"), b"old obj").unwrap();
+    fs::write(dir.path().join("m.mtl"), b"old mtl").unwrap();
+    let status = Command::new("sh")
+        .arg("-c")
+        .arg(format!(
+            "ulimit -f {blocks}; exec '{}' export s.hsc -o m.obj 2>/dev/null",
+            env!("CARGO_BIN_EXE_hscene")
+        ))
+        .current_dir(dir.path())
+        .status()
+        .unwrap();
+    assert_eq!(status.code(), Some(2));
+    assert_eq!(fs::read(dir.path().join("m.obj")).unwrap(), b"old obj");
+    assert_eq!(fs::read(dir.path().join("m.mtl")).unwrap(), b"old mtl");
+    assert!(hidden(dir.path()).is_empty(), "{:?}", hidden(dir.path()));
+}

@@ -75,7 +75,7 @@ pub use nets::{PixelNet, Sample, pixel_footprint};
 pub use noise::{ADAPTIVE_BATCH, Adaptive, PixelNoise};
 pub use output::{
     FileStamp, ImageFormat, PngLevel, SampleDepth, check_depth, output_target, replace_file,
-    write_atomically, write_bytes, write_image, write_image_with,
+    write_atomically, write_bytes, write_files_together, write_image, write_image_with,
 };
 pub use output_check::{MAX_FILE_NAME_BYTES, Overwrite, check_output, check_output_file};
 pub use ray_budget::{MAX_SECONDARY_RAYS, RayBudget};
