@@ -447,3 +447,34 @@ fn an_obj_and_its_mtl_are_written_together_or_not_at_all() {
     assert_eq!(fs::read(dir.path().join("m.mtl")).unwrap(), b"old mtl");
     assert!(hidden(dir.path()).is_empty(), "{:?}", hidden(dir.path()));
 }
+
+/// Class 10: `check --emit ir` carries the space, its domain and light
+/// reach (the default filled in), and the lens.
+#[test]
+fn the_ir_carries_space_domain_reach_and_lens() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = "Globals { space = seifert_weber; domain = 0.01, #paint; aperture = 0.05; focus = 0.4; }\n\
+        BRDFs { paint: diffuse = (0.9, 0.3, 0.1); }\n\
+        Lights { (0.2, 0.4, 0.1), (1, 1, 1), (0.5, 0.5, 0.5); }\n\
+        Objects { Sphere (0, 0, 0.3), 0.1, #paint; }\n";
+    fs::write(dir.path().join("s.hsc"), scene).unwrap();
+    let out = hscene()
+        .args(["check", "s.hsc", "--emit", "ir"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{text} {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let ir: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let s = &ir["settings"];
+    assert_eq!(s["aperture"], 0.05, "{s}");
+    assert_eq!(s["focus"], 0.4, "{s}");
+    assert_eq!(s["space"]["light_reach"], 2.5, "{s}");
+    assert_eq!(s["space"]["domain"]["width"], 0.01, "{s}");
+    assert_eq!(s["space"]["domain"]["material"], 1, "{s}");
+    assert!(s["space"]["name"].is_string(), "{s}");
+}
