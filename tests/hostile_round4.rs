@@ -478,3 +478,29 @@ fn the_ir_carries_space_domain_reach_and_lens() {
     assert_eq!(s["space"]["domain"]["material"], 1, "{s}");
     assert!(s["space"]["name"].is_string(), "{s}");
 }
+
+/// Class 10: with net 0, a `to` far from the eye still shows the whole
+/// `fov`: inside a sphere every pixel sees the sphere, none the red
+/// background past the window's edge.
+#[test]
+fn net_0_honours_fov_whatever_the_distance_to_to() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = "Globals { resolution = (32, 24); from = (0, 0, 0); to = (0, 0, 0.999); fov = 120; background = (1, 0, 0); ambient = (1, 1, 1); }\n\
+        BRDFs { paint: ambient = (0, 0.6, 0), diffuse = (0, 0.3, 0); }\n\
+        Lights { (0.1, 0.1, 0.1), (1, 1, 1), (0, 0, 0); }\n\
+        Objects { Sphere (0, 0, 0), 3, #paint; }\n";
+    fs::write(dir.path().join("s.hsc"), scene).unwrap();
+    let out = hscene()
+        .args(["render", "s.hsc", "-o", "v.png"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let img = image::open(dir.path().join("v.png")).unwrap().to_rgb8();
+    let red = img.pixels().filter(|p| p.0[0] > p.0[1]).count();
+    assert_eq!(red, 0, "{red} pixels show the background");
+}
