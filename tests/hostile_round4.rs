@@ -504,3 +504,48 @@ fn net_0_honours_fov_whatever_the_distance_to_to() {
     let red = img.pixels().filter(|p| p.0[0] > p.0[1]).count();
     assert_eq!(red, 0, "{red} pixels show the background");
 }
+
+/// Class 7: in a closed space the viewer folds the eye into the domain
+/// after each move: 60 units of flight are all flown, none refused, and
+/// the eye ends near the origin.
+#[test]
+fn the_viewer_folds_the_eye_in_a_closed_space() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(
+        dir.path().join("s.hsc"),
+        "Globals { space = seifert_weber; resolution = (8, 6); from = (0, 0, 0); to = (0, 0, 0.3); }\n\
+         BRDFs { paint: diffuse = (0.9, 0.3, 0.1); }\n\
+         Lights { (0.2, 0.1, 0.1), (1, 1, 1), (0.5, 0.5, 0.5); }\n\
+         Objects { Sphere (0, 0, 0.3), 0.1, #paint; }\n",
+    )
+    .unwrap();
+    fs::write(dir.path().join("fly.path"), "forward 1\n".repeat(60)).unwrap();
+    let out = hscene()
+        .args([
+            "view",
+            "s.hsc",
+            "--headless",
+            "--path",
+            "fly.path",
+            "--samples",
+            "1",
+        ])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(stdout.starts_with("60 moves"), "{stdout}");
+    assert!(!stdout.contains("refused"), "{stdout}");
+    let from = stdout.lines().find(|l| l.starts_with("from = (")).unwrap();
+    let coords: Vec<f64> = from["from = (".len()..from.len() - 2]
+        .split(", ")
+        .map(|c| c.parse().unwrap())
+        .collect();
+    let norm = coords.iter().map(|c| c * c).sum::<f64>().sqrt();
+    assert!(norm < 0.9, "the eye is at {from}");
+}

@@ -224,11 +224,12 @@ pub fn run_headless(
         (Duration::ZERO, Duration::ZERO, Duration::ZERO);
     let (mut moves, mut refused) = (0, 0);
     let err = |e: hrender::RenderError| e.to_string();
+    let space = scene.settings.space.as_ref().and_then(|s| s.build().ok());
     for m in path.moves() {
         let start = Instant::now();
         moves += 1;
         match pose.moved(m) {
-            Some(p) => pose = p,
+            Some(p) => pose = space.as_ref().map_or(p, |q| p.folded(q)),
             None => refused += 1,
         }
         scene.camera = pose.camera().ok_or("the camera left f64's range")?;

@@ -112,9 +112,17 @@ impl App<'_> {
         if self.pending.is_empty() {
             return;
         }
+        // In a quotient space the eye is folded back into the domain after
+        // each move (`Pose::folded`), so flying never leaves f64's range.
+        let space = self
+            .scene
+            .settings
+            .space
+            .as_ref()
+            .and_then(|s| s.build().ok());
         for m in std::mem::take(&mut self.pending) {
             match self.pose.moved(m) {
-                Some(p) => self.pose = p,
+                Some(p) => self.pose = space.as_ref().map_or(p, |q| p.folded(q)),
                 None => diagln!("hscene view: that move would take the eye past what f64 holds"),
             }
         }
