@@ -89,10 +89,10 @@ fn main() -> ExitCode {
                 return ExitCode::FAILURE;
             }
         };
-        let n = report.to_coarse.len().max(1) as f64;
-        let coarse = report.to_coarse.iter().map(ms).sum::<f64>() / n;
-        let full = report.full_pass.iter().map(ms).sum::<f64>() / n;
-        let worst = report.to_coarse.iter().map(ms).fold(0.0, f64::max);
+        let n = report.moves.max(1) as f64;
+        let coarse = ms(&report.to_coarse) / n;
+        let full = ms(&report.full_pass) / n;
+        let worst = ms(&report.worst_coarse);
         println!(
             "| {path} | {:.1} | {:.1} | {coarse:.1} / {worst:.1} ms | {:.0} ms |",
             1000.0 / coarse.max(1e-9),

@@ -69,7 +69,7 @@ pub fn run(args: &CheckArgs, color: ColorChoice) -> ExitCode {
             color.enabled(diag_tty),
         );
         if emit_ir {
-            eprint!("{text}");
+            diag!("{text}");
             // A scene with errors has no IR (`compiled.scene` is `None`).
             if let Some(scene) = &compiled.scene
                 && emit::write_scene_json(&mut out, path, scene).is_err()
@@ -96,6 +96,6 @@ fn report_failure(out: &mut impl Write, format: Format, emit_ir: bool, message: 
     if format == Format::Json && !emit_ir {
         let _ = out.write_all(message.as_bytes());
     } else {
-        eprint!("{message}");
+        diag!("{message}");
     }
 }

@@ -99,8 +99,9 @@ pub struct ViewArgs {
     /// `--frames` moves), let the last view converge, print the times.
     #[arg(long)]
     pub headless: bool,
-    /// Moves of the default headless flight.
-    #[arg(long, default_value_t = 24, requires = "headless")]
+    /// Moves of the default headless flight (at most 10,000).
+    #[arg(long, default_value_t = 24, requires = "headless",
+          value_parser = clap::value_parser!(u32).range(0..=i64::from(hview::MAX_FLIGHT_MOVES)))]
     pub frames: u32,
     /// A flight path for `--headless`: one move a line, `forward 0.05`,
     /// `yaw 2`, ... (README, "View").

@@ -108,6 +108,17 @@ fn header(path: &Path, scene: &Scene) -> Value {
                 "color": rgb(f.color),
                 "distance": f.distance,
             })),
+            "aperture": s.lens.map_or(0.0, |l| l.aperture),
+            "focus": s.lens.map(|l| l.focus),
+            "space": s.space.as_ref().map(|sp| json!({
+                "name": sp.kind.to_string(),
+                "pairings": sp.pairings.as_ref().map(|p| p.len()),
+                "domain": sp.domain.map(|d| json!({
+                    "width": d.width,
+                    "material": d.material.index() + 1,
+                })),
+                "light_reach": sp.light_reach,
+            })),
         },
         "frame": scene.frame,
         "camera": camera(&scene.camera),

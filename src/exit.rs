@@ -18,3 +18,16 @@ pub fn print_bytes(bytes: &[u8]) -> ExitCode {
         Err(_) => ExitCode::from(EXIT_USAGE_OR_IO),
     }
 }
+
+/// Writes a diagnostic to stderr, ignoring a failure: `diag!` panics
+/// when stderr cannot be written (`2>/dev/full`, `ulimit -f` with stderr
+/// in a file), which would end a render for the sake of a warning.
+pub fn to_stderr(args: std::fmt::Arguments) {
+    let _ = std::io::stderr().lock().write_fmt(args);
+}
+
+/// Writes a line of a command's report to stdout, ignoring a failure (as
+/// [`to_stderr`] does).
+pub fn to_stdout(args: std::fmt::Arguments) {
+    let _ = std::io::stdout().lock().write_fmt(args);
+}

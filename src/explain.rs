@@ -91,7 +91,7 @@ pub fn run(code: &str) -> ExitCode {
             crate::exit::print_bytes(text.as_bytes())
         }
         _ => {
-            eprintln!(
+            diagln!(
                 "error: no diagnostic code `{code}`; the codes are listed in docs/diagnostics.md"
             );
             ExitCode::from(crate::exit::EXIT_USAGE_OR_IO)

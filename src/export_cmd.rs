@@ -14,7 +14,7 @@ use crate::exit::{EXIT_SCENE_ERRORS, EXIT_USAGE_OR_IO};
 use crate::report;
 
 fn fail(message: impl std::fmt::Display) -> ExitCode {
-    eprintln!("error: {message}");
+    diagln!("error: {message}");
     ExitCode::from(EXIT_USAGE_OR_IO)
 }
 
@@ -45,10 +45,6 @@ fn output_paths(output: &Path, format: Format) -> Vec<PathBuf> {
 }
 
 pub fn run(args: &ExportArgs, color: ColorChoice) -> ExitCode {
-    let _ = ctrlc::set_handler(|| {
-        hrender::remove_unfinished_outputs();
-        std::process::exit(130);
-    });
     let options = match options(args) {
         Ok(o) => o,
         Err(e) => return fail(e),
@@ -62,6 +58,9 @@ pub fn run(args: &ExportArgs, color: ColorChoice) -> ExitCode {
     } else {
         hrender::Overwrite::Writable
     };
+    if let Err(e) = format.check_name(&args.output) {
+        return fail(e);
+    }
     let paths = output_paths(&args.output, format);
     for path in &paths {
         if let Err(e) = hrender::check_output_file(path, &[&args.scene], overwrite) {
@@ -71,7 +70,7 @@ pub fn run(args: &ExportArgs, color: ColorChoice) -> ExitCode {
     let source = match crate::input::read_scene_reported(&args.scene, ReportFormat::Short) {
         Ok(s) => s,
         Err(message) => {
-            eprint!("{message}");
+            diag!("{message}");
             return ExitCode::from(EXIT_USAGE_OR_IO);
         }
     };
@@ -81,7 +80,7 @@ pub fn run(args: &ExportArgs, color: ColorChoice) -> ExitCode {
     );
     let stderr_tty = std::io::stderr().is_terminal();
     if !compiled.diagnostics.is_empty() {
-        eprint!(
+        diag!(
             "{}",
             report::format_diagnostics(
                 &args.scene,
@@ -138,14 +137,17 @@ pub fn run(args: &ExportArgs, color: ColorChoice) -> ExitCode {
         Ok(f) => f,
         Err(e) => return fail(e),
     };
-    let mut bytes = 0;
-    for (file, path) in files.iter().zip(&paths) {
-        if let Err(e) = hrender::write_bytes(path, &file.bytes) {
-            return fail(e);
-        }
-        bytes += file.bytes.len();
+    // An OBJ and its MTL are written together: both or neither.
+    let together: Vec<(&Path, &[u8])> = files
+        .iter()
+        .zip(&paths)
+        .map(|(file, path)| (path.as_path(), file.bytes.as_slice()))
+        .collect();
+    if let Err(e) = hrender::write_files_together(&together) {
+        return fail(e);
     }
-    eprintln!(
+    let bytes: usize = files.iter().map(|f| f.bytes.len()).sum();
+    diagln!(
         "wrote {}: {} shells, {} triangles, volume {:.1} mm³ (sum of shells), {} parts cut below {} mm, {} bytes, {:.2} s",
         args.output.display(),
         model.shells.len(),

@@ -29,11 +29,6 @@ enum Outcome {
 }
 
 pub fn run(args: &FmtArgs, color: ColorChoice) -> ExitCode {
-    // An interrupted run leaves no temporary file behind.
-    let _ = ctrlc::set_handler(|| {
-        hrender::remove_unfinished_outputs();
-        std::process::exit(130);
-    });
     let mut worst = ExitCode::SUCCESS;
     let mut unformatted = false;
     let mut errors = false;
@@ -70,7 +65,7 @@ fn formatted(name: &Path, source: &str, color: ColorChoice) -> Option<String> {
         Err(hscene_lang::FormatError::Syntax(diagnostics)) => {
             let tty = std::io::stderr().is_terminal();
             let format = if tty { Format::Human } else { Format::Short };
-            eprint!(
+            diag!(
                 "{}",
                 report::format_diagnostics(
                     name,
@@ -81,7 +76,7 @@ fn formatted(name: &Path, source: &str, color: ColorChoice) -> Option<String> {
                     color.enabled(tty)
                 )
             );
-            eprintln!(
+            diagln!(
                 "error: {} not formatted: it has syntax errors",
                 name.display()
             );
@@ -95,7 +90,7 @@ fn stdin(name: &Path, check: bool, color: ColorChoice) -> Outcome {
     let source = match crate::input::read_scene(Path::new("-")) {
         Ok(s) => s,
         Err(e) => {
-            eprintln!("error: cannot read stdin: {e}");
+            diagln!("error: cannot read stdin: {e}");
             return Outcome::Io;
         }
     };
@@ -121,7 +116,7 @@ fn stdin(name: &Path, check: bool, color: ColorChoice) -> Outcome {
 
 fn file(path: &Path, args: &FmtArgs, color: ColorChoice) -> Outcome {
     let fail = |e: &dyn std::fmt::Display| {
-        eprintln!("error: {e}");
+        diagln!("error: {e}");
         Outcome::Io
     };
     // Links are followed: the file they name is formatted, the link stays.
@@ -151,7 +146,7 @@ fn file(path: &Path, args: &FmtArgs, color: ColorChoice) -> Outcome {
         return Outcome::Unchanged;
     }
     if args.check {
-        println!("would reformat {}", path.display());
+        outln!("would reformat {}", path.display());
         return Outcome::Changed;
     }
     let overwrite = if args.force {
@@ -171,7 +166,7 @@ fn file(path: &Path, args: &FmtArgs, color: ColorChoice) -> Outcome {
     });
     match written {
         Ok(()) => {
-            eprintln!("formatted {}", path.display());
+            diagln!("formatted {}", path.display());
             Outcome::Changed
         }
         Err(e) => fail(&e),

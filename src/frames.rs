@@ -46,9 +46,7 @@ pub fn check_every_frame(
                 Some(s) => hscene_ir::first_too_far(&s)
                     .map(|what| format!("{what} is too far from the eye")),
                 None => {
-                    eprintln!(
-                        "error: frame {k} of the animation has errors (nothing was written):"
-                    );
+                    diagln!("error: frame {k} of the animation has errors (nothing was written):");
                     show(&compiled.diagnostics);
                     return Err(ExitCode::from(EXIT_SCENE_ERRORS));
                 }
@@ -63,7 +61,7 @@ pub fn check_every_frame(
         let Some(failure) = failure else {
             continue;
         };
-        eprintln!("error: frame {k} of the animation cannot be rendered (nothing was written):");
+        diagln!("error: frame {k} of the animation cannot be rendered (nothing was written):");
         let compiled = compile(k);
         let errors: Vec<_> = compiled
             .diagnostics
@@ -71,7 +69,7 @@ pub fn check_every_frame(
             .filter(hscene_lang::Diagnostic::is_error)
             .collect();
         if errors.is_empty() {
-            eprintln!("error: {failure}");
+            diagln!("error: {failure}");
         } else {
             show(&errors);
         }

@@ -110,6 +110,20 @@ pub fn compile_options(scene: &Path, frame: u32) -> hscene_lang::Options {
     }
 }
 
+/// [`compile_options`] sharing `files`: an animation's frames compile
+/// against the meshes and images read for its first, which a pinned cache
+/// keeps whatever happens to the files meanwhile.
+pub fn compile_options_sharing(
+    scene: &Path,
+    frame: u32,
+    files: &hscene_lang::FileCache,
+) -> hscene_lang::Options {
+    hscene_lang::Options {
+        files: files.clone(),
+        ..compile_options(scene, frame)
+    }
+}
+
 /// [`read_scene`], its failure already worded in `format`.
 pub fn read_scene_reported(path: &Path, format: Format) -> Result<String, String> {
     read_scene(path).map_err(|e| describe_failure(path, &e, format))

@@ -1,6 +1,10 @@
 //! The `hscene` command: glue between the scene language, the renderer and
 //! the terminal. Only this crate knows about clap, JSON and terminals.
 
+// Declared first, so that every module sees its macros.
+#[macro_use]
+mod print;
+
 mod allocator;
 mod check_cmd;
 mod cli;
@@ -14,6 +18,7 @@ mod input;
 mod lsp;
 mod render_cmd;
 mod report;
+mod signals;
 mod view_cmd;
 
 use std::process::ExitCode;
@@ -27,6 +32,8 @@ static ALLOCATOR: allocator::Allocator = allocator::Allocator;
 
 fn main() -> ExitCode {
     ignore_file_size_signal();
+    // An interrupted command leaves no temporary file behind.
+    signals::clean_up_on_signals();
     let cli = Cli::parse();
     let color = cli.color;
     match cli.command {

@@ -14,7 +14,7 @@ use crate::cli::{
 };
 use crate::exit::{EXIT_SCENE_ERRORS, EXIT_USAGE_OR_IO};
 use crate::frames::{self, frame_past_end, frame_path};
-use crate::input::{compile_options, read_scene_reported as read_scene};
+use crate::input::{compile_options_sharing, read_scene_reported as read_scene};
 use crate::report;
 
 /// The relative standard error `--samples auto` stops at without `--noise`.
@@ -44,7 +44,7 @@ fn check_outputs(
             })
         };
         if let Err(e) = checked {
-            eprintln!("error: {e}");
+            diagln!("error: {e}");
             return Err(ExitCode::from(EXIT_USAGE_OR_IO));
         }
     }
@@ -52,21 +52,16 @@ fn check_outputs(
 }
 
 pub fn run(args: &RenderArgs, color: ColorChoice) -> ExitCode {
-    // An interrupted render leaves no temporary file behind.
-    let _ = ctrlc::set_handler(|| {
-        hrender::remove_unfinished_outputs();
-        std::process::exit(130);
-    });
     let source = match read_scene(&args.scene, Format::Short) {
         Ok(s) => s,
         Err(message) => {
-            eprint!("{message}");
+            diag!("{message}");
             return ExitCode::from(EXIT_USAGE_OR_IO);
         }
     };
     let video = hrender::VideoFormat::from_path(&args.output);
     if let Err(message) = check_arguments(args, video.is_some()) {
-        eprintln!("error: {message}");
+        diagln!("error: {message}");
         return ExitCode::from(EXIT_USAGE_OR_IO);
     }
     // Refuse a bad output before spending time on the scene.
@@ -75,11 +70,15 @@ pub fn run(args: &RenderArgs, color: ColorChoice) -> ExitCode {
     }
     let stderr_tty = std::io::stderr().is_terminal();
     let first = args.frame.unwrap_or(0);
-    let compiled = hscene_lang::compile_with(&source, &compile_options(&args.scene, first));
+    // Every file the animation needs is read once, by this compile and the
+    // checks of every frame below, before the first frame is written.
+    let files = hscene_lang::FileCache::pinned();
+    let options = |k| compile_options_sharing(&args.scene, k, &files);
+    let compiled = hscene_lang::compile_with(&source, &options(first));
     let show = |diagnostics: &[hscene_lang::Diagnostic], omitted: hscene_lang::Omitted| {
         // The full report whether or not stderr is a terminal; colour only
         // on one.
-        eprint!(
+        diag!(
             "{}",
             report::format_diagnostics(
                 &args.scene,
@@ -101,7 +100,7 @@ pub fn run(args: &RenderArgs, color: ColorChoice) -> ExitCode {
         && scene.settings.integrator != hrender::IntegratorKind::Path
         && scene.reflects_ambient()
     {
-        eprintln!(
+        diagln!(
             "warning: `ambient` has no meaning under the path integrator, which computes the light bouncing between surfaces instead; surfaces lit only by ambient light come out darker [HSC1010]"
         );
     }
@@ -109,7 +108,7 @@ pub fn run(args: &RenderArgs, color: ColorChoice) -> ExitCode {
     if let Some(k) = args.frame
         && k >= frames
     {
-        eprintln!("error: {}", frame_past_end(k, frames));
+        diagln!("error: {}", frame_past_end(k, frames));
         return ExitCode::from(EXIT_USAGE_OR_IO);
     }
     let outputs: Vec<_> = if args.frame.is_none() && frames > 1 && video.is_none() {
@@ -120,7 +119,7 @@ pub fn run(args: &RenderArgs, color: ColorChoice) -> ExitCode {
     if let Err(code) = check_outputs(args, &outputs, &compiled.inputs) {
         return code;
     }
-    let compile = |k| hscene_lang::compile_with(&source, &compile_options(&args.scene, k));
+    let compile = |k| hscene_lang::compile_with(&source, &options(k));
     let show_errors =
         |diagnostics: &[hscene_lang::Diagnostic]| show(diagnostics, Default::default());
     // Every frame is checked before the first is written.
@@ -141,11 +140,14 @@ pub fn run(args: &RenderArgs, color: ColorChoice) -> ExitCode {
             &auto_ev,
         );
     }
+    if let Some(format) = video {
+        note_played_rate(format, args.fps);
+    }
     let mut writer = match video {
         Some(_) => match open_video(args, &scene) {
             Ok(w) => Some(w),
             Err(e) => {
-                eprintln!("error: {e}");
+                diagln!("error: {e}");
                 return ExitCode::from(EXIT_USAGE_OR_IO);
             }
         },
@@ -166,7 +168,7 @@ pub fn run(args: &RenderArgs, color: ColorChoice) -> ExitCode {
     if let Some(w) = writer
         && let Err(e) = w.finish()
     {
-        eprintln!("error: {e}");
+        diagln!("error: {e}");
         return ExitCode::from(EXIT_USAGE_OR_IO);
     }
     ExitCode::SUCCESS
@@ -199,6 +201,27 @@ fn check_arguments(args: &RenderArgs, video: bool) -> Result<(), &'static str> {
         }
     }
     Ok(())
+}
+
+/// Says when the format cannot hold the rate asked for (GIF's delays are
+/// whole hundredths of a second, at least 2), with the rate it plays at.
+fn note_played_rate(format: hrender::VideoFormat, fps: f64) {
+    let played = hrender::played_fps(format, fps);
+    if (played - fps).abs() > 1e-6 * fps {
+        diagln!(
+            "warning: {} plays at {played:.3} frames a second, not {fps}{}",
+            match format {
+                hrender::VideoFormat::Gif => "a GIF",
+                hrender::VideoFormat::Apng => "an APNG",
+                _ => "the video",
+            },
+            match format {
+                hrender::VideoFormat::Gif =>
+                    " (its frame delays are whole hundredths of a second, at least 2); use .apng, .mp4 or .webm for this rate",
+                _ => " (its frame delays are exact to a thousandth of a frame a second)",
+            }
+        );
+    }
 }
 
 /// The video writer for the whole animation, at the picture's size.
@@ -255,7 +278,7 @@ fn render_every_frame(
                     &later
                 }
                 Err(e) => {
-                    eprintln!("error: {e}");
+                    diagln!("error: {e}");
                     return ExitCode::from(EXIT_SCENE_ERRORS);
                 }
             }
@@ -267,7 +290,7 @@ fn render_every_frame(
                     &later
                 }
                 None => {
-                    eprintln!("error: frame {k} of the animation has errors:");
+                    diagln!("error: frame {k} of the animation has errors:");
                     show_errors(&compiled.diagnostics);
                     return ExitCode::from(EXIT_SCENE_ERRORS);
                 }
@@ -279,7 +302,7 @@ fn render_every_frame(
             None => FrameSink::File(&path),
         };
         if stderr_tty && frames > 1 {
-            eprintln!("frame {}/{frames}", k + 1);
+            diagln!("frame {}/{frames}", k + 1);
         }
         let code = render_frame(args, frame_scene, sink, stderr_tty, auto_ev);
         if code != ExitCode::SUCCESS {
@@ -300,7 +323,7 @@ fn warn_if_almost_black(
     auto: bool,
 ) {
     if !image.pixels().is_empty() && hrender::is_black(image) {
-        eprintln!(
+        diagln!(
             "warning: the image is black: no pixel receives any light; add a light (`Lights`), an `ambient` colour to the materials (with the global `ambient`), `emission`, or a `background`"
         );
         return;
@@ -314,7 +337,7 @@ fn warn_if_almost_black(
         ),
         _ => String::new(),
     };
-    eprintln!(
+    diagln!(
         "warning: the image is almost black: even its bright pixels stay below level 16 of 255{hint}"
     );
 }
@@ -378,7 +401,7 @@ fn render_frame(
     let rendered = match hrender::render_region(scene, &options, args.crop, &progress) {
         Ok(r) => r,
         Err(e) => {
-            eprintln!("error: {e}");
+            diagln!("error: {e}");
             // Geometry the renderer cannot represent is a problem of the scene.
             let scene_problem = matches!(
                 e,
@@ -401,14 +424,14 @@ fn render_frame(
     let output = match write_frame(args, scene, &options, &rendered, sink) {
         Ok(output) => output,
         Err(e) => {
-            eprintln!("error: {e}");
+            diagln!("error: {e}");
             return ExitCode::from(EXIT_USAGE_OR_IO);
         }
     };
     report_frame(args, scene, &rendered);
     if stderr_tty {
         let secs = started.elapsed().as_secs_f64();
-        eprintln!(
+        diagln!(
             "{} {} ({}x{}, {} rays in {secs:.2} s)",
             if args.output == output && hrender::VideoFormat::from_path(&output).is_some() {
                 "added a frame to"
@@ -509,14 +532,14 @@ fn write_frame(
 /// exposure chosen, the noise left, a black picture, cut ray trees.
 fn report_frame(args: &RenderArgs, scene: &hscene_ir::Scene, rendered: &hrender::Rendered) {
     if rendered.stats.numeric_failures > 0 {
-        eprintln!(
+        diagln!(
             "warning: {} pixel(s) had a numeric failure; their failing rays show the background",
             rendered.stats.numeric_failures
         );
     }
     let auto = rendered.auto_exposure;
     if let Some(ev) = auto {
-        eprintln!("note: --exposure auto chose {ev:.2} stops");
+        diagln!("note: --exposure auto chose {ev:.2} stops");
     }
     let path =
         args.integrator.unwrap_or(scene.settings.integrator) == hrender::IntegratorKind::Path;
@@ -524,11 +547,11 @@ fn report_frame(args: &RenderArgs, scene: &hscene_ir::Scene, rendered: &hrender:
         let pixels = u64::from(rendered.image.width()) * u64::from(rendered.image.height());
         let per_pixel = rendered.stats.samples as f64 / pixels.max(1) as f64;
         match rendered.stats.noise {
-            Some(e) => eprintln!(
+            Some(e) => diagln!(
                 "note: noise left {:.2} % (mean relative standard error of the lit pixels), {per_pixel:.1} samples per pixel",
                 100.0 * e
             ),
-            None => eprintln!(
+            None => diagln!(
                 "note: {per_pixel:.1} samples per pixel; the noise left cannot be estimated from one sample (use --samples 16 or more, or --samples auto)"
             ),
         }
@@ -544,7 +567,7 @@ fn report_frame(args: &RenderArgs, scene: &hscene_ir::Scene, rendered: &hrender:
         auto.is_some(),
     );
     if rendered.stats.cut_trees > 0 {
-        eprintln!(
+        diagln!(
             "warning: {} primary ray(s) reached the budget of {} reflected and transmitted rays; their ray trees were cut short",
             rendered.stats.cut_trees,
             hrender::MAX_SECONDARY_RAYS

@@ -51,7 +51,7 @@ impl SceneSource for SceneFile {
         match compiled.scene {
             Some(scene) => {
                 if !compiled.diagnostics.is_empty() {
-                    eprint!("{}", shown());
+                    diag!("{}", shown());
                 }
                 Ok(scene)
             }
@@ -103,16 +103,10 @@ fn ms(d: std::time::Duration) -> f64 {
 
 fn headless(args: &ViewArgs, scene: &Scene, options: ViewOptions) -> ExitCode {
     let path = match &args.path {
-        Some(p) => match std::fs::read_to_string(p) {
-            Ok(text) => match FlightPath::parse(&text) {
-                Ok(path) => path,
-                Err(e) => {
-                    eprintln!("error: {}: {e}", p.display());
-                    return ExitCode::from(EXIT_USAGE_OR_IO);
-                }
-            },
+        Some(p) => match FlightPath::read(p) {
+            Ok(path) => path,
             Err(e) => {
-                eprintln!("error: cannot read {}: {e}", p.display());
+                diagln!("error: cannot fly {}: {e}", p.display());
                 return ExitCode::from(EXIT_USAGE_OR_IO);
             }
         },
@@ -126,41 +120,41 @@ fn headless(args: &ViewArgs, scene: &Scene, options: ViewOptions) -> ExitCode {
             hrender::Overwrite::Writable,
         )
     {
-        eprintln!("error: {e}");
+        diagln!("error: {e}");
         return ExitCode::from(EXIT_USAGE_OR_IO);
     }
     let report = match hview::run_headless(scene, options, &path) {
         Ok(r) => r,
         Err(e) => {
-            eprintln!("error: {e}");
+            diagln!("error: {e}");
             return ExitCode::from(EXIT_USAGE_OR_IO);
         }
     };
-    let moves = report.to_coarse.len().max(1) as f64;
-    let coarse: f64 = report.to_coarse.iter().map(|d| ms(*d)).sum::<f64>() / moves;
-    let full: f64 = report.full_pass.iter().map(|d| ms(*d)).sum::<f64>() / moves;
-    let worst = report.to_coarse.iter().map(|d| ms(*d)).fold(0.0, f64::max);
-    println!(
+    let moves = report.moves.max(1) as f64;
+    let coarse = ms(report.to_coarse) / moves;
+    let full = ms(report.full_pass) / moves;
+    let worst = ms(report.worst_coarse);
+    outln!(
         "{} moves at {}x{}: move to coarse frame {coarse:.1} ms (worst {worst:.1} ms); full-resolution pass {full:.1} ms; moving {:.1} fps (coarse + full pass), {:.1} fps (coarse only)",
-        report.to_coarse.len(),
+        report.moves,
         options.resolution.width(),
         options.resolution.height(),
         1000.0 / (coarse + full).max(1e-9),
         1000.0 / coarse.max(1e-9),
     );
-    println!(
+    outln!(
         "still: converged to {} samples per pixel in {:.1} ms",
         report.last.samples,
         ms(report.converge)
     );
     if report.refused > 0 {
-        println!(
+        outln!(
             "{} moves refused (the eye would leave f64's range)",
             report.refused
         );
     }
     if let Some(c) = report.pose.camera() {
-        print!("{}", hview::camera_lines(&c));
+        crate::exit::to_stdout(format_args!("{}", hview::camera_lines(&c)));
     }
     if let Some(out) = &args.output {
         let pixels: Vec<[f32; 3]> = report
@@ -174,7 +168,7 @@ fn headless(args: &ViewArgs, scene: &Scene, options: ViewOptions) -> ExitCode {
             .collect();
         let image = hrender::Image::from_pixels(report.last.width, report.last.height, pixels);
         if let Err(e) = hrender::write_image(&image, out, hrender::SampleDepth::Eight) {
-            eprintln!("error: {e}");
+            diagln!("error: {e}");
             return ExitCode::from(EXIT_USAGE_OR_IO);
         }
     }
@@ -194,11 +188,11 @@ fn srgb_to_linear(v: u8) -> f32 {
 
 pub fn run(args: &ViewArgs, color: ColorChoice) -> ExitCode {
     if !(args.step > 0.0 && args.step <= 10.0) {
-        eprintln!("error: --step must be a distance above 0 and at most 10");
+        diagln!("error: --step must be a distance above 0 and at most 10");
         return ExitCode::from(EXIT_USAGE_OR_IO);
     }
     if !(args.exposure.is_finite() && args.exposure.abs() <= 64.0) {
-        eprintln!("error: --exposure must be from -64 to 64 stops");
+        diagln!("error: --exposure must be from -64 to 64 stops");
         return ExitCode::from(EXIT_USAGE_OR_IO);
     }
     let mut source = SceneFile {
@@ -209,14 +203,14 @@ pub fn run(args: &ViewArgs, color: ColorChoice) -> ExitCode {
     let scene = match source.load() {
         Ok(s) => s,
         Err(message) => {
-            eprint!("{message}");
+            diag!("{message}");
             return ExitCode::from(EXIT_SCENE_ERRORS);
         }
     };
     let options = match options(args, &scene) {
         Ok(o) => o,
         Err(e) => {
-            eprintln!("error: {e}");
+            diagln!("error: {e}");
             return ExitCode::from(EXIT_USAGE_OR_IO);
         }
     };
@@ -227,7 +221,7 @@ pub fn run(args: &ViewArgs, color: ColorChoice) -> ExitCode {
     match hview::run_window(&mut source, options, args.step, save_dir) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e}");
+            diagln!("error: {e}");
             ExitCode::from(EXIT_USAGE_OR_IO)
         }
     }

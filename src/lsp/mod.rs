@@ -56,7 +56,7 @@ pub fn run() -> ExitCode {
                     &format!("{reason}; the server stops"),
                 ));
             }
-            eprintln!("hscene lsp: {e}");
+            diagln!("hscene lsp: {e}");
             ExitCode::from(crate::exit::EXIT_USAGE_OR_IO)
         }
     }
@@ -149,7 +149,7 @@ fn serve<R: BufRead, W: Write>(t: &mut Transport<R, W>) -> Result<ExitCode, Wire
                     Ok(Some(uri)) => publish(t, &docs, &uri)?,
                     Ok(None) => {}
                     Err(_) => {
-                        eprintln!("hscene lsp: a notification failed (a bug); the server goes on")
+                        diagln!("hscene lsp: a notification failed (a bug); the server goes on")
                     }
                 }
             }

@@ -5,6 +5,12 @@ use thiserror::Error;
 /// An export that cannot be made.
 #[derive(Debug, Error)]
 pub enum ExportError {
+    /// An OBJ's MTL name goes into its `mtllib` line, which has no
+    /// escapes: a line break there would start lines of its own.
+    #[error(
+        "an OBJ's name is written into its `mtllib` line: `{0}` has a line break or control character; rename the output"
+    )]
+    UnwritableName(String),
     /// A length that is not `100mm`, `10cm`, `0.1m`, `4in` or a number.
     #[error("`{0}` is not a length: write e.g. 100mm, 10cm, 0.1m or 4in (positive)")]
     BadLength(String),

@@ -58,12 +58,29 @@ impl Format {
         matches!(self, Format::Stl | Format::ThreeMf)
     }
 
+    /// Refuses an output name the format cannot write: for OBJ, one with a
+    /// control character (a line break would inject lines into the OBJ
+    /// through its `mtllib` line). Checked before meshing and again when
+    /// encoding.
+    pub fn check_name(self, path: &Path) -> Result<(), ExportError> {
+        if self == Format::Obj {
+            let name = path.file_name().map(|n| n.to_string_lossy().into_owned());
+            if let Some(name) = name
+                && name.chars().any(char::is_control)
+            {
+                return Err(ExportError::UnwritableName(name.escape_debug().to_string()));
+            }
+        }
+        Ok(())
+    }
+
     /// The files of `model` in this format for an output called `path`:
     /// the file itself, and for OBJ its MTL beside it (same stem).
     ///
     /// Errors: [`ExportError::OpenMesh`] for an open shell in STL or 3MF;
     /// [`ExportError::Package`] if the 3MF zip cannot be assembled.
     pub fn encode(self, model: &Model, path: &Path) -> Result<Vec<OutputFile>, ExportError> {
+        self.check_name(path)?;
         if self.needs_closed_shells()
             && let Some(shell) = model.shells.iter().find(|s| !s.closed)
         {

@@ -118,8 +118,27 @@ pub enum RenderError {
     Threads(String),
     /// A video format that needs ffmpeg, without ffmpeg on the `PATH`.
     #[error(
-        "writing {0} needs ffmpeg on the PATH (Debian and Ubuntu: apt-get install ffmpeg; \
+        "writing {0} needs ffmpeg and ffprobe on the PATH (Debian and Ubuntu: apt-get install ffmpeg; \
          macOS: brew install ffmpeg); .gif and .apng need nothing"
     )]
     NoFfmpeg(PathBuf),
+    /// ffmpeg refused the video or failed writing it, in its own words.
+    #[error("cannot write {path}: ffmpeg failed: {reason}")]
+    Ffmpeg {
+        /// The output asked for.
+        path: PathBuf,
+        /// ffmpeg's reason, on one line.
+        reason: String,
+    },
+    /// ffmpeg reported success but its file holds fewer frames than were
+    /// sent (a write cut short: a full disk, `ulimit -f`).
+    #[error("cannot write {path}: the video ffmpeg wrote holds {counted} of its {frames} frames")]
+    VideoIncomplete {
+        /// The output asked for.
+        path: PathBuf,
+        /// Frames sent.
+        frames: u32,
+        /// Frames ffprobe counts in the file.
+        counted: u64,
+    },
 }

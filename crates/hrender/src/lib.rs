@@ -24,6 +24,7 @@ mod error;
 mod exposure;
 mod exr_layers;
 mod fallible;
+mod ffmpeg;
 mod fog;
 mod horizon_bucket;
 mod horizon_fill;
@@ -74,7 +75,7 @@ pub use nets::{PixelNet, Sample, pixel_footprint};
 pub use noise::{ADAPTIVE_BATCH, Adaptive, PixelNoise};
 pub use output::{
     FileStamp, ImageFormat, PngLevel, SampleDepth, check_depth, output_target, replace_file,
-    write_atomically, write_bytes, write_image, write_image_with,
+    write_atomically, write_bytes, write_files_together, write_image, write_image_with,
 };
 pub use output_check::{MAX_FILE_NAME_BYTES, Overwrite, check_output, check_output_file};
 pub use ray_budget::{MAX_SECONDARY_RAYS, RayBudget};
@@ -84,7 +85,7 @@ pub use space_domain::PreparedSpace;
 pub use space_walk::Traced;
 pub use trace_stats::TraceStats;
 pub use unfinished::{remove_unfinished_outputs, try_remove_unfinished_outputs};
-pub use video::{VideoFormat, VideoWriter, check_video, ffmpeg_available};
+pub use video::{VideoFormat, VideoWriter, check_video, ffmpeg_available, played_fps};
 
 /// Most samples per pixel a render accepts.
 pub use hscene_ir::limits::MAX_SAMPLES;
@@ -455,6 +456,29 @@ fn view_window(
     })
 }
 
+/// Where net 0's view plane lies for a picture whose `fov` is given: its
+/// rays depend only on the window's shape over the plane's distance, so
+/// the plane is brought nearer the eye (never farther than `to`) until the
+/// whole window lies inside the ball and every pixel shows the angle `fov`
+/// asks for. At `to`'s own distance a far `to` put the window's edges past
+/// the absolute, and those pixels showed the background: a narrower view
+/// than asked, without a word. The other nets' planes are fixed by `to`
+/// (the language refuses a `fov` they cannot show, HSC0403).
+fn view_plane_distance(scene: &Scene, net: Net, resolution: Resolution, to: f64) -> f64 {
+    let Some(fov) = scene.settings.fov else {
+        return to;
+    };
+    if net != Net::Euclidean || !(fov > 0.0 && fov < 180.0) {
+        return to;
+    }
+    let t = (fov.to_radians() / 2.0).tan();
+    let aspect = f64::from(resolution.height()) / f64::from(resolution.width());
+    // The window's corner lies at `f sqrt(1 + t^2 (1 + aspect^2))`; a tenth
+    // short of the absolute keeps it clear of rounding.
+    let inside = 0.9 / (1.0 + t * t * (1.0 + aspect * aspect)).sqrt();
+    to.min(inside)
+}
+
 /// A picture's set-up: its net and window, size, and the scene prepared
 /// for it.
 struct Picture {
@@ -474,8 +498,9 @@ fn picture(scene: &Scene, options: &RenderOptions) -> Result<Picture, RenderErro
     let net = options.net.unwrap_or(scene.settings.net);
     let resolution = options.resolution.unwrap_or(scene.settings.resolution);
     let (width, height) = (resolution.width(), resolution.height());
-    let window = view_window(scene, net, resolution, camera.view_distance)?;
-    let pixel_net = PixelNet::new(net, window, camera.view_distance);
+    let plane = view_plane_distance(scene, net, resolution, camera.view_distance);
+    let window = view_window(scene, net, resolution, plane)?;
+    let pixel_net = PixelNet::new(net, window, plane);
     let prepared = match pixel_footprint(&pixel_net, width, height) {
         Some(footprint) => PreparedScene::for_picture(scene, &camera, &footprint)?,
         None => PreparedScene::for_camera(scene, &camera)?,

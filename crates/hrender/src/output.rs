@@ -219,6 +219,32 @@ pub fn write_atomically(
     replace_file(path, None, write)
 }
 
+/// Writes several files as one: each into its temporary file, all
+/// flushed and synced, and only then each renamed over its output, so a
+/// failure while writing any (a full disk, `ulimit -f`) leaves every one
+/// of them as it was (an OBJ and its MTL).
+pub fn write_files_together(files: &[(&Path, &[u8])]) -> Result<(), RenderError> {
+    let mut started = Vec::with_capacity(files.len());
+    for (path, bytes) in files {
+        let io = |source| RenderError::Io {
+            path: path.to_path_buf(),
+            source,
+        };
+        let output = StartedOutput::new(path)?;
+        {
+            let mut out = BufWriter::new(output.tmp.as_file());
+            out.write_all(bytes).map_err(io)?;
+            out.flush().map_err(io)?;
+        }
+        output.tmp.as_file().sync_all().map_err(io)?;
+        started.push(output);
+    }
+    for output in started {
+        output.finish(None)?;
+    }
+    Ok(())
+}
+
 /// What a file looked like when it was read: replacing it is refused if it
 /// changed since (`hscene fmt`, while an editor saves the same file).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

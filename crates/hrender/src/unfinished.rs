@@ -59,14 +59,98 @@ impl Registry {
 }
 
 /// Removes every temporary file of an output being written. Meant for a
-/// signal handler (run on an ordinary thread, as the `ctrlc` crate does),
+/// signal handler (run on an ordinary thread, as the binary's `signals` module does),
 /// followed by the process's exit; an output renamed into place is final
 /// and no longer listed.
 pub fn remove_unfinished_outputs() {
-    // The process exits next: the list stays locked for good, so no new
-    // temporary file can be created between this cleanup and the exit.
+    // Encoders first: ffmpeg opens its output only when the first frame
+    // arrives, so one still running could create the file after it was
+    // removed. Both lists stay locked for good: the process exits next,
+    // and nothing new can start between this cleanup and the exit.
+    std::mem::forget(stop_children());
     std::mem::forget(LIVE.remove_all());
 }
+
+/// The encoders (ffmpeg) now running, by process id.
+static CHILDREN: Mutex<Vec<u32>> = Mutex::new(Vec::new());
+
+fn children() -> MutexGuard<'static, Vec<u32>> {
+    CHILDREN.lock().unwrap_or_else(PoisonError::into_inner)
+}
+
+/// Kills every listed encoder and waits for it to end.
+fn stop_children() -> MutexGuard<'static, Vec<u32>> {
+    let mut list = children();
+    for pid in list.drain(..) {
+        kill_and_reap(pid);
+    }
+    list
+}
+
+#[cfg(unix)]
+fn kill_and_reap(pid: u32) {
+    let Ok(pid) = libc::pid_t::try_from(pid) else {
+        return;
+    };
+    // SAFETY: the process is our own child, listed until it has been
+    // waited for (`ListedChild::done` runs before it is reaped), so the id
+    // cannot name another process.
+    unsafe {
+        libc::kill(pid, libc::SIGKILL);
+        libc::waitpid(pid, std::ptr::null_mut(), 0);
+    }
+}
+
+#[cfg(not(unix))]
+fn kill_and_reap(_: u32) {}
+
+/// Spawns `cmd` and lists the child with the list locked, so that a
+/// cleanup either runs before the child exists or stops it.
+pub(crate) fn spawn_listed(
+    cmd: &mut std::process::Command,
+) -> std::io::Result<(std::process::Child, ListedChild)> {
+    let mut list = children();
+    let child = cmd.spawn()?;
+    list.push(child.id());
+    let pid = child.id();
+    Ok((child, ListedChild { pid: Some(pid) }))
+}
+
+/// A listed child process.
+pub(crate) struct ListedChild {
+    pid: Option<u32>,
+}
+
+impl ListedChild {
+    /// Waits until the child has ended, without reaping it, and takes it
+    /// off the list: from then on a cleanup leaves it (and its id) alone,
+    /// and the owner reaps it.
+    pub(crate) fn done(&mut self) {
+        let Some(pid) = self.pid.take() else {
+            return;
+        };
+        wait_without_reaping(pid);
+        children().retain(|p| *p != pid);
+    }
+}
+
+#[cfg(unix)]
+fn wait_without_reaping(pid: u32) {
+    let id: libc::id_t = pid;
+    // SAFETY: a zeroed siginfo_t is a valid out-parameter; WNOWAIT leaves
+    // the child to be reaped by its `Child`.
+    unsafe {
+        let mut info: libc::siginfo_t = std::mem::zeroed();
+        while libc::waitid(libc::P_PID, id, &mut info, libc::WEXITED | libc::WNOWAIT) != 0 {
+            if std::io::Error::last_os_error().kind() != std::io::ErrorKind::Interrupted {
+                break;
+            }
+        }
+    }
+}
+
+#[cfg(not(unix))]
+fn wait_without_reaping(_: u32) {}
 
 /// [`remove_unfinished_outputs`] for a process that is out of memory and
 /// about to exit: it does nothing when the list is locked (the allocation
@@ -78,6 +162,12 @@ pub fn try_remove_unfinished_outputs() -> bool {
         Err(std::sync::TryLockError::Poisoned(e)) => e.into_inner(),
         Err(std::sync::TryLockError::WouldBlock) => return false,
     };
+    if let Ok(mut pids) = CHILDREN.try_lock() {
+        for pid in pids.drain(..) {
+            kill_and_reap(pid);
+        }
+        std::mem::forget(pids);
+    }
     for path in list.drain(..) {
         let _ = std::fs::remove_file(path);
     }

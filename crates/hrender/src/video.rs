@@ -14,10 +14,10 @@
 use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
-use std::process::{Child, ChildStdin, Command, Stdio};
 
 use crate::display::DisplayTransform;
 use crate::error::RenderError;
+use crate::ffmpeg::{self, Codec, Encoder};
 use crate::image::Image;
 use crate::output::StartedOutput;
 
@@ -53,14 +53,9 @@ impl VideoFormat {
     }
 }
 
-/// True if `ffmpeg` runs.
+/// True if `ffmpeg` and `ffprobe` (which verifies what ffmpeg wrote) run.
 pub fn ffmpeg_available() -> bool {
-    Command::new("ffmpeg")
-        .arg("-version")
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .status()
-        .is_ok_and(|s| s.success())
+    ffmpeg::available()
 }
 
 /// Checks what can be known before rendering: the format needs nothing
@@ -77,14 +72,16 @@ pub fn check_video(path: &Path) -> Result<VideoFormat, RenderError> {
 enum Sink {
     Gif(gif::Encoder<BufWriter<File>>),
     Apng(png::Writer<BufWriter<File>>),
-    Ffmpeg(Child, Option<ChildStdin>),
+    Ffmpeg(Encoder),
 }
 
 /// An animation being written (module docs).
 pub struct VideoWriter {
     path: PathBuf,
-    started: StartedOutput<'static>,
+    // Dropped before `started`: an encoder is stopped before its
+    // temporary file is removed, so it cannot create the file again.
     sink: Sink,
+    started: StartedOutput<'static>,
     width: u32,
     height: u32,
     frames: u32,
@@ -145,34 +142,20 @@ impl VideoWriter {
                 Sink::Apng(e.write_header().map_err(err)?)
             }
             VideoFormat::Mp4 | VideoFormat::Webm => {
-                let (codec, container) = if format == VideoFormat::Mp4 {
-                    (
-                        ["-c:v", "libx264", "-preset", "medium", "-crf", "18"],
-                        "mp4",
-                    )
+                let codec = if format == VideoFormat::Mp4 {
+                    Codec::H264
                 } else {
-                    (["-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "30"], "webm")
+                    Codec::Vp9
                 };
-                let mut child = Command::new("ffmpeg")
-                    .args(["-hide_banner", "-loglevel", "error", "-y", "-f", "rawvideo"])
-                    .args(["-pix_fmt", "rgb24", "-s", &format!("{width}x{height}")])
-                    .args(["-framerate", &format!("{fps}"), "-i", "-"])
-                    .args(codec)
-                    .args([
-                        "-pix_fmt",
-                        "yuv420p",
-                        "-vf",
-                        "pad=ceil(iw/2)*2:ceil(ih/2)*2",
-                    ])
-                    .args(["-f", container])
-                    .arg(started.tmp.path())
-                    .stdin(Stdio::piped())
-                    .stdout(Stdio::null())
-                    .stderr(Stdio::piped())
-                    .spawn()
-                    .map_err(|_| RenderError::NoFfmpeg(path.to_path_buf()))?;
-                let stdin = child.stdin.take();
-                Sink::Ffmpeg(child, stdin)
+                ffmpeg::trial_encode(path, codec, width, height, fps)?;
+                Sink::Ffmpeg(Encoder::start(
+                    path,
+                    started.tmp.path(),
+                    codec,
+                    width,
+                    height,
+                    fps,
+                )?)
             }
         };
         Ok(VideoWriter {
@@ -214,13 +197,7 @@ impl VideoWriter {
             Sink::Apng(w) => w
                 .write_image_data(&rgb)
                 .map_err(|e| encode(&path)(e.to_string()))?,
-            Sink::Ffmpeg(_, stdin) => {
-                let pipe = stdin
-                    .as_mut()
-                    .ok_or_else(|| encode(&path)("ffmpeg's input is closed".into()))?;
-                pipe.write_all(&rgb)
-                    .map_err(|e| encode(&path)(format!("ffmpeg stopped reading frames: {e}")))?;
-            }
+            Sink::Ffmpeg(encoder) => encoder.send(&path, &rgb)?,
         }
         self.frames += 1;
         Ok(())
@@ -232,6 +209,7 @@ impl VideoWriter {
             path,
             started,
             sink,
+            frames,
             ..
         } = self;
         match sink {
@@ -242,31 +220,64 @@ impl VideoWriter {
             Sink::Apng(w) => {
                 w.finish().map_err(|e| encode(&path)(e.to_string()))?;
             }
-            Sink::Ffmpeg(child, stdin) => {
-                drop(stdin);
-                let out = child.wait_with_output().map_err(io(&path))?;
-                if !out.status.success() {
-                    let message = String::from_utf8_lossy(&out.stderr).trim().to_string();
-                    return Err(encode(&path)(format!("ffmpeg failed: {message}")));
-                }
-            }
+            Sink::Ffmpeg(encoder) => encoder.finish(&path, frames)?,
         }
         started.finish(None)
     }
 }
 
-/// APNG's frame delay as a fraction of a second: `1/fps` for whole rates,
-/// else hundredths.
+/// APNG's frame delay as a fraction of a second, `num/den` with both
+/// at most 65,535: `1/fps` to a thousandth of a frame a second, so 23.976
+/// (24000/1001) plays at 23.976 and not at the 25 of hundredths.
 fn frame_delay(fps: f64) -> (u16, u16) {
-    if fps.fract() == 0.0 && (1.0..=65535.0).contains(&fps) {
-        (1, fps as u16)
-    } else {
-        ((100.0 / fps).round().clamp(1.0, 65535.0) as u16, 100)
+    for num in [1000u16, 100, 10, 1] {
+        let den = (fps * f64::from(num)).round();
+        if (1.0..=65535.0).contains(&den) {
+            let (n, d) = (u32::from(num), den as u32);
+            let g = gcd(n, d);
+            return ((n / g) as u16, (d / g) as u16);
+        }
     }
+    (1, 65535)
+}
+
+fn gcd(a: u32, b: u32) -> u32 {
+    if b == 0 { a.max(1) } else { gcd(b, a % b) }
 }
 
 /// GIF's frame delay in hundredths of a second (at least 2: browsers
 /// play shorter delays at 10 frames a second).
 fn gif_delay(fps: f64) -> u16 {
     (100.0 / fps).round().clamp(2.0, 65535.0) as u16
+}
+
+/// The rate a video of `format` written at `fps` plays at: GIF's delays
+/// are whole hundredths of a second and at least 2 (so at most 50 frames
+/// a second, and 30 plays at 33.3), APNG's are exact to a thousandth of a
+/// frame a second, MP4 and WebM exact. The render says so when it is not
+/// the rate asked for.
+pub fn played_fps(format: VideoFormat, fps: f64) -> f64 {
+    match format {
+        VideoFormat::Gif => 100.0 / f64::from(gif_delay(fps)),
+        VideoFormat::Apng => {
+            let (num, den) = frame_delay(fps);
+            f64::from(den) / f64::from(num)
+        }
+        VideoFormat::Mp4 | VideoFormat::Webm => fps,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn played_rates_are_what_the_formats_hold() {
+        assert_eq!(played_fps(VideoFormat::Gif, 240.0), 50.0);
+        assert_eq!(played_fps(VideoFormat::Gif, 25.0), 25.0);
+        assert!((played_fps(VideoFormat::Apng, 23.976) - 23.976).abs() < 1e-9);
+        assert_eq!(played_fps(VideoFormat::Apng, 240.0), 240.0);
+        assert_eq!(played_fps(VideoFormat::Apng, 0.1), 0.1);
+        assert_eq!(frame_delay(24000.0 / 1001.0), (125, 2997));
+    }
 }

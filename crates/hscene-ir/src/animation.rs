@@ -10,7 +10,7 @@
 //! motions at that frame's time and applies them to it, exactly as the
 //! lowering of that frame alone would.
 
-use hgeom::{GeomError, HLine, Isometry, Point, Segment, Vertex};
+use hgeom::{GeomError, Isometry, Point, Segment};
 
 use crate::camera::Camera;
 use crate::object::Object;
@@ -58,6 +58,14 @@ impl Motion {
 
 /// The translation along `line` by `fraction` of its length: the whole
 /// translation (first point to second) at 1, the identity at 0.
+///
+/// Built as [`Isometry::translation`] builds the whole one: the start moved
+/// to the origin, the end to a point `w` at distance `d` from it, the
+/// transvection to the point at `fraction * d` along `w`'s diameter, and
+/// back. Every point involved lies between the origin and the whole
+/// translation's end, so whatever the whole one can build, every fraction
+/// of it can (points along the line's own parametrisation lay far outside
+/// for a line far from the origin: a translation of 24 was refused halfway).
 fn partial_translation(line: &Segment, fraction: f64) -> Result<Isometry, GeomError> {
     if fraction == 1.0 {
         return Isometry::translation(line);
@@ -65,12 +73,16 @@ fn partial_translation(line: &Segment, fraction: f64) -> Result<Isometry, GeomEr
     if fraction == 0.0 {
         return Ok(Isometry::IDENTITY);
     }
-    let (a, b) = (line.start(), line.end());
-    let geodesic = HLine::through(&Vertex::Interior(a), &Vertex::Interior(b))?;
-    let from = geodesic.foot_parameter(&a);
-    let to = geodesic.foot_parameter(&b);
-    let end = geodesic.point_at(from + fraction * (to - from))?;
-    Isometry::translation(&Segment::new(a, end)?)
+    let to_origin = Isometry::transvection_from_origin(line.start()).inverse();
+    let w = to_origin.apply(&line.end());
+    if w.coords() == hgeom::glam::DVec3::ZERO {
+        return Err(GeomError::Coincident);
+    }
+    let part = Point::at_distance_from_origin(w.coords(), fraction * w.distance_from_origin())?;
+    Ok(to_origin
+        .inverse()
+        .compose(&Isometry::transvection_from_origin(part))
+        .compose(&to_origin))
 }
 
 /// The composition of `motions` at `time`: the first applied first.
@@ -157,5 +169,41 @@ pub fn frame_time(frame: u32, frames: u32) -> f64 {
         f64::from(frame) / f64::from(frames - 1)
     } else {
         0.0
+    }
+}
+
+#[cfg(test)]
+mod partial_translation_tests {
+    use super::*;
+    use hgeom::glam::DVec3;
+
+    /// A translation of 24 along a line through the origin, and one along a
+    /// line 3 from the origin: every fraction is built, moves the start the
+    /// fraction of the way, and two fractions summing to one make the whole.
+    #[test]
+    fn long_translations_are_built_at_every_fraction() {
+        for (start, dir) in [
+            (Point::ORIGIN, DVec3::X),
+            (
+                Point::at_distance_from_origin(DVec3::Y, 3.0).unwrap(),
+                DVec3::new(1.0, 0.2, 0.0),
+            ),
+        ] {
+            let away = Isometry::transvection_from_origin(start);
+            let end = away.apply(&Point::at_distance_from_origin(dir, 24.0).unwrap());
+            let line = Segment::new(start, end).unwrap();
+            let whole = partial_translation(&line, 1.0).unwrap();
+            for t in [1.0 / 3.0, 0.5, 0.75] {
+                let part = partial_translation(&line, t).unwrap();
+                let moved = part.apply(&start);
+                assert!((start.distance(moved) - 24.0 * t).abs() < 1e-6, "{t}");
+                let rest = partial_translation(&line, 1.0 - t).unwrap();
+                let probe = Point::new(0.1, -0.2, 0.3).unwrap();
+                let (a, b) = (rest.compose(&part).apply(&probe), whole.apply(&probe));
+                // The probe ends up to 27 from the origin, where a
+                // coordinate's ulp is about 1e-5 of hyperbolic distance.
+                assert!(a.distance(b) < 1e-3, "{t}: {}", a.distance(b));
+            }
+        }
     }
 }

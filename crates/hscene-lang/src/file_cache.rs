@@ -7,6 +7,11 @@
 //! read again only when its size, modification time or inode changed, and
 //! the files the last compile did not use are let go, so the cache never
 //! holds more than one compile needs.
+//!
+//! An animation's frames are compiled one by one, and a file read for the
+//! first must not be missing or different by the seventh: a cache made with
+//! [`FileCache::pinned`] keeps every file as first read, whatever happens
+//! to it on disk, so every frame sees the same files and none fails late.
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -37,6 +42,8 @@ impl std::fmt::Debug for FileCache {
 struct Inner {
     /// Bumped by every compile; an entry remembers the last that used it.
     generation: u64,
+    /// Files are kept as first read, never read again nor let go.
+    pinned: bool,
     meshes: HashMap<PathBuf, Entry<MeshData>>,
     images: HashMap<PathBuf, Entry<TextureImage>>,
 }
@@ -75,10 +82,14 @@ impl Stamp {
 /// different stamp next time and is read again.
 fn cached<T, E>(
     map: &mut HashMap<PathBuf, Entry<T>>,
-    generation: u64,
+    (generation, pinned): (u64, bool),
     path: &Path,
     load: impl FnOnce(&Path) -> Result<T, E>,
 ) -> Result<Arc<T>, E> {
+    if pinned && let Some(entry) = map.get_mut(path) {
+        entry.used = generation;
+        return Ok(Arc::clone(&entry.value));
+    }
     let stamp = Stamp::of(path);
     if let (Some(stamp), Some(entry)) = (stamp, map.get_mut(path))
         && entry.stamp == stamp
@@ -98,6 +109,22 @@ fn cached<T, E>(
                 },
             );
         }
+        // A pinned cache keeps even a file it cannot stamp.
+        None if pinned => {
+            let stamp = Stamp {
+                len: 0,
+                modified: None,
+                inode: 0,
+            };
+            map.insert(
+                path.to_path_buf(),
+                Entry {
+                    stamp,
+                    used: generation,
+                    value: Arc::clone(&value),
+                },
+            );
+        }
         None => {
             map.remove(path);
         }
@@ -106,6 +133,14 @@ fn cached<T, E>(
 }
 
 impl FileCache {
+    /// A cache that keeps every file as first read (module docs), for the
+    /// compiles of one animation.
+    pub fn pinned() -> FileCache {
+        let cache = FileCache::default();
+        cache.lock().pinned = true;
+        cache
+    }
+
     fn lock(&self) -> MutexGuard<'_, Inner> {
         // A panic while holding the lock leaves maps that are still whole.
         self.inner
@@ -117,9 +152,12 @@ impl FileCache {
     pub(crate) fn start_compile(&self) {
         let mut inner = self.lock();
         let last = inner.generation;
+        inner.generation += 1;
+        if inner.pinned {
+            return;
+        }
         inner.meshes.retain(|_, e| e.used == last);
         inner.images.retain(|_, e| e.used == last);
-        inner.generation += 1;
     }
 
     /// The mesh at `path`, read by `load` unless it is cached and unchanged.
@@ -129,8 +167,8 @@ impl FileCache {
         load: impl FnOnce(&Path) -> Result<MeshData, E>,
     ) -> Result<Arc<MeshData>, E> {
         let mut inner = self.lock();
-        let generation = inner.generation;
-        cached(&mut inner.meshes, generation, path, load)
+        let key = (inner.generation, inner.pinned);
+        cached(&mut inner.meshes, key, path, load)
     }
 
     /// The image at `path`, read by `load` unless it is cached and unchanged.
@@ -140,8 +178,8 @@ impl FileCache {
         load: impl FnOnce(&Path) -> Result<TextureImage, E>,
     ) -> Result<Arc<TextureImage>, E> {
         let mut inner = self.lock();
-        let generation = inner.generation;
-        cached(&mut inner.images, generation, path, load)
+        let key = (inner.generation, inner.pinned);
+        cached(&mut inner.images, key, path, load)
     }
 
     /// How many files are held (meshes and images).
@@ -192,5 +230,25 @@ mod tests {
         cache.start_compile();
         cache.start_compile();
         assert!(cache.is_empty());
+    }
+
+    #[test]
+    fn a_pinned_cache_keeps_files_deleted_or_changed_since() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("t.obj");
+        std::fs::write(&path, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+        let cache = FileCache::pinned();
+        let reads = std::cell::Cell::new(0);
+        cache.start_compile();
+        cache.mesh(&path, mesh_load(&reads)).unwrap();
+        std::fs::write(&path, "v 0 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\n\n").unwrap();
+        cache.start_compile();
+        let mesh = cache.mesh(&path, mesh_load(&reads)).unwrap();
+        assert!(mesh.positions.iter().all(|p| p.x != 2.0));
+        std::fs::remove_file(&path).unwrap();
+        cache.start_compile();
+        cache.start_compile();
+        assert!(cache.mesh(&path, mesh_load(&reads)).is_ok());
+        assert_eq!(reads.get(), 1);
     }
 }

@@ -5,7 +5,6 @@
 //! [`MAX_IMAGE_FILE_BYTES`] bytes of file; a device, FIFO or directory is
 //! refused before it is opened for reading.
 
-use std::io::BufReader;
 use std::path::Path;
 
 use crate::bounded_read::{BoundedReadError, read_regular_file};
@@ -108,47 +107,94 @@ fn decode_srgb(bytes: &[u8]) -> Result<TextureImage, ImageFileError> {
     Ok(TextureImage::new(w as usize, h as usize, texels)?)
 }
 
-/// OpenEXR: the first layer's `R`, `G`, `B` channels (a luminance-only
-/// `Y` image is grey), linear.
+/// The most one block of an OpenEXR file (a tile or a group of scan lines,
+/// every channel of it) may take decompressed: 64 MiB, 40 times a 4096-wide
+/// block of 32 lines of R, G, B and A in 32-bit floats. The decoder holds
+/// one block at a time besides the texels kept, so a file of many channels
+/// costs one block of them, not all of them.
+pub const MAX_EXR_BLOCK_BYTES: usize = 64 << 20;
+
+/// OpenEXR: of the first part with `R`, `G` and `B` channels (or else a
+/// luminance `Y`, read as grey), those channels alone, linear; the others
+/// (alpha, depth, layers of AOVs) are never decoded. The part's size and
+/// block size are checked from the header before any block is read.
 fn decode_exr(bytes: &[u8]) -> Result<TextureImage, ImageFileError> {
-    use exr::prelude::{ReadChannels, ReadLayers};
+    use exr::prelude::{ReadChannels, ReadLayers, ReadSpecificChannel};
     let decode = |e: exr::error::Error| ImageFileError::Decode(e.to_string());
     let meta = exr::meta::MetaData::read_from_buffered(std::io::Cursor::new(bytes), false)
         .map_err(decode)?;
-    let header = meta
-        .headers
-        .first()
-        .ok_or_else(|| ImageFileError::Decode("an OpenEXR file with no part".into()))?;
+    let has = |h: &exr::meta::header::Header, name: &str| {
+        h.channels.list.iter().any(|c| c.name.to_string() == name)
+    };
+    let rgb = |h: &exr::meta::header::Header| ["R", "G", "B"].iter().all(|n| has(h, n));
+    let (header, grey) = match meta.headers.iter().find(|h| rgb(h)) {
+        Some(h) => (h, false),
+        None => match meta.headers.iter().find(|h| has(h, "Y")) {
+            Some(h) => (h, true),
+            None => {
+                return Err(ImageFileError::Decode(
+                    "an OpenEXR image needs R, G and B channels (or Y)".into(),
+                ));
+            }
+        },
+    };
     let size = header.layer_size;
     check_pixels(size.width() as u64, size.height() as u64)?;
-    let read = exr::prelude::read()
+    if header.deep || header.max_block_byte_size() > MAX_EXR_BLOCK_BYTES {
+        return Err(ImageFileError::Decode(format!(
+            "an OpenEXR block of {} bytes (its {} channels) is more than the {MAX_EXR_BLOCK_BYTES} a texture's may have",
+            header.max_block_byte_size(),
+            header.channels.list.len()
+        )));
+    }
+    let texels = if grey {
+        exr_reader()
+            .required("Y")
+            .collect_pixels(create_texels, |t, at, (y,): (f32,)| {
+                set_texel(t, at, [y, y, y]);
+            })
+            .first_valid_layer()
+            .all_attributes()
+            .non_parallel()
+            .from_buffered(std::io::Cursor::new(bytes))
+            .map(|image| image.layer_data.channel_data.pixels.1)
+    } else {
+        exr_reader()
+            .required("R")
+            .required("G")
+            .required("B")
+            .collect_pixels(create_texels, |t, at, (r, g, b): (f32, f32, f32)| {
+                set_texel(t, at, [r, g, b]);
+            })
+            .first_valid_layer()
+            .all_attributes()
+            .non_parallel()
+            .from_buffered(std::io::Cursor::new(bytes))
+            .map(|image| image.layer_data.channel_data.pixels.1)
+    }
+    .map_err(decode)?;
+    Ok(TextureImage::new(size.width(), size.height(), texels)?)
+}
+
+/// The reader of the channels named next, from the largest level of a
+/// flat (not deep) image.
+fn exr_reader() -> exr::image::read::specific_channels::ReadZeroChannels {
+    exr::prelude::read()
         .no_deep_data()
         .largest_resolution_level()
-        .all_channels()
-        .first_valid_layer()
-        .all_attributes()
-        .from_buffered(BufReader::new(std::io::Cursor::new(bytes)))
-        .map_err(decode)?;
-    let layer = &read.layer_data;
-    let (w, h) = (layer.size.width(), layer.size.height());
-    let channel = |name: &str| {
-        layer
-            .channel_data
-            .list
-            .iter()
-            .find(|c| c.name.to_string() == name)
-    };
-    let grey = channel("Y");
-    let [r, g, b] = ["R", "G", "B"].map(|n| channel(n).or(grey));
-    let (Some(r), Some(g), Some(b)) = (r, g, b) else {
-        return Err(ImageFileError::Decode(
-            "an OpenEXR image needs R, G and B channels (or Y)".into(),
-        ));
-    };
-    let texels = (0..w * h)
-        .map(|k| [r, g, b].map(|c| c.sample_data.value_by_flat_index(k).to_f32()))
-        .collect();
-    Ok(TextureImage::new(w, h, texels)?)
+        .specific_channels()
+}
+
+/// The texels of an OpenEXR part, with its width for [`set_texel`].
+fn create_texels<D>(size: exr::math::Vec2<usize>, _: &D) -> (usize, Vec<[f32; 3]>) {
+    (size.width(), vec![[0.0; 3]; size.area()])
+}
+
+fn set_texel(texels: &mut (usize, Vec<[f32; 3]>), at: exr::math::Vec2<usize>, rgb: [f32; 3]) {
+    let (width, list) = texels;
+    if let Some(t) = list.get_mut(at.y() * *width + at.x()) {
+        *t = rgb;
+    }
 }
 
 #[cfg(test)]
@@ -189,6 +235,61 @@ mod tests {
         let sub = dir.path().join("d.png");
         std::fs::create_dir(&sub).unwrap();
         assert!(matches!(load(&sub), Err(ImageFileError::NotAFile)));
+    }
+
+    /// Writes an OpenEXR of `width` x `height` whose channels are `names`,
+    /// channel `i` holding `i` everywhere.
+    fn write_exr(path: &Path, width: usize, height: usize, names: &[&str]) {
+        use exr::prelude::*;
+        let channels: SmallVec<[AnyChannel<FlatSamples>; 4]> = names
+            .iter()
+            .enumerate()
+            .map(|(i, n)| AnyChannel::new(*n, FlatSamples::F32(vec![i as f32; width * height])))
+            .collect();
+        let layer = Layer::new(
+            (width, height),
+            LayerAttributes::named("t"),
+            Encoding::SMALL_LOSSLESS,
+            AnyChannels::sort(channels),
+        );
+        Image::from_layer(layer).write().to_file(path).unwrap();
+    }
+
+    /// Of an OpenEXR with many channels only R, G and B are read (or Y as
+    /// grey); one without them is refused.
+    #[test]
+    fn an_exr_gives_its_colour_channels_only() {
+        let dir = tempfile::tempdir().unwrap();
+        let many: Vec<String> = (0..32).map(|i| format!("aov{i:02}")).collect();
+        let mut names: Vec<&str> = many.iter().map(String::as_str).collect();
+        names.extend(["A", "B", "G", "R"]);
+        let path = dir.path().join("many.exr");
+        write_exr(&path, 64, 32, &names);
+        let t = load(&path).unwrap();
+        assert_eq!((t.width(), t.height()), (64, 32));
+        // Each channel holds its place in `names`: B 33, G 34, R 35.
+        assert_eq!(t.sample(0.5, 0.5, 1.0), [35.0, 34.0, 33.0]);
+        let grey = dir.path().join("grey.exr");
+        write_exr(&grey, 8, 8, &["Z", "Y"]);
+        assert_eq!(load(&grey).unwrap().sample(0.5, 0.5, 1.0), [1.0; 3]);
+        let none = dir.path().join("none.exr");
+        write_exr(&none, 8, 8, &["Z"]);
+        assert!(matches!(load(&none), Err(ImageFileError::Decode(_))));
+    }
+
+    /// A block (scan lines of every channel) larger than the bound is
+    /// refused from the header, before any block is decompressed.
+    #[test]
+    fn an_exr_block_too_large_is_refused_from_the_header() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("wide.exr");
+        // 16 lines of 65,536 texels of 20 floats: 84 MB a block.
+        let names: Vec<String> = (0..17).map(|i| format!("x{i:02}")).collect();
+        let mut names: Vec<&str> = names.iter().map(String::as_str).collect();
+        names.extend(["R", "G", "B"]);
+        write_exr(&path, 65_536, 1, &names);
+        let err = load(&path).unwrap_err().to_string();
+        assert!(err.contains("block"), "{err}");
     }
 
     /// A header claiming more pixels than the bound is refused from the

@@ -6,13 +6,31 @@
 //! (`headless`). The scene comes from the caller, which recompiles it when
 //! its file changes (`SceneSource`).
 
+/// `eprint!` that never panics: a message that cannot be written (stderr
+/// closed, on a full disk) is dropped and the viewer goes on.
+macro_rules! diag {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = std::io::stderr().lock().write_fmt(format_args!($($arg)*));
+    }};
+}
+
+/// `eprintln!` that never panics (see [`diag!`]).
+macro_rules! diagln {
+    ($($arg:tt)*) => {
+        diag!("{}\n", format_args!($($arg)*))
+    };
+}
+
 mod headless;
 mod keys;
 mod pose;
 mod progressive;
 mod window;
 
-pub use headless::{FlightPath, HeadlessReport, run_headless};
+pub use headless::{
+    FlightError, FlightPath, HeadlessReport, MAX_FLIGHT_FILE_BYTES, MAX_FLIGHT_MOVES, run_headless,
+};
 pub use keys::{Action, action_for_key};
 pub use pose::{Axis, Move, Pose, camera_lines};
 pub use progressive::{Frame, Progressive, ViewOptions};

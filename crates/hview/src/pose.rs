@@ -129,6 +129,29 @@ impl Pose {
         next.camera().map(|_| next)
     }
 
+    /// The same view with the eye folded into the fundamental domain of a
+    /// quotient space (`space = NAME`): the scene is the same from every
+    /// copy of the domain, so the picture does not change, but the eye
+    /// stays near the origin however far one flies, instead of leaving
+    /// f64's range after a few dozen units. Left as it is when the fold
+    /// would reflect the view (a mirrored cell) or cannot be found.
+    pub fn folded(&self, space: &hgeom::QuotientSpace) -> Pose {
+        let Some(eye) = Point::from_hyperboloid(self.frame.w_axis) else {
+            return *self;
+        };
+        match space.fold(&eye) {
+            Ok(g) if g.preserves_orientation() => {
+                let mut next = Pose {
+                    frame: g.to_lorentz() * self.frame,
+                    target_distance: self.target_distance,
+                };
+                next.renormalise();
+                next
+            }
+            _ => *self,
+        }
+    }
+
     /// Gram-Schmidt in the Lorentz metric: the eye normalised to the
     /// hyperboloid, then right, up and forward made orthogonal to it and to
     /// one another, and unit.

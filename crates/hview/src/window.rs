@@ -112,10 +112,18 @@ impl App<'_> {
         if self.pending.is_empty() {
             return;
         }
+        // In a quotient space the eye is folded back into the domain after
+        // each move (`Pose::folded`), so flying never leaves f64's range.
+        let space = self
+            .scene
+            .settings
+            .space
+            .as_ref()
+            .and_then(|s| s.build().ok());
         for m in std::mem::take(&mut self.pending) {
             match self.pose.moved(m) {
-                Some(p) => self.pose = p,
-                None => eprintln!("hscene view: that move would take the eye past what f64 holds"),
+                Some(p) => self.pose = space.as_ref().map_or(p, |q| p.folded(q)),
+                None => diagln!("hscene view: that move would take the eye past what f64 holds"),
             }
         }
         self.flown = true;
@@ -137,7 +145,7 @@ impl App<'_> {
                 self.stalled = false;
                 self.view.restart();
             }
-            Err(e) => eprintln!("hscene view: frame {k}: {e}"),
+            Err(e) => diagln!("hscene view: frame {k}: {e}"),
         }
     }
 
@@ -153,10 +161,10 @@ impl App<'_> {
                 if !self.flown {
                     self.reset();
                 }
-                eprintln!("hscene view: reloaded {}", self.source.name());
+                diagln!("hscene view: reloaded {}", self.source.name());
             }
             Err(message) => {
-                eprint!("{message}");
+                diag!("{message}");
                 self.error = Some(message);
             }
         }
@@ -178,7 +186,7 @@ impl App<'_> {
             .map(|k| self.save_dir.join(format!("{stem}-view-{k:03}.png")))
             .find(|p| !p.exists());
         let Some(path) = path else {
-            eprintln!("hscene view: no free file name to save to");
+            diagln!("hscene view: no free file name to save to");
             return;
         };
         let o = self.view.options();
@@ -194,8 +202,8 @@ impl App<'_> {
         let saved = hrender::render(&self.scene, &options, &|_| {})
             .and_then(|r| hrender::write_image(&r.image, &path, hrender::SampleDepth::Eight));
         match saved {
-            Ok(()) => eprintln!("hscene view: saved {}", path.display()),
-            Err(e) => eprintln!("hscene view: cannot save: {e}"),
+            Ok(()) => diagln!("hscene view: saved {}", path.display()),
+            Err(e) => diagln!("hscene view: cannot save: {e}"),
         }
     }
 
@@ -243,8 +251,12 @@ impl App<'_> {
             Action::Fly(m) => self.pending.push(m),
             Action::Reset => self.reset(),
             Action::PrintCamera => match self.pose.camera() {
-                Some(c) => println!("{}", camera_lines(&c)),
-                None => eprintln!("hscene view: the camera is past what f64 holds"),
+                Some(c) => {
+                    use std::io::Write as _;
+                    // A closed or full stdout loses the print, not the view.
+                    let _ = writeln!(std::io::stdout().lock(), "{}", camera_lines(&c));
+                }
+                None => diagln!("hscene view: the camera is past what f64 holds"),
             },
             Action::Save => self.save(),
             Action::TogglePlay => self.playing = !self.playing,
@@ -351,7 +363,7 @@ impl ApplicationHandler for App<'_> {
                     self.present();
                 }
                 Err(e) => {
-                    eprintln!("hscene view: {e}");
+                    diagln!("hscene view: {e}");
                     self.error = Some(e.to_string());
                     self.stalled = true;
                     event_loop.set_control_flow(ControlFlow::WaitUntil(now + WATCH_INTERVAL));
