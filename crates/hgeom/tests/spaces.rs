@@ -362,15 +362,17 @@ fn bad_pairings_are_refused() {
     let good = snappy_pairings("weeks.json");
     let mut missing = good.clone();
     missing.remove(0);
+    // Its partner's inverse is missing: the face is named, with how far
+    // the nearest pairing is from its inverse and the tolerance.
     assert!(matches!(
         QuotientSpace::from_pairings(&missing),
-        Err(hgeom::GeomError::BadPairing { .. })
+        Err(hgeom::GeomError::InexactPairing { error, tolerance, .. }) if error > tolerance
     ));
     let mut skewed = good.clone();
     skewed[3].x_axis.x *= 1.01;
     assert!(matches!(
         QuotientSpace::from_pairings(&skewed),
-        Err(hgeom::GeomError::BadPairing { face: 4, .. })
+        Err(hgeom::GeomError::InexactPairing { face: 4, .. })
     ));
     assert!(QuotientSpace::from_pairings(&good[..3]).is_err());
 }

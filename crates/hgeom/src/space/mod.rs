@@ -10,7 +10,9 @@
 //! long path is that of its steps (`tests/spaces.rs` measures it against a
 //! 320-bit walk), not that of far coordinates.
 //!
-//! - `polyhedron`: the domain from its planes (vertices, edges).
+//! - `polyhedron`: the domain from its planes (vertices, edges);
+//!   `face_polygons`: each face's polygon, its plane clipped by the
+//!   others in the Klein model.
 //! - `gluing`: pairings from vertex correspondences, and the checks of a
 //!   gluing (each pairing maps its face onto its partner; every edge cycle
 //!   closes up: 2π and the identity for a manifold, the Coxeter relation
@@ -28,6 +30,7 @@
 
 mod builtin;
 mod dirichlet;
+mod face_polygons;
 mod gluing;
 mod horocell;
 mod polyhedron;
@@ -41,7 +44,8 @@ use crate::lorentz;
 use crate::ray::Ray;
 
 pub use builtin::{SPACE_NAMES, SpaceKind};
-pub use dirichlet::MAX_PAIRINGS;
+pub use dirichlet::{MAX_PAIRING_ENTRY, MAX_PAIRINGS, PAIRING_TOLERANCE};
+pub use face_polygons::{MAX_VERTICES as MAX_DOMAIN_VERTICES, MERGE as VERTEX_MERGE};
 pub use gluing::EdgeCycle;
 pub use horocell::{MAX_CHAMBER_STEPS, NEAR_FACES as HOROSPHERE_CELL_REACH};
 pub use polyhedron::{DomainEdge, DomainPolyhedron};
