@@ -376,3 +376,57 @@ fn bad_pairings_are_refused() {
     ));
     assert!(QuotientSpace::from_pairings(&good[..3]).is_err());
 }
+
+/// The domain's volume is the manifold's: the built-in spaces against
+/// their known volumes (Seifert-Weber 11.1990..., the figure-eight knot
+/// complement 2 × 1.01494..., the Whitehead link complement 3.66386...),
+/// the SnapPy domains against SnapPy's `M.volume()`, and the mirrored
+/// cells against the honeycombs' cells (the regular ideal tetrahedron
+/// `{3,3,6}` 1.01494..., octahedron `{3,4,4}` 3.66386...).
+#[test]
+fn domain_volumes_are_the_manifolds_volumes() {
+    let cases: [(QuotientSpace, f64); 7] = [
+        (
+            QuotientSpace::seifert_weber().unwrap(),
+            11.199_064_740_814_68,
+        ),
+        (
+            QuotientSpace::new(hgeom::SpaceKind::FigureEight).unwrap(),
+            2.029_883_212_819_307_3,
+        ),
+        (
+            QuotientSpace::new(hgeom::SpaceKind::Whitehead).unwrap(),
+            3.663_862_376_708_876,
+        ),
+        (
+            QuotientSpace::from_pairings(&snappy_pairings("m004.json")).unwrap(),
+            2.029_883_212_819_307_3,
+        ),
+        (
+            QuotientSpace::from_pairings(&snappy_pairings("weeks.json")).unwrap(),
+            0.942_707_362_776_927_7,
+        ),
+        (
+            QuotientSpace::new(hgeom::SpaceKind::Mirrors(
+                hgeom::Schlafli::new(3, 3, 6).unwrap(),
+            ))
+            .unwrap(),
+            1.014_941_606_409_653_6,
+        ),
+        (
+            QuotientSpace::new(hgeom::SpaceKind::Mirrors(
+                hgeom::Schlafli::new(3, 4, 4).unwrap(),
+            ))
+            .unwrap(),
+            3.663_862_376_708_876,
+        ),
+    ];
+    let mut worst = 0.0f64;
+    for (space, expected) in cases {
+        let v = space.volume().unwrap();
+        let error = (v - expected).abs() / expected;
+        println!("{}: {v:.15} ({error:.1e} relative)", space.kind());
+        worst = worst.max(error);
+    }
+    assert!(worst < 1e-12, "{worst:e}");
+}

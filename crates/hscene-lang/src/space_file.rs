@@ -70,11 +70,13 @@ impl<'de> Deserialize<'de> for Entry {
             }
             fn visit_str<E: serde::de::Error>(self, s: &str) -> Result<Entry, E> {
                 // Only decimal numbers: not "inf" or "NaN", which Rust's
-                // parser takes.
-                let t = s.trim();
+                // parser takes. Spaces are dropped: SnapPy writes small
+                // high-precision numbers as "1.25 E-5".
+                let t: String = s.chars().filter(|c| *c != ' ').collect();
                 let decimal = !t.is_empty()
                     && t.len() <= MAX_DIGITS
-                    && t.bytes().all(|b| b.is_ascii_digit() || b"+-.eE".contains(&b))
+                    && t.bytes()
+                        .all(|b| b.is_ascii_digit() || b"+-.eE".contains(&b))
                     && t.bytes().any(|b| b.is_ascii_digit());
                 match t.parse::<f64>() {
                     Ok(x) if decimal && x.is_finite() => Ok(Entry(x)),
@@ -225,13 +227,22 @@ mod tests {
         // The old files, numbers only, read as before.
         let old = r#"{"pairings": [[[2, 1, 0, 0], [1, 2, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]]}"#;
         assert_eq!(parse(old).unwrap()[0].w_axis.w, 2.0);
+        // SnapPy's form of a small high-precision number.
+        let small =
+            r#"{"pairings": [[["1.5 E-5", 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]]}"#;
+        assert_eq!(parse(small).unwrap()[0].w_axis.w, 1.5e-5);
     }
 
     #[test]
     fn strings_that_are_not_decimal_numbers_are_refused() {
         for bad in ["inf", "NaN", "", "1e400", "0x10", "1,5"] {
-            let text = format!(r#"{{"pairings": [[["{bad}", 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]]}}"#);
-            assert!(matches!(parse(&text), Err(SpaceFileError::Format(_))), "{bad}");
+            let text = format!(
+                r#"{{"pairings": [[["{bad}", 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]]}}"#
+            );
+            assert!(
+                matches!(parse(&text), Err(SpaceFileError::Format(_))),
+                "{bad}"
+            );
         }
     }
 
@@ -241,7 +252,9 @@ mod tests {
         let e = parse(text).unwrap_err().to_string();
         assert!(!e.contains("secret"), "{e}");
         assert!(e.contains("line 1"), "{e}");
-        let e = parse(r#"{"pairings": [], "time": "password"}"#).unwrap_err().to_string();
+        let e = parse(r#"{"pairings": [], "time": "password"}"#)
+            .unwrap_err()
+            .to_string();
         assert!(!e.contains("password"), "{e}");
     }
 

@@ -219,10 +219,9 @@ mod tests {
     fn boost() -> DMat4 {
         let a = Point::new(0.3, -0.4, 0.5).unwrap();
         Isometry::transvection_from_origin(a)
-            .compose(&Isometry::orthogonal_unchecked(glam::DMat3::from_axis_angle(
-                DVec3::new(1.0, 2.0, 2.0).normalize(),
-                0.7,
-            )))
+            .compose(&Isometry::orthogonal_unchecked(
+                glam::DMat3::from_axis_angle(DVec3::new(1.0, 2.0, 2.0).normalize(), 0.7),
+            ))
             .to_lorentz()
     }
 
@@ -254,7 +253,12 @@ mod tests {
             DVec4::Z,
             DVec4::new(s, 0.0, 0.0, c),
         );
-        assert!(check_matrix(0, &far).unwrap_err().to_string().contains("more than"));
+        assert!(
+            check_matrix(0, &far)
+                .unwrap_err()
+                .to_string()
+                .contains("more than")
+        );
     }
 
     #[test]

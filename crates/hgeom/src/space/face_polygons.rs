@@ -90,7 +90,10 @@ pub(super) struct PolygonVertex {
 /// face smaller than [`MERGE`]), or leave it reaching the sphere at
 /// infinity other than in isolated ideal vertices (a domain of infinite
 /// volume).
-pub(super) fn face_polygon(planes: &[KleinPlane], a: usize) -> Result<Vec<PolygonVertex>, GeomError> {
+pub(super) fn face_polygon(
+    planes: &[KleinPlane],
+    a: usize,
+) -> Result<Vec<PolygonVertex>, GeomError> {
     let plane = planes[a];
     let square = [(-2.0, -2.0), (2.0, -2.0), (2.0, 2.0), (-2.0, 2.0)];
     let mut poly: Vec<Corner> = square

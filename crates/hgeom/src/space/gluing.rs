@@ -255,7 +255,7 @@ pub(super) fn check_cycles(
             // (g_b g_a)^r = I, with r = 2π / α = 4π / S.
             let r = (4.0 * PI / c.angle_sum).round();
             let off = (4.0 * PI / c.angle_sum - r).abs();
-            let power_error = if r >= 2.0 && r < 1e3 {
+            let power_error = if (2.0..1e3).contains(&r) {
                 size(&(power(c.holonomy, r as u32) - DMat4::IDENTITY))
             } else {
                 f64::INFINITY
@@ -269,8 +269,8 @@ pub(super) fn check_cycles(
                 .iter()
                 .map(|&f| size(&matrices[f]))
                 .fold(1.0, f64::max);
-            let angle_tolerance = (PAIRING_TOLERANCE * k * largest * largest)
-                .clamp(1e-12, MAX_CYCLE_TOLERANCE);
+            let angle_tolerance =
+                (PAIRING_TOLERANCE * k * largest * largest).clamp(1e-12, MAX_CYCLE_TOLERANCE);
             let holonomy_tolerance =
                 (PAIRING_TOLERANCE * k * c.size).clamp(1e-12, MAX_CYCLE_TOLERANCE);
             let angle_error = (c.angle_sum - 2.0 * PI).abs();

@@ -35,6 +35,7 @@ mod gluing;
 mod horocell;
 mod polyhedron;
 mod tiles;
+mod volume;
 
 use glam::{DMat4, DVec4};
 
@@ -50,6 +51,7 @@ pub use gluing::EdgeCycle;
 pub use horocell::{MAX_CHAMBER_STEPS, NEAR_FACES as HOROSPHERE_CELL_REACH};
 pub use polyhedron::{DomainEdge, DomainPolyhedron};
 pub use tiles::MAX_COPIES;
+pub use volume::{clausen, lobachevsky, orthoscheme_volume};
 
 /// Where a ray leaves the domain.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -128,6 +130,19 @@ impl QuotientSpace {
     /// the domain.
     pub fn pairing(&self, face: usize) -> &Isometry {
         &self.pairings[face]
+    }
+
+    /// The volume of the space: that of its domain, cut into orthoschemes
+    /// from the base point (`volume.rs`; accurate to about 1e-14
+    /// relative on the built-in spaces, `tests/spaces.rs`). `None` for a
+    /// mirrored horosphere-inscribed cell, whose domain has infinitely
+    /// many faces (it has finite volume, but no list of faces to sum).
+    pub fn volume(&self) -> Option<f64> {
+        let base = self
+            .domain
+            .as_ref()?
+            .transformed(&self.placement.inverse().to_lorentz());
+        Some(volume::domain_volume(&base))
     }
 
     /// The placement: from the base placement to this one.

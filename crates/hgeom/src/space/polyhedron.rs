@@ -215,14 +215,11 @@ fn vertex_from_faces(faces: &[DVec4], through: &[usize]) -> Option<(DVec4, bool)
         .iter()
         .map(|&f| unit(f))
         .min_by(|x, y| x.dot(a).abs().total_cmp(&y.dot(a).abs()))?;
-    let c = through
-        .iter()
-        .map(|&f| unit(f))
-        .max_by(|x, y| {
-            let gx = lorentz::orthogonal_complement(a, b, *x).length();
-            let gy = lorentz::orthogonal_complement(a, b, *y).length();
-            gx.total_cmp(&gy)
-        })?;
+    let c = through.iter().map(|&f| unit(f)).max_by(|x, y| {
+        let gx = lorentz::orthogonal_complement(a, b, *x).length();
+        let gy = lorentz::orthogonal_complement(a, b, *y).length();
+        gx.total_cmp(&gy)
+    })?;
     let mut x = lorentz::orthogonal_complement(a, b, c);
     let scale = x.abs().max_element();
     if !(scale > 0.0) || !scale.is_finite() {
