@@ -47,6 +47,10 @@ const DEGENERATE: f64 = 1e-14;
 /// `Cl₂(θ) = θ - θ log|θ| + Σ 2ζ(2n)/(2n(2n+1)) θ (θ/2π)^{2n}`, whose terms
 /// fall at least by 4 each at `|θ| = π` (28 terms reach 1e-17).
 pub fn clausen(theta: f64) -> f64 {
+    // Odd: reduce |θ| alone, so that Cl₂(-θ) = -Cl₂(θ) to the last bit.
+    if theta < 0.0 {
+        return -clausen(-theta);
+    }
     let mut t = theta.rem_euclid(2.0 * PI);
     if t > PI {
         t -= 2.0 * PI;
