@@ -108,9 +108,26 @@ fn header(path: &Path, scene: &Scene) -> Value {
                 "color": rgb(f.color),
                 "distance": f.distance,
             })),
+            "space": s.space.as_ref().map(space),
         },
         "frame": scene.frame,
         "camera": camera(&scene.camera),
+    })
+}
+
+/// The space: its name, its domain's face count and volume (hgeom's,
+/// from the domain), the light reach and the domain's rods.
+fn space(s: &hscene_ir::Space) -> Value {
+    let built = s.build().ok();
+    json!({
+        "kind": s.kind.to_string(),
+        "faces": built.as_ref().map(|q| q.faces().len()),
+        "volume": built.as_ref().and_then(|q| q.volume()),
+        "light_reach": s.light_reach,
+        "domain": s.domain.map(|d| json!({
+            "width": d.width,
+            "material": d.material.index(),
+        })),
     })
 }
 
