@@ -382,10 +382,12 @@ fn bad_pairings_are_refused() {
 /// complement 2 × 1.01494..., the Whitehead link complement 3.66386...),
 /// the SnapPy domains against SnapPy's `M.volume()`, and the mirrored
 /// cells against the honeycombs' cells (the regular ideal tetrahedron
-/// `{3,3,6}` 1.01494..., octahedron `{3,4,4}` 3.66386...).
+/// `{3,3,6}` 3Л(π/3) = 1.01494..., octahedron `{3,4,4}` 3.66386..., the
+/// right-angled dodecahedron `{5,3,4}` 4.30620... and the cube of
+/// `{4,3,5}` 1.72248...).
 #[test]
 fn domain_volumes_are_the_manifolds_volumes() {
-    let cases: [(QuotientSpace, f64); 7] = [
+    let cases: [(QuotientSpace, f64); 9] = [
         (
             QuotientSpace::seifert_weber().unwrap(),
             11.199_064_740_814_68,
@@ -412,6 +414,23 @@ fn domain_volumes_are_the_manifolds_volumes() {
             ))
             .unwrap(),
             1.014_941_606_409_653_6,
+        ),
+        // Finite regular cells: the right-angled dodecahedron and the
+        // cube of {4,3,5}, 120 and 48 characteristic orthoschemes (the
+        // values from their angles in 30-digit arithmetic).
+        (
+            QuotientSpace::new(hgeom::SpaceKind::Mirrors(
+                hgeom::Schlafli::new(5, 3, 4).unwrap(),
+            ))
+            .unwrap(),
+            4.306_207_600_730_808_6,
+        ),
+        (
+            QuotientSpace::new(hgeom::SpaceKind::Mirrors(
+                hgeom::Schlafli::new(4, 3, 5).unwrap(),
+            ))
+            .unwrap(),
+            1.722_483_040_292_323_5,
         ),
         (
             QuotientSpace::new(hgeom::SpaceKind::Mirrors(
