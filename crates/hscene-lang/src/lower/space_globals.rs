@@ -27,6 +27,10 @@ pub(super) struct SpaceParts {
     pairings: Option<Arc<[DMat4]>>,
     domain: Option<(f64, MaterialId, Span)>,
     light_reach: Option<(f64, Span)>,
+    /// `space` was given but refused (a space file that glues no
+    /// manifold, an unknown name): `domain` and `light_reach` are then not
+    /// "without space", and no HSC1007 says they are.
+    refused: bool,
 }
 
 /// The space keys.
@@ -121,6 +125,8 @@ impl Lowerer<'_> {
     }
 
     fn space_name(&mut self, value: &Value) {
+        // Cleared below once the space is known.
+        self.space.refused = true;
         let kind = match value {
             Value::Ident(name) => match SpaceKind::from_name(&name.text) {
                 Some(kind) => kind,
@@ -146,6 +152,7 @@ impl Lowerer<'_> {
                 if let Some(pairings) = self.space_file(text, *span) {
                     self.space.pairings = Some(pairings);
                     self.space.kind = Some((SpaceKind::Pairings, *span));
+                    self.space.refused = false;
                 }
                 return;
             }
@@ -173,6 +180,7 @@ impl Lowerer<'_> {
             return;
         }
         self.space.kind = Some((kind, value.span()));
+        self.space.refused = false;
     }
 
     /// The space, once every object and light is known: what cannot be
@@ -181,6 +189,9 @@ impl Lowerer<'_> {
     /// it: the scene is the same either way).
     pub(super) fn settle_space(&mut self) {
         let Some((kind, kind_span)) = self.space.kind else {
+            if self.space.refused {
+                return;
+            }
             for span in [
                 self.space.domain.map(|d| d.2),
                 self.space.light_reach.map(|r| r.1),
