@@ -185,7 +185,8 @@ pub struct RenderArgs {
     /// `.exr` output: a comma-separated list of `depth` (channel Z, the
     /// hyperbolic distance along the pixel's central ray), `normal` (N.X,
     /// N.Y, N.Z, in the scene's ball coordinates), `id` (the object's
-    /// number) and `cell` (cell.rank, cell.class of a honeycomb's cell).
+    /// number), `cell` (cell.rank, cell.class of a honeycomb's cell) and
+    /// `word` (word.length, word.1..word.8: the faces crossed in a space).
     #[arg(long, value_name = "LAYERS", value_parser = parse_aovs)]
     pub aov: Option<AovList>,
     /// Worker threads, 1 to 1024 (default: all cores).

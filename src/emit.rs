@@ -110,18 +110,27 @@ fn header(path: &Path, scene: &Scene) -> Value {
             })),
             "aperture": s.lens.map_or(0.0, |l| l.aperture),
             "focus": s.lens.map(|l| l.focus),
-            "space": s.space.as_ref().map(|sp| json!({
-                "name": sp.kind.to_string(),
-                "pairings": sp.pairings.as_ref().map(|p| p.len()),
-                "domain": sp.domain.map(|d| json!({
-                    "width": d.width,
-                    "material": d.material.index() + 1,
-                })),
-                "light_reach": sp.light_reach,
-            })),
+            "space": s.space.as_ref().map(space),
         },
         "frame": scene.frame,
         "camera": camera(&scene.camera),
+    })
+}
+
+/// The space: its name, its domain's face count and volume (hgeom's,
+/// from the domain), the light reach and the domain's rods.
+fn space(s: &hscene_ir::Space) -> Value {
+    let built = s.build().ok();
+    json!({
+        "name": s.kind.to_string(),
+        "pairings": s.pairings.as_ref().map(|p| p.len()),
+        "faces": built.as_ref().map(|q| q.faces().len()),
+        "volume": built.as_ref().and_then(|q| q.volume()),
+        "light_reach": s.light_reach,
+        "domain": s.domain.map(|d| json!({
+            "width": d.width,
+            "material": d.material.index() + 1,
+        })),
     })
 }
 

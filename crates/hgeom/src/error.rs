@@ -123,15 +123,39 @@ pub enum GeomError {
         /// What is wrong, in words.
         problem: String,
     },
+    /// A face pairing that fails a test by more than its tolerance (each
+    /// tolerance scales with the size of what it compares:
+    /// docs/manifolds.md): the measured error and the tolerance are given.
+    #[error(
+        "the pairing of face {face} {problem} (measured error {error:.2e}, tolerance {tolerance:.2e})"
+    )]
+    InexactPairing {
+        /// The face (1-based, the pairing's place in the file).
+        face: usize,
+        /// What it fails to do, in words.
+        problem: &'static str,
+        /// The measured error.
+        error: f64,
+        /// The tolerance it exceeded.
+        tolerance: f64,
+    },
     /// The dihedral angles around an edge cycle do not close up (a
     /// manifold needs 2π and the identity; a mirror needs the Coxeter
     /// relation).
-    #[error("the edge cycle of faces {faces:?} has angle sum {degrees} degrees and does not close")]
+    #[error(
+        "the edge cycle of faces {faces:?} has angle sum {degrees} degrees and does not close (measured error {error:.2e}, tolerance {tolerance:.2e})"
+    )]
     EdgeCycle {
         /// The faces crossed around the cycle (1-based).
         faces: Vec<usize>,
         /// The sum of its dihedral angles, in degrees.
         degrees: f64,
+        /// The larger of the angle sum's distance from its target (in
+        /// radians) and the holonomy's from the identity, each over its
+        /// own tolerance times `tolerance`.
+        error: f64,
+        /// The tolerance of the larger one.
+        tolerance: f64,
     },
     /// More copies of an object or light than the limit would be needed
     /// (an object too large for the domain, or one deep in a cusp).

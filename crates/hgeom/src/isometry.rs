@@ -206,6 +206,12 @@ impl Isometry {
     /// good to `ε` gives an isometry good to about `ε cosh² d` at distance
     /// `d` of its translation.
     pub fn from_lorentz(m: DMat4) -> Result<Isometry, GeomError> {
+        Isometry::from_lorentz_within(m, 1e-9)
+    }
+
+    /// [`Isometry::from_lorentz`] with the orthogonality tolerance given:
+    /// a space's pairings have one that scales with their size.
+    pub(crate) fn from_lorentz_within(m: DMat4, tolerance: f64) -> Result<Isometry, GeomError> {
         if !m.is_finite() {
             return Err(GeomError::NotFinite);
         }
@@ -218,7 +224,7 @@ impl Isometry {
             rest.z_axis.truncate(),
         );
         let defect = orthogonality_defect(&q);
-        if !(defect <= 1e-9) {
+        if !(defect <= tolerance) {
             return Err(GeomError::NotOrthogonal { defect });
         }
         let x = q.x_axis.normalize();

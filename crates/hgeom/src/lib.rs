@@ -111,7 +111,8 @@ pub use segment::Segment;
 pub use shape::{Shape, Solid};
 pub use space::{
     Crossing, DomainEdge, DomainPolyhedron, EdgeCycle, HOROSPHERE_CELL_REACH, MAX_CHAMBER_STEPS,
-    MAX_COPIES, MAX_PAIRINGS, QuotientSpace, SPACE_NAMES, SpaceKind,
+    MAX_COPIES, MAX_DOMAIN_VERTICES, MAX_PAIRING_ENTRY, MAX_PAIRINGS, PAIRING_TOLERANCE,
+    QuotientSpace, SPACE_NAMES, SpaceKind, VERTEX_MERGE, clausen, lobachevsky, orthoscheme_volume,
 };
 pub use sphere::HSphere;
 

@@ -20,6 +20,19 @@
 //!   classes); coloured by parity, rank `NaN` and the parity; a uniform
 //!   honeycomb, rank `NaN` and the kind. `NaN` for everything else,
 //!   including a honeycomb's far average beyond its horizon.
+//! - `word` (`word.length`, `word.1` ... `word.8`): in a quotient space,
+//!   the faces the ray left the domain by before the surface it shows, in
+//!   order (numbered from 1 in the domain's order: a space file's order),
+//!   so the tile shown is `g_{f_k} ∘ ... ∘ g_{f_1}` of the domain's
+//!   contents: its length, and its first eight letters (0 past the end);
+//!   0 everywhere in H³.
+//!
+//! Every layer is of the first surface that is not fully transparent (a
+//! material that lets all light through unbent and shines none: a `trans
+//! = 1` face, a honeycomb's invisible walls): the ray goes on through
+//! those, as the picture's light does. In a space, `id` follows the
+//! object list of `check --emit ir` (an object's images share its
+//! number); the domain's rods are numbered one more than the last object.
 
 use hgeom::glam::DVec3;
 use hgeom::ray::ball_direction;
@@ -42,15 +55,28 @@ pub enum Aov {
     Id,
     /// A honeycomb cell's rank and colour class.
     Cell,
+    /// In a quotient space, the group element that takes the tile a pixel
+    /// shows onto the domain, as a word in the face pairings: its length
+    /// and its first [`WORD_LETTERS`] letters.
+    Word,
 }
+
+/// The letters of the `word` layer kept as channels (`word.1` ...): the
+/// faces crossed first; `word.length` says how many there were in all.
+pub const WORD_LETTERS: usize = 8;
+
+/// The most fully transparent surfaces a layer's ray passes through before
+/// it gives up (and shows nothing).
+pub const MAX_CLEAR_SURFACES: u32 = 256;
 
 impl Aov {
     /// Every layer, by the names `--aov` takes.
-    pub const ALL: [(&'static str, Aov); 4] = [
+    pub const ALL: [(&'static str, Aov); 5] = [
         ("depth", Aov::Depth),
         ("normal", Aov::Normal),
         ("id", Aov::Id),
         ("cell", Aov::Cell),
+        ("word", Aov::Word),
     ];
 
     /// The layers of a comma-separated list (`depth,normal`), each once.
@@ -78,6 +104,17 @@ impl Aov {
             Aov::Normal => &["N.X", "N.Y", "N.Z"],
             Aov::Id => &["id"],
             Aov::Cell => &["cell.rank", "cell.class"],
+            Aov::Word => &[
+                "word.length",
+                "word.1",
+                "word.2",
+                "word.3",
+                "word.4",
+                "word.5",
+                "word.6",
+                "word.7",
+                "word.8",
+            ],
         }
     }
 }
@@ -145,18 +182,13 @@ pub fn render_aovs(
             let (i, j) = (region.x + col, region.y + row);
             let sx = (f64::from(i) + 0.5) / w - 0.5;
             let sy = 0.5 - (f64::from(j) + 0.5) / h;
+            let mut word: Vec<usize> = Vec::new();
             let found = match picture.pixel_net.sample(sx, sy) {
-                Sample::Ray(dir) => {
-                    let traced = picture
-                        .prepared
-                        .trace(&Ray::from_origin_unchecked(dir), T_MIN);
-                    match traced.nearest {
-                        Nearest::Hit(hit, index) => {
-                            Some((traced.ray, traced.travelled, hit, index))
-                        }
-                        _ => None,
-                    }
-                }
+                Sample::Ray(dir) => first_visible(
+                    &picture.prepared,
+                    Ray::from_origin_unchecked(dir),
+                    &mut word,
+                ),
                 Sample::Outside => None,
             };
             let k = (row as usize) * (region.width as usize) + col as usize;
@@ -165,6 +197,10 @@ pub fn render_aovs(
                     c[k] = v as f32;
                 }
             };
+            put("word.length", word.len() as f64);
+            for (letter, face) in word.iter().take(WORD_LETTERS).enumerate() {
+                put(WORD_CHANNELS[letter], (face + 1) as f64);
+            }
             let Some((ray, travelled, hit, index)) = found else {
                 put("Z", f64::INFINITY);
                 put("cell.rank", f64::NAN);
@@ -182,8 +218,14 @@ pub fn render_aovs(
             put("N.X", normal.x);
             put("N.Y", normal.y);
             put("N.Z", normal.z);
-            put("id", (index + 1) as f64);
-            let (rank, class) = cell_of(scene, index, hit.part);
+            // In a space, the prepared objects are the objects' images and
+            // the domain's rods: each is given its object's number.
+            let number = match &picture.prepared.space {
+                Some(space) => space.numbers.get(index).copied().unwrap_or(0),
+                None => index + 1,
+            };
+            put("id", number as f64);
+            let (rank, class) = cell_of(scene, number.wrapping_sub(1), hit.part);
             put("cell.rank", rank);
             put("cell.class", class);
         }
@@ -193,6 +235,46 @@ pub fn render_aovs(
         height: region.height,
         channels,
     })
+}
+
+/// The channels of the word's letters.
+const WORD_CHANNELS: [&str; WORD_LETTERS] = [
+    "word.1", "word.2", "word.3", "word.4", "word.5", "word.6", "word.7", "word.8",
+];
+
+/// The first surface along `ray` that is not fully transparent (a
+/// material that lets all light through unbent and shines none: `trans =
+/// 1` alone, or a honeycomb's invisible walls), as the ray it was met on,
+/// the arc length before that ray's origin, the hit and the prepared
+/// object's index; the faces crossed on the way pushed onto `word`.
+/// `None` where nothing else is met.
+fn first_visible(
+    scene: &crate::scene::PreparedScene,
+    mut ray: Ray,
+    word: &mut Vec<usize>,
+) -> Option<(Ray, f64, hgeom::Hit, usize)> {
+    let mut before = 0.0;
+    for _ in 0..MAX_CLEAR_SURFACES {
+        let traced = scene.trace_recording(&ray, T_MIN, |face| word.push(face));
+        let Nearest::Hit(hit, index) = traced.nearest else {
+            return None;
+        };
+        let object = scene.objects.get(index)?;
+        let clear = scene
+            .materials
+            .get(object.material_of(&hit))
+            .is_some_and(|m| crate::bsdf::clear_transmission(m) >= 1.0 && m.emission.is_black());
+        if !clear {
+            return Some((traced.ray, before + traced.travelled, hit, index));
+        }
+        // On through it, from where it was met.
+        before += traced.travelled + hit.t;
+        ray = Ray {
+            origin: traced.ray.at(hit.t),
+            dir: traced.ray.tangent_at(hit.t),
+        };
+    }
+    None
 }
 
 /// A honeycomb hit's rank and colour class (module docs), `NaN` for

@@ -21,6 +21,11 @@ pub struct PreparedSpace {
     /// honeycomb of the domain's cells would have in this picture
     /// (`docs/manifolds.md`).
     pub horizon: f64,
+    /// The number each prepared object has in the scene's object list
+    /// (as `check --emit ir` lists them, from 1): an object and all its
+    /// images share it; the domain's rods (`domain = w, #M`) are one more
+    /// than the last object.
+    pub numbers: Vec<usize>,
 }
 
 impl PreparedSpace {

@@ -52,6 +52,7 @@ pub(crate) fn unfold(
     let mut unfolded = scene.clone();
     unfolded.settings.sky = None;
     unfolded.objects.clear();
+    let mut numbers = Vec::new();
     for (index, o) in scene.objects.iter().enumerate() {
         let what = || format!("object {}", index + 1);
         for copy in object_images(&q, o).map_err(|e| match e {
@@ -63,10 +64,13 @@ pub(crate) fn unfold(
             Failure::OutOfRange => RenderError::OutOfRange { what: what() },
         })? {
             unfolded.objects.push(copy);
+            numbers.push(index + 1);
         }
     }
     if let Some(d) = space.domain {
-        unfolded.objects.extend(domain_edges(&q, d)?);
+        let rods = domain_edges(&q, d)?;
+        numbers.extend(std::iter::repeat_n(scene.objects.len() + 1, rods.len()));
+        unfolded.objects.extend(rods);
     }
     if scene.lights.len() > MAX_SPACE_LIGHTS {
         return Err(invalid(format!(
@@ -119,6 +123,7 @@ pub(crate) fn unfold(
         space: PreparedSpace {
             space: q.transformed(&to_canonical),
             horizon,
+            numbers,
         },
     })
 }

@@ -17,6 +17,8 @@ pub struct Traced {
     /// The arc length travelled before [`Traced::ray`]'s origin: the hit
     /// lies `travelled + hit.t` along the whole path (fog, absorption).
     pub travelled: f64,
+    /// How many faces the ray crossed (0 in H³).
+    pub crossings: u32,
 }
 
 impl PreparedScene {
@@ -30,26 +32,37 @@ impl PreparedScene {
     /// meets something, reaches the horizon or has crossed
     /// [`MAX_SPACE_CROSSINGS`] faces (both a miss: `docs/manifolds.md`).
     pub fn trace(&self, ray: &Ray, t_min: f64) -> Traced {
+        self.trace_recording(ray, t_min, |_| {})
+    }
+
+    /// [`PreparedScene::trace`], calling `crossed(face)` for each face the
+    /// ray leaves the domain by, in order (the word of the group element
+    /// that takes the tile it meets onto the domain: `docs/manifolds.md`).
+    pub fn trace_recording(&self, ray: &Ray, t_min: f64, mut crossed: impl FnMut(usize)) -> Traced {
         let Some(space) = &self.space else {
             return Traced {
                 nearest: self.nearest(ray, t_min),
                 ray: *ray,
                 travelled: 0.0,
+                crossings: 0,
             };
         };
-        let miss = |ray: Ray, travelled: f64| Traced {
+        let miss = |ray: Ray, travelled: f64, crossings: u32| Traced {
             nearest: Nearest::Miss,
             ray,
             travelled,
+            crossings,
         };
         if !(ray.origin.is_finite() && ray.dir.is_finite()) {
             return Traced {
                 nearest: Nearest::Failure,
                 ray: *ray,
                 travelled: 0.0,
+                crossings: 0,
             };
         }
         let (mut ray, mut travelled, mut lo) = (*ray, 0.0, t_min);
+        let mut crossings = 0;
         for _ in 0..=MAX_SPACE_CROSSINGS {
             let left = space.horizon - travelled;
             if !(left > lo) {
@@ -67,16 +80,19 @@ impl PreparedScene {
                         nearest: found,
                         ray,
                         travelled,
+                        crossings,
                     };
                 }
             }
             let Some(c) = exit else {
                 break;
             };
+            crossed(c.face);
+            crossings += 1;
             ray = space.space.carry(&ray, c);
             travelled += c.t;
             lo = (lo - c.t).max(0.0);
         }
-        miss(ray, travelled)
+        miss(ray, travelled, crossings)
     }
 }

@@ -131,3 +131,113 @@ fn layers_read_back_from_the_exr() {
         layers.channel("Z").unwrap()[MIDDLE]
     );
 }
+
+/// Layers stop at the first surface that is not fully transparent: a
+/// sphere of `trans = 1` (nothing reflected, index 1) in front of an opaque
+/// one is passed through, and every layer is the opaque sphere's.
+#[test]
+fn a_fully_transparent_surface_does_not_stop_the_layers() {
+    let source = "Globals { resolution = (5, 5); from = (0, 0, 0); to = (0, 0, 0.3); }\n\
+         BRDFs { clear: diffuse = (0, 0, 0), specular = (0, 0, 0), trans = 1; solid: diffuse = (1, 1, 1); }\n\
+         Objects { Sphere (0, 0, 0.2), 0.1, #clear; Sphere (0, 0, 0.6), 0.1, #solid; }\n";
+    let layers = render_aovs(
+        &compile(source),
+        &RenderOptions::default(),
+        None,
+        &[Aov::Depth, Aov::Id],
+    )
+    .unwrap();
+    let at = |name: &str| f64::from(layers.channel(name).unwrap()[MIDDLE]);
+    assert_eq!(at("id"), 2.0);
+    // The opaque sphere's near side: 2 atanh(0.6) - 0.1.
+    let expected = 2.0 * 0.6f64.atanh() - 0.1;
+    assert!(
+        (at("Z") - expected).abs() < 1e-5,
+        "{} vs {expected}",
+        at("Z")
+    );
+    // A sphere that reflects a little is not fully transparent.
+    let tinted = source.replace(
+        "diffuse = (0, 0, 0), specular",
+        "diffuse = (0.1, 0, 0), specular",
+    );
+    let layers = render_aovs(
+        &compile(&tinted),
+        &RenderOptions::default(),
+        None,
+        &[Aov::Id],
+    )
+    .unwrap();
+    assert_eq!(layers.channel("id").unwrap()[MIDDLE], 1.0);
+}
+
+/// In a space, `id` follows the object list of `check --emit ir` (each
+/// object's images share its number) and the domain's rods are numbered
+/// one after the last object.
+#[test]
+fn in_a_space_ids_follow_the_object_list_and_rods_come_after() {
+    let source = "Globals { resolution = (24, 24); space = seifert_weber; domain = 0.04, #a; \
+                  from = (0, 0, 0); to = (0, 0, 0.3); fov = 100; }\n\
+         BRDFs { a: diffuse = (1, 1, 1); }\n\
+         Objects { Sphere (0.3, 0.3, -0.2), 0.05, #a; Sphere (0, 0, 0.25), 0.08, #a; }\n";
+    let layers = render_aovs(
+        &compile(source),
+        &RenderOptions::default(),
+        None,
+        &[Aov::Id],
+    )
+    .unwrap();
+    let ids = layers.channel("id").unwrap();
+    // The middle of an even picture: the pixel just off the axis.
+    assert_eq!(ids[12 * 24 + 12], 2.0);
+    assert!(
+        ids.iter().all(|&id| [0.0, 1.0, 2.0, 3.0].contains(&id)),
+        "{ids:?}"
+    );
+    assert!(ids.contains(&3.0), "no rod seen");
+}
+
+/// The `word` layer lists the faces the ray left the domain by, as hgeom's
+/// own walk of the same ray does, and its length; 0 in H³.
+#[test]
+fn the_word_layer_is_the_faces_crossed() {
+    let source = "Globals { resolution = (5, 5); space = seifert_weber; domain = 0.04, #a; \
+                  from = (0, 0, 0); to = (0.1, 0.2, 0.7); fov = 10; }\n\
+         BRDFs { a: diffuse = (1, 1, 1); }\n\
+         Objects { Sphere (0.05, -0.05, -0.1), 0.02, #a; }\n";
+    let layers = render_aovs(
+        &compile(source),
+        &RenderOptions::default(),
+        None,
+        &[Aov::Word, Aov::Depth],
+    )
+    .unwrap();
+    let at = |name: &str| f64::from(layers.channel(name).unwrap()[MIDDLE]);
+    let length = at("word.length") as usize;
+    assert!(length >= 1, "the middle ray crosses a face before a rod");
+    let space = hgeom::QuotientSpace::seifert_weber().unwrap();
+    let mut ray =
+        hgeom::Ray::from_origin(hgeom::glam::DVec3::new(0.1, 0.2, 0.7).normalize()).unwrap();
+    for letter in 1..=length.min(8) {
+        let c = space.exit(&ray).unwrap();
+        assert_eq!(
+            at(&format!("word.{letter}")),
+            (c.face + 1) as f64,
+            "letter {letter}"
+        );
+        ray = space.carry(&ray, c);
+    }
+    if length < 8 {
+        assert_eq!(at(&format!("word.{}", length + 1)), 0.0);
+    }
+    // In H³ every word is empty.
+    let h3 = "Globals { resolution = (5, 5); }\nBRDFs { diffuse = (1, 1, 1); }\nObjects { Sphere (0, 0, 0.5), 0.1, #1; }\n";
+    let layers = render_aovs(&compile(h3), &RenderOptions::default(), None, &[Aov::Word]).unwrap();
+    assert!(
+        layers
+            .channel("word.length")
+            .unwrap()
+            .iter()
+            .all(|&x| x == 0.0)
+    );
+}

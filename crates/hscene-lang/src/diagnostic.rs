@@ -167,6 +167,7 @@ codes! {
     SqueezedDisk = "HSC1011", Warning, "great disk squeezed into the middle";
     UpRoll = "HSC1012", Warning, "up point written as a direction";
     OutsideDomain = "HSC1013", Warning, "outside the fundamental domain";
+    VolumeMismatch = "HSC1014", Warning, "space file's volume differs from its domain's";
 }
 
 impl Code {
@@ -283,7 +284,7 @@ mod tests {
     #[test]
     fn code_table_is_consistent() {
         assert_eq!(Code::ALL.len(), CODES.len());
-        assert_eq!(Code::ALL.len(), 56);
+        assert_eq!(Code::ALL.len(), 57);
         let mut strings = HashSet::new();
         for &(code, s, sev, title) in CODES {
             assert_eq!(code.as_str(), s);

@@ -98,6 +98,9 @@ struct Lowerer<'d> {
     /// A point reference failed (undefined, or something else where a point
     /// was needed, or text was skipped): the point meant may look unused.
     point_ref_failed: bool,
+    /// `frames = N` was refused: the scene's frame count is unknown, so
+    /// no lint may say it has one frame.
+    frames_refused: bool,
     /// The same for materials.
     material_ref_failed: bool,
     /// Where mesh file names are resolved from; `None`: the current
@@ -163,6 +166,7 @@ pub(crate) fn lower(
         files: &options.files,
         inputs: Vec::new(),
         point_ref_failed: file.incomplete,
+        frames_refused: false,
         primitives: 0,
         primitive_cap_reported: false,
         light_cap_reported: false,

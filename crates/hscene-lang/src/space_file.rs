@@ -44,11 +44,60 @@ pub enum SpaceFileError {
     Io(#[from] std::io::Error),
 }
 
+/// A number as a JSON number or a decimal string of any length (SnapPy's
+/// high-precision pairings, `str(x)` of a `ManifoldHP`'s entries), rounded
+/// to the nearest f64 either way (serde_json's `float_roundtrip` and
+/// `str::parse` both round correctly).
+#[derive(Clone, Copy, Debug)]
+struct Entry(f64);
+
+impl<'de> Deserialize<'de> for Entry {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Entry, D::Error> {
+        struct Visit;
+        impl serde::de::Visitor<'_> for Visit {
+            type Value = Entry;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a number, or a decimal number in a string")
+            }
+            fn visit_f64<E: serde::de::Error>(self, x: f64) -> Result<Entry, E> {
+                Ok(Entry(x))
+            }
+            fn visit_i64<E: serde::de::Error>(self, x: i64) -> Result<Entry, E> {
+                Ok(Entry(x as f64))
+            }
+            fn visit_u64<E: serde::de::Error>(self, x: u64) -> Result<Entry, E> {
+                Ok(Entry(x as f64))
+            }
+            fn visit_str<E: serde::de::Error>(self, s: &str) -> Result<Entry, E> {
+                // Only decimal numbers: not "inf" or "NaN", which Rust's
+                // parser takes. Spaces are dropped: SnapPy writes small
+                // high-precision numbers as "1.25 E-5".
+                let t: String = s.chars().filter(|c| *c != ' ').collect();
+                let decimal = !t.is_empty()
+                    && t.len() <= MAX_DIGITS
+                    && t.bytes()
+                        .all(|b| b.is_ascii_digit() || b"+-.eE".contains(&b))
+                    && t.bytes().any(|b| b.is_ascii_digit());
+                match t.parse::<f64>() {
+                    Ok(x) if decimal && x.is_finite() => Ok(Entry(x)),
+                    _ => Err(E::custom(format!(
+                        "expected a decimal number in a string of at most {MAX_DIGITS} characters"
+                    ))),
+                }
+            }
+        }
+        d.deserialize_any(Visit)
+    }
+}
+
+/// The longest decimal string an entry may be (ManifoldHP's have 66).
+pub const MAX_DIGITS: usize = 1024;
+
 /// The file's contents.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct SpaceFile {
-    pairings: Vec<[[f64; 4]; 4]>,
+    pairings: Vec<[[Entry; 4]; 4]>,
     #[serde(default)]
     time: Option<String>,
     // Notes a tool may leave; not used.
@@ -56,37 +105,77 @@ struct SpaceFile {
     _name: Option<serde_json::Value>,
     #[serde(default, rename = "source")]
     _source: Option<serde_json::Value>,
-    #[serde(default, rename = "volume")]
-    _volume: Option<serde_json::Value>,
+    #[serde(default)]
+    volume: Option<Entry>,
+}
+
+/// What a space file holds: the pairings, and the manifold's volume where
+/// the file gives it (SnapPy's `M.volume()`), to compare with the domain's.
+#[derive(Clone, Debug)]
+pub struct SpaceFileData {
+    /// The pairings, Lorentz matrices with the time coordinate last.
+    pub pairings: Vec<DMat4>,
+    /// The volume the file gives.
+    pub volume: Option<f64>,
 }
 
 /// The pairings in `path`, as Lorentz matrices with the time coordinate
 /// last.
 pub fn load(path: &Path) -> Result<Vec<DMat4>, SpaceFileError> {
+    load_data(path).map(|d| d.pairings)
+}
+
+/// The pairings and the volume in `path`.
+pub fn load_data(path: &Path) -> Result<SpaceFileData, SpaceFileError> {
     let bytes = read_regular_file(path, MAX_SPACE_FILE_BYTES).map_err(|e| match e {
         BoundedReadError::NotAFile => SpaceFileError::NotAFile,
         BoundedReadError::TooLarge(size) => SpaceFileError::TooLarge { size },
         BoundedReadError::Io(e) => SpaceFileError::Io(e),
     })?;
-    let text = String::from_utf8(bytes)
-        .map_err(|e| SpaceFileError::Format(format!("not UTF-8 text: {e}")))?;
-    parse(&text)
+    let text = String::from_utf8(bytes).map_err(|e| {
+        SpaceFileError::Format(format!(
+            "not UTF-8 text (byte {} is not)",
+            e.utf8_error().valid_up_to()
+        ))
+    })?;
+    parse_data(&text)
 }
 
 /// The pairings in a space file's text.
 pub fn parse(text: &str) -> Result<Vec<DMat4>, SpaceFileError> {
+    parse_data(text).map(|d| d.pairings)
+}
+
+/// serde_json's message without what it quotes from the file: only its
+/// kind and place (a file's content is not repeated back, as mesh errors
+/// do not).
+fn json_error(e: &serde_json::Error) -> String {
+    use serde_json::error::Category;
+    let what = match e.classify() {
+        Category::Io => "cannot be read",
+        Category::Syntax => "is not valid JSON",
+        Category::Eof => "ends before its JSON does",
+        Category::Data => {
+            "is not a space file's JSON ({\"pairings\": [4 × 4 matrices of numbers]})"
+        }
+    };
+    format!("the file {what} at line {} column {}", e.line(), e.column())
+}
+
+/// The pairings and volume in a space file's text.
+pub fn parse_data(text: &str) -> Result<SpaceFileData, SpaceFileError> {
     let file: SpaceFile =
-        serde_json::from_str(text).map_err(|e| SpaceFileError::Format(e.to_string()))?;
+        serde_json::from_str(text).map_err(|e| SpaceFileError::Format(json_error(&e)))?;
     let time_first = match file.time.as_deref() {
         None | Some("first") => true,
         Some("last") => false,
-        Some(other) => {
-            return Err(SpaceFileError::Format(format!(
-                "`time` is \"first\" or \"last\", not {other:?}"
-            )));
+        Some(_) => {
+            return Err(SpaceFileError::Format(
+                "`time` is \"first\" or \"last\"".into(),
+            ));
         }
     };
-    Ok(file
+    let pairings = file
         .pairings
         .iter()
         .map(|rows| {
@@ -94,14 +183,18 @@ pub fn parse(text: &str) -> Result<Vec<DMat4>, SpaceFileError> {
             // column (c+1)%4 of the time-first one.
             let at = |r: usize, c: usize| {
                 if time_first {
-                    rows[(r + 1) % 4][(c + 1) % 4]
+                    rows[(r + 1) % 4][(c + 1) % 4].0
                 } else {
-                    rows[r][c]
+                    rows[r][c].0
                 }
             };
             DMat4::from_cols_array_2d(&std::array::from_fn(|c| std::array::from_fn(|r| at(r, c))))
         })
-        .collect())
+        .collect();
+    Ok(SpaceFileData {
+        pairings,
+        volume: file.volume.map(|v| v.0),
+    })
 }
 
 #[cfg(test)]
@@ -117,6 +210,52 @@ mod tests {
         assert_eq!(m.x_axis.x, 2.0);
         assert_eq!(m.x_axis.w, 1.0);
         assert_eq!(m.y_axis.y, 1.0);
+    }
+
+    #[test]
+    fn decimal_strings_longer_than_f64_round_to_nearest() {
+        // 1 + 2^-53 + a little rounds up to the next f64 after 1 only if
+        // every digit is read.
+        let up = "1.00000000000000011102230246251565404236316680908203125000000001";
+        let text = format!(
+            r#"{{"pairings": [[["{up}", "0", 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, "-1e-400"]]], "volume": "2.029883212819307250042405108549040571883378615060599584034978214"}}"#
+        );
+        let d = parse_data(&text).unwrap();
+        assert_eq!(d.pairings[0].w_axis.w, 1.0 + f64::EPSILON);
+        assert_eq!(d.pairings[0].z_axis.z, -0.0);
+        assert_eq!(d.volume, Some(2.029_883_212_819_307_4));
+        // The old files, numbers only, read as before.
+        let old = r#"{"pairings": [[[2, 1, 0, 0], [1, 2, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]]}"#;
+        assert_eq!(parse(old).unwrap()[0].w_axis.w, 2.0);
+        // SnapPy's form of a small high-precision number.
+        let small =
+            r#"{"pairings": [[["1.5 E-5", 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]]}"#;
+        assert_eq!(parse(small).unwrap()[0].w_axis.w, 1.5e-5);
+    }
+
+    #[test]
+    fn strings_that_are_not_decimal_numbers_are_refused() {
+        for bad in ["inf", "NaN", "", "1e400", "0x10", "1,5"] {
+            let text = format!(
+                r#"{{"pairings": [[["{bad}", 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]]}}"#
+            );
+            assert!(
+                matches!(parse(&text), Err(SpaceFileError::Format(_))),
+                "{bad}"
+            );
+        }
+    }
+
+    #[test]
+    fn errors_do_not_quote_the_file() {
+        let text = r#"{"pairings": [], "secret-key-123": 1}"#;
+        let e = parse(text).unwrap_err().to_string();
+        assert!(!e.contains("secret"), "{e}");
+        assert!(e.contains("line 1"), "{e}");
+        let e = parse(r#"{"pairings": [], "time": "password"}"#)
+            .unwrap_err()
+            .to_string();
+        assert!(!e.contains("password"), "{e}");
     }
 
     #[test]

@@ -127,7 +127,7 @@ impl QuotientSpace {
                 .map(|n| Ok(Isometry::reflection(&HPlane::from_normal(*n)?)))
                 .collect::<Result<Vec<_>, GeomError>>()?;
             let matrices: Vec<DMat4> = pairings.iter().map(Isometry::to_lorentz).collect();
-            check_cycles(&cell.relations(&faces, symbol.r()), true)?;
+            check_cycles(&cell.relations(&faces, symbol.r()), &[], true)?;
             return Ok(QuotientSpace {
                 kind,
                 domain: None,
@@ -181,7 +181,7 @@ impl QuotientSpace {
         let matrices: Vec<DMat4> = pairings.iter().map(Isometry::to_lorentz).collect();
         check_pairings(&domain, &partner, &matrices)?;
         let cycles = edge_cycles(&domain, &partner, &matrices)?;
-        check_cycles(&cycles, kind.is_mirrored())?;
+        check_cycles(&cycles, &matrices, kind.is_mirrored())?;
         Ok(QuotientSpace {
             kind,
             pairings,

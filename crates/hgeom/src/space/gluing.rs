@@ -26,6 +26,7 @@ use crate::error::GeomError;
 use crate::isometry::Isometry;
 use crate::lorentz;
 
+use super::dirichlet::{PAIRING_TOLERANCE, size};
 use super::polyhedron::DomainPolyhedron;
 
 /// One edge cycle: the faces left by in turn, the sum of the dihedral
@@ -38,7 +39,15 @@ pub struct EdgeCycle {
     pub angle_sum: f64,
     /// `g_{f_k} ∘ ... ∘ g_{f_1}`, which fixes the starting edge.
     pub holonomy: DMat4,
+    /// The product of the pairings' sizes (largest entries), which bounds
+    /// the size of the holonomy and of its rounding.
+    pub size: f64,
 }
+
+/// The most a cycle's tolerance grows with its size: a gluing that does
+/// not close is off by a finite angle or a translation along the edge,
+/// never by this little.
+const MAX_CYCLE_TOLERANCE: f64 = 1e-4;
 
 /// The Lorentz matrix of the pairing that maps vertices `from` of face
 /// `i` to `to` of face `j` (module docs).
@@ -85,14 +94,16 @@ pub(super) fn check_pairings(
         if partner.get(j) != Some(&i) {
             return Err(bad("names a partner that is not paired back with it"));
         }
-        if (*m * domain.faces()[i] + domain.faces()[j])
-            .abs()
-            .max_element()
-            > 1e-9
-        {
-            return Err(bad(
-                "does not send the outside of its face to the inside of its partner",
-            ));
+        let (ni, nj) = (domain.faces()[i], domain.faces()[j]);
+        let error = (*m * ni + nj).abs().max_element();
+        let tolerance = PAIRING_TOLERANCE * size(m) * ni.abs().max_element().max(1.0);
+        if !(error <= tolerance) {
+            return Err(GeomError::InexactPairing {
+                face: i + 1,
+                problem: "does not send the outside of its face to the inside of its partner",
+                error,
+                tolerance,
+            });
         }
         let mut images: Vec<usize> = Vec::new();
         for &k in domain.face_vertices(i) {
@@ -106,18 +117,15 @@ pub(super) fn check_pairings(
         if images.len() != domain.face_vertices(j).len() {
             return Err(bad("does not map its face onto its partner's whole face"));
         }
-        let round_trip = matrices[j] * *m - DMat4::IDENTITY;
-        let defect = [
-            round_trip.x_axis,
-            round_trip.y_axis,
-            round_trip.z_axis,
-            round_trip.w_axis,
-        ]
-        .iter()
-        .map(|c| c.abs().max_element())
-        .fold(0.0, f64::max);
-        if defect > 1e-9 {
-            return Err(bad("is not undone by its partner's pairing"));
+        let error = size(&(matrices[j] * *m - DMat4::IDENTITY));
+        let tolerance = PAIRING_TOLERANCE * size(&matrices[j]) * size(m);
+        if !(error <= tolerance) {
+            return Err(GeomError::InexactPairing {
+                face: i + 1,
+                problem: "is not undone by its partner's pairing",
+                error,
+                tolerance,
+            });
         }
     }
     Ok(())
@@ -142,6 +150,7 @@ pub(super) fn edge_cycles(
         let mut faces = Vec::new();
         let mut angle_sum = 0.0;
         let mut holonomy = DMat4::IDENTITY;
+        let mut cycle_size = 1.0f64;
         for _ in 0..=4 * edges.len() {
             seen[e][side] = true;
             let f = edges[e].faces[side];
@@ -149,6 +158,7 @@ pub(super) fn edge_cycles(
             angle_sum += domain.dihedral(&edges[e]);
             let m = matrices[f];
             holonomy = m * holonomy;
+            cycle_size = (cycle_size * size(&m)).min(1e300);
             let ends = edges[e]
                 .vertices
                 .map(|k| domain.vertex_at(m * domain.vertices()[k]));
@@ -188,6 +198,7 @@ pub(super) fn edge_cycles(
             faces,
             angle_sum,
             holonomy,
+            size: cycle_size,
         });
     }
     Ok(cycles)
@@ -228,24 +239,54 @@ fn mark_reverse(
     }
 }
 
-/// Checks each cycle: a manifold's sums to 2π with the identity; a
-/// mirror's (two faces, each its own partner) keeps the Coxeter relation.
-pub(super) fn check_cycles(cycles: &[EdgeCycle], mirrors: bool) -> Result<(), GeomError> {
+/// Checks each cycle: a manifold's sums to 2π with the identity, to
+/// `τ k max|M|²` in the angle and `τ k Π|M|` in the holonomy's entries
+/// for a cycle of `k` faces (both at most [`MAX_CYCLE_TOLERANCE`]); a
+/// mirror's (two faces, each its own partner, exact built-in cells)
+/// keeps the Coxeter relation to 1e-10.
+pub(super) fn check_cycles(
+    cycles: &[EdgeCycle],
+    matrices: &[DMat4],
+    mirrors: bool,
+) -> Result<(), GeomError> {
+    use std::f64::consts::PI;
     for c in cycles {
-        let closes = if mirrors {
+        let (error, tolerance) = if mirrors {
             // (g_b g_a)^r = I, with r = 2π / α = 4π / S.
-            let r = (4.0 * std::f64::consts::PI / c.angle_sum).round();
-            (4.0 * std::f64::consts::PI / c.angle_sum - r).abs() < 1e-9
-                && r >= 2.0
-                && is_identity(&power(c.holonomy, r as u32), 1e-10)
+            let r = (4.0 * PI / c.angle_sum).round();
+            let off = (4.0 * PI / c.angle_sum - r).abs();
+            let power_error = if (2.0..1e3).contains(&r) {
+                size(&(power(c.holonomy, r as u32) - DMat4::IDENTITY))
+            } else {
+                f64::INFINITY
+            };
+            // Both measured against 1e-10: report the larger ratio.
+            (off.max(power_error), 1e-10)
         } else {
-            (c.angle_sum - 2.0 * std::f64::consts::PI).abs() < 1e-12
-                && is_identity(&c.holonomy, 1e-12)
+            let k = c.faces.len() as f64;
+            let largest = c
+                .faces
+                .iter()
+                .map(|&f| size(&matrices[f]))
+                .fold(1.0, f64::max);
+            let angle_tolerance =
+                (PAIRING_TOLERANCE * k * largest * largest).clamp(1e-12, MAX_CYCLE_TOLERANCE);
+            let holonomy_tolerance =
+                (PAIRING_TOLERANCE * k * c.size).clamp(1e-12, MAX_CYCLE_TOLERANCE);
+            let angle_error = (c.angle_sum - 2.0 * PI).abs();
+            let holonomy_error = size(&(c.holonomy - DMat4::IDENTITY));
+            if angle_error / angle_tolerance >= holonomy_error / holonomy_tolerance {
+                (angle_error, angle_tolerance)
+            } else {
+                (holonomy_error, holonomy_tolerance)
+            }
         };
-        if !closes {
+        if !(error <= tolerance) {
             return Err(GeomError::EdgeCycle {
                 faces: c.faces.iter().map(|f| f + 1).collect(),
                 degrees: c.angle_sum.to_degrees(),
+                error,
+                tolerance,
             });
         }
     }
@@ -257,19 +298,14 @@ pub(super) fn power(m: DMat4, k: u32) -> DMat4 {
     (0..k).fold(DMat4::IDENTITY, |acc, _| m * acc)
 }
 
-/// True if `m` is the identity to `tolerance` in every entry.
-pub(super) fn is_identity(m: &DMat4, tolerance: f64) -> bool {
-    let d = *m - DMat4::IDENTITY;
-    [d.x_axis, d.y_axis, d.z_axis, d.w_axis]
-        .iter()
-        .all(|c| c.abs().max_element() <= tolerance)
-}
-
 /// The pairings as isometries (their exact, stable form), from their
-/// matrices.
+/// matrices; the orthogonal part is rounded to `τ |M|²` like the rest.
 pub(super) fn isometries(matrices: &[DMat4]) -> Result<Vec<Isometry>, GeomError> {
     matrices
         .iter()
-        .map(|m| Isometry::from_lorentz(*m))
+        .map(|m| {
+            let s = size(m);
+            Isometry::from_lorentz_within(*m, (PAIRING_TOLERANCE * s * s).max(1e-9))
+        })
         .collect()
 }

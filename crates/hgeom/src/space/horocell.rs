@@ -203,6 +203,8 @@ impl HoroCell {
                 cycles.push(EdgeCycle {
                     faces: vec![a, b],
                     angle_sum: 2.0 * c.clamp(-1.0, 1.0).acos(),
+                    size: super::dirichlet::size(&reflection(faces[a]))
+                        * super::dirichlet::size(&reflection(faces[b])),
                     holonomy,
                 });
             }

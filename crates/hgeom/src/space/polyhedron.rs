@@ -8,18 +8,22 @@
 //! ([`lorentz::orthogonal_complement`]): a point of the hyperboloid when `x`
 //! is timelike, an ideal point when it is null (the three planes are
 //! tangent to one horosphere's centre), and a point beyond the absolute
-//! (no vertex of a finite-volume domain) when it is spacelike. A vertex of
-//! the polyhedron is such a point on the inner side of every other plane.
+//! (no vertex of a finite-volume domain) when it is spacelike. Which
+//! planes meet at each vertex is found by clipping each face's plane by
+//! the others (`face_polygons.rs`, `O(F²)` for `F` faces); the vertex is
+//! then computed from three of them, the most transversal.
 
-use glam::DVec4;
+use glam::{DVec3, DVec4};
 
 use crate::error::GeomError;
 use crate::lorentz;
 
-/// How far off a plane (`|<x,n>| / x.w`) a vertex may be and still lie on
-/// it: the built-in domains' vertices are within 1e-14 of their planes;
-/// the next vertex of any domain is farther than this by many orders.
-const ON_PLANE: f64 = 1e-9;
+use super::face_polygons::{KleinPlane, MAX_VERTICES, MERGE, face_polygon};
+
+/// How near the sphere at infinity (in `|k|² - 1` for the Klein point `k`)
+/// a vertex is ideal: a finite vertex this near would be farther than 9
+/// from the origin.
+const IDEAL: f64 = 4.0 * MERGE;
 
 /// An edge of the domain: the two faces that meet in it and its two
 /// end vertices.
@@ -61,65 +65,66 @@ impl DomainPolyhedron {
                 faces.len()
             )));
         }
-        for n in &faces {
-            if !n.is_finite() || (lorentz::dot(*n, *n) - 1.0).abs() > 1e-9 {
-                return Err(GeomError::NotFinite);
-            }
+        let mut planes = Vec::with_capacity(faces.len());
+        for (i, n) in faces.iter().enumerate() {
+            let plane = (n.is_finite() && (lorentz::dot(*n, *n) - 1.0).abs() <= 1e-9)
+                .then(|| KleinPlane::new(*n))
+                .flatten();
+            let Some(plane) = plane else {
+                return Err(GeomError::BadDomain(format!(
+                    "face {} is not a plane with the origin on its inner side",
+                    i + 1
+                )));
+            };
+            planes.push(plane);
         }
-        let mut vertices: Vec<DVec4> = Vec::new();
-        let mut ideal = Vec::new();
-        let m = faces.len();
-        for a in 0..m {
-            for b in a + 1..m {
-                for c in b + 1..m {
-                    let Some((v, at_infinity)) = meeting_point(faces[a], faces[b], faces[c]) else {
-                        continue;
-                    };
-                    if !faces.iter().all(|n| lorentz::dot(v, *n) >= -ON_PLANE * v.w) {
-                        continue;
-                    }
-                    if vertices
-                        .iter()
-                        .any(|u| (u.truncate() / u.w - v.truncate() / v.w).length() < 1e-7)
-                    {
-                        continue;
-                    }
-                    vertices.push(v);
-                    ideal.push(at_infinity);
+        let mut grid = VertexGrid::default();
+        let mut faces_at: Vec<Vec<usize>> = Vec::new();
+        let mut face_vertices = Vec::with_capacity(faces.len());
+        for a in 0..faces.len() {
+            let polygon = face_polygon(&planes, a)?;
+            let mut ids = Vec::with_capacity(polygon.len());
+            for corner in polygon {
+                let id = grid.find_or_insert(corner.at);
+                if id == faces_at.len() {
+                    faces_at.push(Vec::new());
+                }
+                faces_at[id].push(a);
+                faces_at[id].extend(corner.faces);
+                if ids.last() != Some(&id) && ids.first() != Some(&id) {
+                    ids.push(id);
                 }
             }
-        }
-        let face_vertices: Vec<Vec<usize>> = faces
-            .iter()
-            .map(|n| {
-                (0..vertices.len())
-                    .filter(|&k| lorentz::dot(vertices[k], *n).abs() <= ON_PLANE * vertices[k].w)
-                    .collect()
-            })
-            .collect();
-        if let Some(face) = face_vertices.iter().position(|v| v.len() < 3) {
-            return Err(GeomError::BadDomain(format!(
-                "face {} has {} vertices: the domain is open to the absolute there",
-                face + 1,
-                face_vertices[face].len()
-            )));
-        }
-        let mut edges = Vec::new();
-        for a in 0..m {
-            for b in a + 1..m {
-                let shared: Vec<usize> = face_vertices[a]
-                    .iter()
-                    .copied()
-                    .filter(|k| face_vertices[b].contains(k))
-                    .collect();
-                if let [u, v] = shared[..] {
-                    edges.push(DomainEdge {
-                        faces: [a, b],
-                        vertices: [u, v],
-                    });
-                }
+            if ids.len() < 3 {
+                return Err(GeomError::BadDomain(format!(
+                    "face {} meets the domain only in an edge or a vertex (a redundant pairing)",
+                    a + 1
+                )));
+            }
+            face_vertices.push(ids);
+            if faces_at.len() > MAX_VERTICES {
+                return Err(GeomError::BadDomain(format!(
+                    "the domain has more than {MAX_VERTICES} vertices"
+                )));
             }
         }
+        let mut vertices = Vec::with_capacity(faces_at.len());
+        let mut ideal = Vec::with_capacity(faces_at.len());
+        for (k, through) in faces_at.iter_mut().enumerate() {
+            through.sort_unstable();
+            through.dedup();
+            let (v, at_infinity) = vertex_from_faces(&faces, through).ok_or_else(|| {
+                GeomError::BadDomain(format!(
+                    "the vertex of faces {:?} lies beyond the sphere at infinity: the domain is \
+                     open to the absolute there (infinite volume)",
+                    through.iter().map(|f| f + 1).collect::<Vec<_>>()
+                ))
+            })?;
+            debug_assert!(k == vertices.len());
+            vertices.push(v);
+            ideal.push(at_infinity);
+        }
+        let edges = edges_of(&face_vertices)?;
         Ok(DomainPolyhedron {
             faces,
             vertices,
@@ -171,7 +176,11 @@ impl DomainPolyhedron {
         let p = x.truncate() / x.w;
         self.vertices
             .iter()
-            .position(|v| (v.truncate() / v.w - p).length() < 1e-7)
+            .map(|v| (v.truncate() / v.w - p).length())
+            .enumerate()
+            .filter(|(_, d)| *d < 1e-7)
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .map(|(k, _)| k)
     }
 
     /// The polyhedron moved by the Lorentz matrix `m`.
@@ -193,29 +202,112 @@ impl DomainPolyhedron {
     }
 }
 
-/// The point where three planes meet, and whether it is ideal; `None`
-/// when they meet beyond the absolute or share a line.
-fn meeting_point(a: DVec4, b: DVec4, c: DVec4) -> Option<(DVec4, bool)> {
+/// The vertex on the planes `through` (three or more), from the three
+/// of them that meet most transversally (a greedy choice: the first, the
+/// one least parallel to it, the one farthest from their line), as the
+/// line of their Lorentz-orthogonal complement: a hyperboloid point, or an
+/// ideal point (time 1) where the complement is null to [`IDEAL`]; `None`
+/// beyond the absolute.
+fn vertex_from_faces(faces: &[DVec4], through: &[usize]) -> Option<(DVec4, bool)> {
+    let unit = |f: usize| faces[f] / faces[f].length();
+    let a = unit(*through.first()?);
+    let b = through
+        .iter()
+        .map(|&f| unit(f))
+        .min_by(|x, y| x.dot(a).abs().total_cmp(&y.dot(a).abs()))?;
+    let c = through.iter().map(|&f| unit(f)).max_by(|x, y| {
+        let gx = lorentz::orthogonal_complement(a, b, *x).length();
+        let gy = lorentz::orthogonal_complement(a, b, *y).length();
+        gx.total_cmp(&gy)
+    })?;
     let mut x = lorentz::orthogonal_complement(a, b, c);
     let scale = x.abs().max_element();
-    if !(scale > 1e-12) {
+    if !(scale > 0.0) || !scale.is_finite() {
         return None;
     }
     x /= scale;
     if x.w < 0.0 {
         x = -x;
     }
+    // |k|² - 1 for the Klein point k = x / x.w.
     let q = lorentz::dot(x, x) / (x.w * x.w);
-    if !q.is_finite() {
-        return None;
-    }
-    if q.abs() <= 1e-9 {
+    if !q.is_finite() || q > IDEAL {
+        None
+    } else if q >= -IDEAL {
         // Null: the spatial part has length w; scaling it to 1 keeps it
         // exactly null.
         Some((x.truncate().normalize().extend(1.0), true))
-    } else if q < 0.0 {
-        Some((x / (-lorentz::dot(x, x)).sqrt(), false))
     } else {
-        None
+        Some((x / (-lorentz::dot(x, x)).sqrt(), false))
+    }
+}
+
+/// The edges: pairs of vertices adjacent on a face polygon, each on
+/// exactly two faces (a domain whose faces do not close up along an edge
+/// is refused).
+fn edges_of(face_vertices: &[Vec<usize>]) -> Result<Vec<DomainEdge>, GeomError> {
+    let mut by_ends: std::collections::BTreeMap<(usize, usize), Vec<usize>> = Default::default();
+    for (f, ids) in face_vertices.iter().enumerate() {
+        for (i, &u) in ids.iter().enumerate() {
+            let v = ids[(i + 1) % ids.len()];
+            by_ends.entry((u.min(v), u.max(v))).or_default().push(f);
+        }
+    }
+    let mut edges = Vec::with_capacity(by_ends.len());
+    for ((u, v), on) in by_ends {
+        let [a, b] = on[..] else {
+            return Err(GeomError::BadDomain(format!(
+                "the edge between vertices {} and {} lies on faces {:?}, not on two: the faces \
+                 do not close up there",
+                u + 1,
+                v + 1,
+                on.iter().map(|f| f + 1).collect::<Vec<_>>()
+            )));
+        };
+        edges.push(DomainEdge {
+            faces: [a.min(b), a.max(b)],
+            vertices: [u, v],
+        });
+    }
+    edges.sort_by_key(|e| e.faces);
+    Ok(edges)
+}
+
+/// Vertices found so far, looked up by Klein coordinates in a grid of
+/// cells of side `4 MERGE`, so that each lookup costs a few cells, not
+/// all vertices.
+#[derive(Default)]
+struct VertexGrid {
+    cells: std::collections::HashMap<[i64; 3], Vec<usize>>,
+    points: Vec<DVec3>,
+}
+
+impl VertexGrid {
+    const CELL: f64 = 4.0 * MERGE;
+
+    fn key(p: DVec3) -> [i64; 3] {
+        (p / Self::CELL).floor().to_array().map(|x| x as i64)
+    }
+
+    /// The vertex within `2 MERGE` of `p`, or a new one.
+    fn find_or_insert(&mut self, p: DVec3) -> usize {
+        let [x, y, z] = Self::key(p);
+        for dx in -1..=1 {
+            for dy in -1..=1 {
+                for dz in -1..=1 {
+                    if let Some(ids) = self.cells.get(&[x + dx, y + dy, z + dz])
+                        && let Some(&k) = ids
+                            .iter()
+                            .find(|&&k| (self.points[k] - p).length() <= 2.0 * MERGE)
+                    {
+                        return k;
+                    }
+                }
+            }
+        }
+        let k = self.points.len();
+        self.points.push(p);
+        self.cells.entry([x, y, z]).or_default().push(k);
+        k
     }
 }

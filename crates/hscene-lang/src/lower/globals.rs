@@ -221,11 +221,10 @@ impl Lowerer<'_> {
                     self.settings.samples = n as u32;
                 }
             }
-            Global::Frames => {
-                if let Some(n) = self.integer(value, 1, u64::from(MAX_FRAMES), "frames") {
-                    self.settings.frames = n as u32;
-                }
-            }
+            Global::Frames => match self.integer(value, 1, u64::from(MAX_FRAMES), "frames") {
+                Some(n) => self.settings.frames = n as u32,
+                None => self.frames_refused = true,
+            },
             Global::Background => {
                 self.settings.background = self.rgb(value).unwrap_or(self.settings.background)
             }

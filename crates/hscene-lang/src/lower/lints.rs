@@ -178,6 +178,7 @@ impl Lowerer<'_> {
 
     pub(super) fn lint_still_animation(&mut self) {
         if self.settings.frames == 1
+            && !self.frames_refused
             && let Some(&at) = self.animations.first()
         {
             self.report(

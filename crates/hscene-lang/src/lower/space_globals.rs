@@ -27,6 +27,10 @@ pub(super) struct SpaceParts {
     pairings: Option<Arc<[DMat4]>>,
     domain: Option<(f64, MaterialId, Span)>,
     light_reach: Option<(f64, Span)>,
+    /// `space` was given but refused (a space file that glues no
+    /// manifold, an unknown name): `domain` and `light_reach` are then not
+    /// "without space", and no HSC1007 says they are.
+    refused: bool,
 }
 
 /// The space keys.
@@ -121,6 +125,8 @@ impl Lowerer<'_> {
     }
 
     fn space_name(&mut self, value: &Value) {
+        // Cleared below once the space is known.
+        self.space.refused = true;
         let kind = match value {
             Value::Ident(name) => match SpaceKind::from_name(&name.text) {
                 Some(kind) => kind,
@@ -146,6 +152,7 @@ impl Lowerer<'_> {
                 if let Some(pairings) = self.space_file(text, *span) {
                     self.space.pairings = Some(pairings);
                     self.space.kind = Some((SpaceKind::Pairings, *span));
+                    self.space.refused = false;
                 }
                 return;
             }
@@ -173,6 +180,7 @@ impl Lowerer<'_> {
             return;
         }
         self.space.kind = Some((kind, value.span()));
+        self.space.refused = false;
     }
 
     /// The space, once every object and light is known: what cannot be
@@ -181,6 +189,9 @@ impl Lowerer<'_> {
     /// it: the scene is the same either way).
     pub(super) fn settle_space(&mut self) {
         let Some((kind, kind_span)) = self.space.kind else {
+            if self.space.refused {
+                return;
+            }
             for span in [
                 self.space.domain.map(|d| d.2),
                 self.space.light_reach.map(|r| r.1),
@@ -312,8 +323,8 @@ impl Lowerer<'_> {
             None => PathBuf::from(text),
         };
         self.inputs.push(path.clone());
-        let pairings = match space_file::load(&path) {
-            Ok(p) => p,
+        let data = match space_file::load_data(&path) {
+            Ok(d) => d,
             Err(SpaceFileError::Io(e)) => {
                 self.report(
                     Diagnostic::new(
@@ -337,18 +348,58 @@ impl Lowerer<'_> {
                 return None;
             }
         };
-        if let Err(e) = QuotientSpace::from_pairings(&pairings) {
-            self.report(
-                Diagnostic::new(
-                    Code::SpaceFileInvalid,
-                    span,
-                    format!("the pairings in {} glue no manifold: {e}", quote(text)),
-                )
-                .with_help(FILE_HELP),
-            );
-            return None;
+        let space = match QuotientSpace::from_pairings(&data.pairings) {
+            Ok(space) => space,
+            Err(e) => {
+                self.report(
+                    Diagnostic::new(
+                        Code::SpaceFileInvalid,
+                        span,
+                        format!("the pairings in {} glue no manifold: {e}", quote(text)),
+                    )
+                    .with_help(refusal_help(&e)),
+                );
+                return None;
+            }
+        };
+        if let (Some(given), Some(own)) = (data.volume, space.volume()) {
+            let error = (own - given).abs() / given.abs().max(f64::MIN_POSITIVE);
+            if !(error <= VOLUME_TOLERANCE) {
+                self.report(
+                    Diagnostic::new(
+                        Code::VolumeMismatch,
+                        span,
+                        format!(
+                            "the file gives the volume {given}, but its domain's is {own} \
+                             ({error:.1e} relative, more than {VOLUME_TOLERANCE:e})"
+                        ),
+                    )
+                    .with_help(
+                        "the pairings are not those of the manifold the volume is of, or not \
+                         accurate enough: write them from snappy.ManifoldHP as docs/manifolds.md shows",
+                    ),
+                );
+            }
         }
-        Some(pairings.into())
+        Some(data.pairings.into())
+    }
+}
+
+/// How far (relative) the domain's volume may be from the file's
+/// `"volume"` before a warning: SnapPy's high-precision domains agree to
+/// 1e-13.
+const VOLUME_TOLERANCE: f64 = 1e-9;
+
+/// What to try after a refusal: where the error is one of precision
+/// (a test missed by a measured error), more digits help; a gluing that is
+/// wrong is not helped by them.
+fn refusal_help(e: &hgeom::GeomError) -> String {
+    match e {
+        hgeom::GeomError::InexactPairing { .. } | hgeom::GeomError::EdgeCycle { .. } => format!(
+            "{FILE_HELP}; if the file came from snappy.Manifold (double precision), write it \
+             from snappy.ManifoldHP, whose pairings carry 60 digits (docs/manifolds.md)"
+        ),
+        _ => FILE_HELP.to_string(),
     }
 }
 
