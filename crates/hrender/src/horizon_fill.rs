@@ -36,7 +36,8 @@
 //!
 //! **What lies behind.** Each line also carries the light from beyond its
 //! end, weight 1, multiplied at each part by its `trans` and tint and
-//! stopped by an opaque part or the last recursion depth. The mean weight
+//! stopped by an opaque part or the last recursion depth (the path
+//! tracer's: its 64 bounces). The mean weight
 //! left at length `Δ` is the *openness* `O(Δ)`; a horizon hit adds `O(Δ)`
 //! times what a ray leaving the scene along it brings (sky, background,
 //! fog colour). The lines are 9 long; a longer rest is two independent
@@ -55,6 +56,7 @@ use hscene_ir::{IntegratorKind, Material, Rgb, Scene};
 
 use crate::absorption::sheet_filter;
 use crate::horizon_bucket::{HorizonFill, STEP};
+use crate::integrator::MAX_PATH_LENGTH;
 use crate::material::reflectances;
 use crate::scene::{PreparedObject, PreparedScene, T_MIN};
 
@@ -69,11 +71,12 @@ pub const SAMPLE_START: f64 = 3.0;
 /// every remaining length (module docs), the materials appended to the
 /// scene's.
 pub fn fill_horizons(prepared: &mut PreparedScene, scene: &Scene, stages: &[Isometry]) {
-    let depth = scene.settings.recursion_depth;
-    // The path tracer lights surfaces by the sky; Whitted does not.
-    let surround = match scene.settings.integrator {
-        IntegratorKind::Path => Some(mean_surround(scene)),
-        IntegratorKind::Whitted => None,
+    // The path tracer lights surfaces by the sky, and its paths pass as
+    // many faces as they have bounces; Whitted lights by the ambient term
+    // and stops at the recursion depth.
+    let (depth, surround) = match scene.settings.integrator {
+        IntegratorKind::Path => (MAX_PATH_LENGTH, Some(mean_surround(scene))),
+        IntegratorKind::Whitted => (scene.settings.recursion_depth, None),
     };
     for (o, source) in prepared.objects.iter_mut().zip(&scene.objects) {
         if o.parts.is_none() {
