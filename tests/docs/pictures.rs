@@ -3,10 +3,10 @@
 //!
 //! docs/pictures.txt is the one list of which scene makes which picture
 //! (docs/remake-pictures.sh reads it too). Each `render` picture is
-//! rendered again at 96 pixels wide (its own aspect) and 4 samples a
-//! pixel, and both pictures are reduced to 16 x 16 by averaging their
-//! light (a blur that noise and aliasing do not survive). They must agree in mean
-//! colour to [`MEAN_TOLERANCE`] per channel and in mean absolute
+//! rendered again at 96 pixels wide (its own aspect) and a quarter of
+//! its samples (at least 4), and both pictures are reduced to 16 x 16 by
+//! averaging their light (a blur that noise and aliasing do not survive).
+//! They must agree in mean colour to [`MEAN_TOLERANCE`] per channel and in mean absolute
 //! difference of the reduced pictures to [`BLUR_TOLERANCE`] (of 1, sRGB
 //! values): a black or wrongly lit picture is 0.2 or more away, a remake
 //! of the same scene a few hundredths.
@@ -150,19 +150,28 @@ fn distance(a: &RgbImage, b: &RgbImage) -> (f32, f32) {
 /// The options of a listed picture for its small remake.
 fn small_options(entry: &Listed, width: u32, height: u32) -> Vec<String> {
     let mut out = Vec::new();
+    let mut samples = 4;
     let mut words = entry.options.iter();
     while let Some(w) = words.next() {
-        if w == "--resolution" || w == "--samples" {
-            words.next();
-        } else {
-            out.push(w.clone());
+        match w.as_str() {
+            "--resolution" => {
+                words.next();
+            }
+            // A quarter of the published samples, at least 4: a noisy
+            // path-traced picture's fireflies, clipped at white, would
+            // otherwise darken the few-sample remake.
+            "--samples" => {
+                let n: u32 = words.next().and_then(|n| n.parse().ok()).unwrap_or(4);
+                samples = (n / 4).max(4);
+            }
+            _ => out.push(w.clone()),
         }
     }
     out.extend([
         "--resolution".to_owned(),
         format!("{width}x{height}"),
         "--samples".to_owned(),
-        "4".to_owned(),
+        samples.to_string(),
     ]);
     if entry.picture.ends_with(".gif") {
         out.extend(["--frame".to_owned(), "0".to_owned()]);
