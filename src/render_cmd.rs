@@ -321,10 +321,18 @@ fn warn_if_almost_black(
     display: DisplayTransform,
     current: f64,
     auto: bool,
+    has_background: bool,
 ) {
     if !image.pixels().is_empty() && hrender::is_black(image) {
+        // A scene with a background whose picture is black hides it behind
+        // its objects: adding one is no fix.
+        let background = if has_background {
+            "; the scene's background is hidden behind its objects everywhere"
+        } else {
+            ", or a `background`"
+        };
         diagln!(
-            "warning: the image is black: no pixel receives any light; add a light (`Lights`), an `ambient` colour to the materials (with the global `ambient`), `emission`, or a `background`"
+            "warning: the image is black: no pixel receives any light; add a light (`Lights`), an `ambient` colour to the materials (with the global `ambient`), `emission`{background}"
         );
         return;
     }
@@ -551,8 +559,13 @@ fn report_frame(args: &RenderArgs, scene: &hscene_ir::Scene, rendered: &hrender:
                 "note: noise left {:.2} % (mean relative standard error of the lit pixels), {per_pixel:.1} samples per pixel",
                 100.0 * e
             ),
-            None => diagln!(
+            // Without an estimate either each pixel had one sample, or no
+            // pixel saw any light (nothing to be relative to).
+            None if per_pixel < 2.0 => diagln!(
                 "note: {per_pixel:.1} samples per pixel; the noise left cannot be estimated from one sample (use --samples 16 or more, or --samples auto)"
+            ),
+            None => diagln!(
+                "note: {per_pixel:.1} samples per pixel; no pixel received light, so there is no noise to estimate"
             ),
         }
     }
@@ -560,11 +573,14 @@ fn report_frame(args: &RenderArgs, scene: &hscene_ir::Scene, rendered: &hrender:
         ExposureArg::Stops(ev) => ev,
         ExposureArg::Auto => auto.unwrap_or(0.0),
     };
+    let settings = &scene.settings;
+    let has_background = !settings.background.is_black() || settings.sky.is_some();
     warn_if_almost_black(
         &rendered.image,
         display_transform(args),
         current,
         auto.is_some(),
+        has_background,
     );
     if rendered.stats.cut_trees > 0 {
         diagln!(

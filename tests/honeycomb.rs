@@ -354,3 +354,49 @@ fn the_flythrough_loops() {
     let middle = frame(12);
     assert!(agreement(&first, &middle, 6) < 0.9);
 }
+
+/// docs/honeycombs.md, "Measures": from the centre of a `{5,3,4}` cell
+/// along its face axis `(1, √5 − 2, 0)` (normalised), one step of twice
+/// the inradius (2 × 0.808461) lands on the next cell's centre turned by
+/// 36° about the axis (a dodecahedron's opposite face is turned so), and
+/// two steps land on a cell's centre looking the same way: the first
+/// frame and the looped one agree.
+#[test]
+fn two_steps_loop_through_a_dodecahedron() {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let axis = 5f64.sqrt() - 2.0;
+    let frame = |distance: f64, k: u32| {
+        let scene = dir.path().join(format!("d{distance}.hsc"));
+        let source = format!(
+            "Globals {{ resolution = (64, 64); frames = 2; to = (0.4, {to_y}, 0.1); fov = 100; \
+             ambient = (0.5, 0.5, 0.5); background = (0, 0, 0); }}\n\
+             Transformations {{ axis: hline ((0, 0, 0), (0.5, {ay}, 0)); \
+             @camera->Translate(%axis, {distance}), animate; }}\n\
+             BRDFs {{ edge: ambient = (0.9, 0.7, 0.35); }}\n\
+             Objects {{ Honeycomb {{5,3,4}}, #edge, edges = 0.04; }}",
+            to_y = 0.4 * axis,
+            ay = 0.5 * axis,
+        );
+        std::fs::write(&scene, source).expect("temporary directory is writable");
+        let out = dir.path().join(format!("d{distance}-{k}.png"));
+        hscene()
+            .arg("render")
+            .arg(&scene)
+            .args(["--frame", &k.to_string(), "-o"])
+            .arg(&out)
+            .assert()
+            .success();
+        pixels(&out)
+    };
+    let inradius = 0.808461;
+    let start = frame(2.0 * inradius, 0);
+    let one_step = frame(2.0 * inradius, 1);
+    let two_steps = frame(4.0 * inradius, 1);
+    let looped = agreement(&start, &two_steps, 6);
+    assert!(looped >= AGREE, "two steps agree on {looped}");
+    let turned = agreement(&start, &one_step, 6);
+    assert!(
+        turned < 0.9,
+        "one step agrees on {turned}: it should be turned"
+    );
+}

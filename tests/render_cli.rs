@@ -198,3 +198,38 @@ fn aov_layers_go_into_an_exr_and_nowhere_else() {
         "{stderr}"
     );
 }
+
+/// A picture black because the scene's objects hide its background
+/// everywhere (the eye inside an unlit sphere): the warning does not tell
+/// the user to add the background the scene has; and after many samples
+/// of no light the note says there is no noise to estimate, not that it
+/// cannot be estimated from one sample.
+#[test]
+fn a_black_picture_hiding_its_background_is_told_so() {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let scene = dir.path().join("inside.hsc");
+    fs::write(
+        &scene,
+        "Globals { resolution = (8, 8); integrator = path; background = (0.5, 0.6, 0.9); }\n\
+         BRDFs { clay: diffuse = (0.8, 0.6, 0.4); }\n\
+         Objects { Sphere (0, 0, 0), 0.5, #clay; }",
+    )
+    .expect("temporary directory is writable");
+    let out = hscene()
+        .arg("render")
+        .arg(&scene)
+        .args(["--samples", "16", "-o"])
+        .arg(dir.path().join("inside.png"))
+        .output()
+        .expect("hscene runs");
+    assert!(out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("the image is black"), "{stderr}");
+    assert!(
+        stderr.contains("background is hidden behind its objects"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("or a `background`"), "{stderr}");
+    assert!(stderr.contains("no pixel received light"), "{stderr}");
+    assert!(!stderr.contains("from one sample"), "{stderr}");
+}

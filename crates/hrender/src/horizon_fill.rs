@@ -28,18 +28,35 @@
 //! term); a horizon hit at distance `h` from the eye takes the one for
 //! `Δ = 12 - h`. The integrators shade it as any hit: Whitted gives
 //! `ambient × scene ambient + emission`, the path tracer (no ambient term)
-//! the emission; fog acts along the ray to the horizon as it does on the
+//! the emission plus the parts' glow under the surround (below); fog acts along the ray to the horizon as it does on the
 //! cells around it. Lights do not reach it: a light `r` away gives a cell
 //! `1/sinh² r` of its intensity, under `1e-5` of a nearby cell's once `r`
 //! passes 6, and the pixel horizon lies beyond 6 in any picture of a few
 //! hundred pixels.
+//!
+//! **What lies behind.** Each line also carries the light from beyond its
+//! end, weight 1, multiplied at each part by its `trans` and tint and
+//! stopped by an opaque part or the last recursion depth (the path
+//! tracer's: its 64 bounces). The mean weight
+//! left at length `Δ` is the *openness* `O(Δ)`; a horizon hit adds `O(Δ)`
+//! times what a ray leaving the scene along it brings (sky, background,
+//! fog colour). The lines are 9 long; a longer rest is two independent
+//! stretches (`O(9 + x) = O(9) O(x)`).
+//!
+//! **The parts under the path tracer** glow as the surround lights them:
+//! a Lambertian part of reflectance `ρ` sees the surround's mean radiance
+//! `L̄` through the open share `O` of its directions and parts as bright
+//! as itself through the rest, `R = ρ (O L̄ + (1 - O) R)`, so
+//! `R = ρ O L̄ / (1 - ρ (1 - O))`, with `O` a whole line's openness
+//! (docs/rendering.md, "Beyond a honeycomb's horizon").
 
 use hgeom::glam::DVec3;
 use hgeom::{DEFAULT_HORIZON, HoneycombPart, Isometry, Ray, decode_honeycomb_part};
-use hscene_ir::{Material, Rgb, Scene};
+use hscene_ir::{IntegratorKind, Material, Rgb, Scene};
 
 use crate::absorption::sheet_filter;
-use crate::horizon_bucket::STEP;
+use crate::horizon_bucket::{HorizonFill, STEP};
+use crate::integrator::MAX_PATH_LENGTH;
 use crate::material::reflectances;
 use crate::scene::{PreparedObject, PreparedScene, T_MIN};
 
@@ -50,10 +67,17 @@ const SAMPLES: usize = 1024;
 pub const SAMPLE_START: f64 = 3.0;
 
 /// Gives each honeycomb of `prepared` (made from `scene` moved by
-/// `stages`) its horizon materials: its average appearance for every
-/// remaining length (module docs), appended to the materials.
+/// `stages`) its horizon fills: its average appearance and openness for
+/// every remaining length (module docs), the materials appended to the
+/// scene's.
 pub fn fill_horizons(prepared: &mut PreparedScene, scene: &Scene, stages: &[Isometry]) {
-    let depth = scene.settings.recursion_depth;
+    // The path tracer lights surfaces by the sky, and its paths pass as
+    // many faces as they have bounces; Whitted lights by the ambient term
+    // and stops at the recursion depth.
+    let (depth, surround) = match scene.settings.integrator {
+        IntegratorKind::Path => (MAX_PATH_LENGTH, Some(mean_surround(scene))),
+        IntegratorKind::Whitted => (scene.settings.recursion_depth, None),
+    };
     for (o, source) in prepared.objects.iter_mut().zip(&scene.objects) {
         if o.parts.is_none() {
             continue;
@@ -71,25 +95,69 @@ pub fn fill_horizons(prepared: &mut PreparedScene, scene: &Scene, stages: &[Isom
             horizon: Vec::new(),
             mapping: None,
         };
-        let beyond = average_appearance(&sampler, &prepared.materials, depth);
+        let beyond = average_appearance(&sampler, &prepared.materials, depth, surround);
         let first = prepared.materials.len();
-        o.horizon = (first..first + beyond.len()).collect();
-        prepared.materials.extend(beyond);
+        o.horizon = (beyond.iter().enumerate())
+            .map(|(k, (_, open))| HorizonFill {
+                material: first + k,
+                open: *open,
+            })
+            .collect();
+        prepared
+            .materials
+            .extend(beyond.into_iter().map(|(m, _)| m));
     }
+}
+
+/// The radiance arriving from beyond every honeycomb, averaged over all
+/// directions: the fog colour in fog, else the sky's mean over the sphere,
+/// else the background.
+fn mean_surround(scene: &Scene) -> Rgb {
+    let settings = &scene.settings;
+    if let Some(fog) = &settings.fog {
+        return fog.color;
+    }
+    let Some(sky) = &settings.sky else {
+        return settings.background;
+    };
+    let mut sum = Rgb::BLACK;
+    for k in 0..SAMPLES {
+        sum += sky.radiance(fibonacci_direction(k, SAMPLES));
+    }
+    sum * (1.0 / SAMPLES as f64)
+}
+
+/// What the sample lines of a honeycomb met, summed per remaining length.
+struct Tally {
+    ambient: Vec<Rgb>,
+    emission: Vec<Rgb>,
+    /// Sums of the light from beyond each line lets through.
+    open: Vec<Rgb>,
+    /// The diffuse parts met: from which bucket on they count, their
+    /// diffuse reflectance and the weight of the line's light there.
+    diffuse: Vec<(usize, Rgb, Rgb)>,
 }
 
 /// The average appearance of the honeycomb `sampler` (the scene's
 /// honeycomb walked to distance 12 from the eye, with its part
-/// materials) along the rest of the way to 12: one material for each
-/// `Δ = k STEP`, `k = 0..=12/STEP` (module docs).
+/// materials) along the rest of the way to 12, and how open that rest is:
+/// one material and one openness for each `Δ = k STEP`,
+/// `k = 0..=12/STEP` (module docs). With `surround` (the path tracer's
+/// mean radiance from beyond), the parts glow as lit by it.
 pub fn average_appearance(
     sampler: &PreparedObject,
     materials: &[Material],
     max_depth: u32,
-) -> Vec<Material> {
+    surround: Option<Rgb>,
+) -> Vec<(Material, Rgb)> {
     let buckets = (DEFAULT_HORIZON / STEP).round() as usize + 1;
-    let mut ambient = vec![Rgb::BLACK; buckets];
-    let mut emission = vec![Rgb::BLACK; buckets];
+    let mut t = Tally {
+        ambient: vec![Rgb::BLACK; buckets],
+        emission: vec![Rgb::BLACK; buckets],
+        // Every line is open over every length until it meets something.
+        open: vec![Rgb::new(1.0, 1.0, 1.0) * SAMPLES as f64; buckets],
+        diffuse: Vec::new(),
+    };
     for k in 0..SAMPLES {
         let from_eye = Ray::from_origin_unchecked(fibonacci_direction(k, SAMPLES));
         let line = Ray {
@@ -98,40 +166,100 @@ pub fn average_appearance(
         };
         for met in seen_along(sampler, materials, &line, max_depth) {
             // A part met at arc length s counts for every Δ > s.
-            let first = (met.s / STEP).floor() as usize + 1;
-            for b in first.min(buckets)..buckets {
-                ambient[b] += met.ambient;
-                emission[b] += met.emission;
+            let first = ((met.s / STEP).floor() as usize + 1).min(buckets);
+            for b in first..buckets {
+                t.ambient[b] += met.ambient;
+                t.emission[b] += met.emission;
+                t.open[b] += met.stopped * -1.0;
             }
+            t.diffuse.push((first, met.diffuse, met.weight));
         }
     }
     let share = 1.0 / SAMPLES as f64;
+    // The lines are 12 - SAMPLE_START long: what lies beyond that length
+    // is a second, independent stretch behind the first.
+    let walked = (((DEFAULT_HORIZON - SAMPLE_START) / STEP).floor() as usize).min(buckets - 1);
+    if let Some(l) = surround {
+        let whole = clamp_unit(t.open[walked] * share);
+        for &(first, rho, weight) in &t.diffuse {
+            let glow = lit_by_surround(rho, whole, l).tint(weight);
+            for b in first..buckets {
+                t.emission[b] += glow;
+            }
+        }
+    }
+    for b in walked + 1..buckets {
+        let (rest, through) = (b - walked, t.open[walked] * share);
+        t.ambient[b] = t.ambient[walked] + t.ambient[rest].tint(through);
+        t.emission[b] = t.emission[walked] + t.emission[rest].tint(through);
+        t.open[b] = t.open[rest].tint(through);
+    }
     (0..buckets)
-        .map(|b| Material {
-            name: Some("the honeycomb beyond its horizon".to_owned()),
-            ambient: ambient[b] * share,
-            diffuse: Rgb::BLACK,
-            specular: Rgb::BLACK,
-            reflection: 0.0,
-            transmission: 0.0,
-            emission: emission[b] * share,
-            absorption: Rgb::BLACK,
-            texture: None,
-            ..materials[sampler.material].clone()
+        .map(|b| {
+            let material = Material {
+                name: Some("the honeycomb beyond its horizon".to_owned()),
+                ambient: t.ambient[b] * share,
+                diffuse: Rgb::BLACK,
+                specular: Rgb::BLACK,
+                reflection: 0.0,
+                transmission: 0.0,
+                emission: t.emission[b] * share,
+                absorption: Rgb::BLACK,
+                texture: None,
+                ..materials[sampler.material].clone()
+            };
+            (material, clamp_unit(t.open[b] * share))
         })
         .collect()
 }
 
-/// A part a sample line met: where, and what it adds (already weighted by
-/// the transparent parts before it).
+/// The radiance a Lambertian part of reflectance `rho` sends out in a
+/// honeycomb of openness `open` over the whole way, lit by the mean
+/// radiance `l` from beyond (docs/rendering.md, "Beyond a honeycomb's
+/// horizon"): its directions see `l` through the open share and other
+/// parts, as bright as itself, through the rest, so
+/// `R = rho (open l + (1 - open) R)`, `R = rho open l / (1 - rho (1 - open))`.
+fn lit_by_surround(rho: Rgb, open: Rgb, l: Rgb) -> Rgb {
+    let one = |rho: f64, open: f64, l: f64| {
+        let bounce = rho * (1.0 - open);
+        if bounce < 1.0 {
+            rho * open * l / (1.0 - bounce)
+        } else {
+            0.0
+        }
+    };
+    Rgb::new(
+        one(rho.r, open.r, l.r),
+        one(rho.g, open.g, l.g),
+        one(rho.b, open.b, l.b),
+    )
+}
+
+/// Each channel of `c` within `[0, 1]` (the sums of shares round).
+fn clamp_unit(c: Rgb) -> Rgb {
+    let [r, g, b] = c.channels().map(|x| x.clamp(0.0, 1.0));
+    Rgb::new(r, g, b)
+}
+
+/// A part a sample line met: where, what it adds (already weighted by
+/// the transparent parts before it) and how much of the line's light
+/// from beyond it stops (the weight before it less the weight after).
 struct Met {
     s: f64,
     ambient: Rgb,
     emission: Rgb,
+    stopped: Rgb,
+    /// The part's diffuse reflectance, and the weight of the line's light
+    /// that reaches it.
+    diffuse: Rgb,
+    weight: Rgb,
 }
 
 /// The parts a line meets in the honeycomb, through transparent ones, up
-/// to the recursion depth, until an opaque one or the walk's end.
+/// to the recursion depth, until an opaque one or the walk's end. The
+/// line's light from beyond is stopped by opaque parts, filtered by
+/// transparent ones, and stopped where the recursion ends (Whitted traces
+/// no ray on from a hit at the last depth).
 fn seen_along(
     object: &PreparedObject,
     materials: &[Material],
@@ -141,7 +269,7 @@ fn seen_along(
     let mut met = Vec::new();
     let mut weight = Rgb::new(1.0, 1.0, 1.0);
     let mut t_min = T_MIN;
-    for _ in 0..=max_depth {
+    for depth in 0..=max_depth {
         let Some(hit) = object
             .intersect(line, t_min, f64::INFINITY)
             .filter(|h| decode_honeycomb_part(h.part).0 != HoneycombPart::Horizon)
@@ -149,14 +277,22 @@ fn seen_along(
             break;
         };
         let m = &materials[object.material_of(&hit)];
-        let (a, _) = reflectances(object, m, &hit);
+        let (a, d) = reflectances(object, m, &hit);
+        let cos = hgeom::lorentz::dot(line.tangent_at(hit.t), hit.normal);
+        let after = if depth == max_depth {
+            Rgb::BLACK
+        } else {
+            weight.tint(sheet_filter(m, cos)) * m.transmission
+        };
         met.push(Met {
             s: hit.t,
             ambient: a.tint(weight),
             emission: m.emission.tint(weight),
+            stopped: weight + after * -1.0,
+            diffuse: d,
+            weight,
         });
-        let cos = hgeom::lorentz::dot(line.tangent_at(hit.t), hit.normal);
-        weight = weight.tint(sheet_filter(m, cos)) * m.transmission;
+        weight = after;
         if weight.is_black() {
             break;
         }
@@ -187,5 +323,21 @@ mod tests {
             assert!((fibonacci_direction(k, n).length() - 1.0).abs() < 1e-12);
         }
         assert!(sum.length() / (n as f64) < 1e-3, "{sum}");
+    }
+
+    /// `R = rho open l / (1 - rho (1 - open))`: a part in the open takes
+    /// `rho l`; a part that sees only other parts (a closed honeycomb)
+    /// takes nothing; in between, the bounces add up to the closed form.
+    #[test]
+    fn parts_glow_as_the_surround_lights_them() {
+        let l = Rgb::new(1.0, 0.5, 2.0);
+        let rho = Rgb::new(0.5, 0.5, 0.5);
+        let open = |x| Rgb::new(x, x, x);
+        assert_eq!(lit_by_surround(rho, open(1.0), l), Rgb::new(0.5, 0.25, 1.0));
+        assert_eq!(lit_by_surround(rho, open(0.0), l), Rgb::BLACK);
+        // Half open: the series rho o l (1 + rho (1-o) + ...) summed.
+        let series: f64 = (0..200).map(|k| 0.25 * 0.25f64.powi(k)).sum();
+        let r = lit_by_surround(rho, open(0.5), l);
+        assert!((r.r - series).abs() < 1e-12, "{r:?} {series}");
     }
 }

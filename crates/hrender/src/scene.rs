@@ -19,7 +19,7 @@ use smallvec::SmallVec;
 
 use crate::accel::{Accel, Leaf, Step};
 use crate::error::RenderError;
-use crate::horizon_bucket::bucket_of;
+use crate::horizon_bucket::{HorizonFill, bucket_of};
 use crate::image_texture::TextureMapping;
 
 /// An object ready for tracing.
@@ -50,10 +50,11 @@ pub struct PreparedObject {
     /// its faces as triangles in the canonical frame: the path integrator
     /// samples them by solid angle. Empty for every other object.
     pub faces: Vec<[DVec4; 3]>,
-    /// For a honeycomb, the materials of its horizon hits: its average
-    /// appearance along the rest of the way to distance 12, by that rest
-    /// (`horizon_fill.rs`). Empty for every other object.
-    pub horizon: Vec<usize>,
+    /// For a honeycomb, what its horizon hits draw: its average
+    /// appearance along the rest of the way to distance 12 and how open
+    /// that rest is, by its length (`horizon_fill.rs`). Empty for every
+    /// other object.
+    pub horizon: Vec<HorizonFill>,
     /// Where its own material's image texture lands on it
     /// (`image_texture.rs`); `None` without one, or for a shape with no
     /// mapping.
@@ -91,9 +92,21 @@ impl PreparedObject {
         match &self.parts {
             None => self.material,
             Some(_) if is_horizon(hit.part) && !self.horizon.is_empty() => {
-                self.horizon[bucket_of(hit, self.horizon.len())]
+                self.horizon[bucket_of(hit, self.horizon.len())].material
             }
             Some(p) => p.material(hit.part, self.material),
+        }
+    }
+
+    /// For a honeycomb's horizon hit, the share of what lies beyond the
+    /// honeycomb that arrives through the rest of the way (per channel);
+    /// `None` for every other hit.
+    pub fn open_beyond(&self, hit: &Hit) -> Option<Rgb> {
+        match &self.parts {
+            Some(_) if is_horizon(hit.part) && !self.horizon.is_empty() => {
+                Some(self.horizon[bucket_of(hit, self.horizon.len())].open)
+            }
+            _ => None,
         }
     }
 

@@ -423,6 +423,13 @@ impl Integrator for PathTracer<'_> {
                 };
                 radiance += beta.tint(m.emission) * w;
             }
+            // Beyond a honeycomb's horizon the path ends: what lies behind
+            // arrives through the share of the way left open
+            // (`horizon_fill.rs`).
+            if let Some(open) = object.open_beyond(&hit) {
+                radiance += beta.tint(open.tint(self.leaving(&ray)));
+                break;
+            }
             let entering = lorentz::dot(d, hit.normal) < 0.0;
             // The path segment just traced ran inside this object when it
             // leaves by this hit: absorbing glass filters it.

@@ -159,6 +159,11 @@ impl<'s> Whitted<'s> {
         if !m.emission.is_black() {
             color += m.emission;
         }
+        // Beyond a honeycomb's horizon what lies behind it arrives through
+        // the share of the way left open (`horizon_fill.rs`).
+        if let Some(open) = object.open_beyond(&hit) {
+            color += open.tint(self.leaving(ray));
+        }
         let view = -d;
         // A material without diffuse and specular terms ignores the lights:
         // skip their shadow rays.

@@ -19,6 +19,12 @@ pub(super) fn closest<'a>(word: &str, candidates: &[&'a str]) -> Option<&'a str>
         return None;
     }
     let w = word.to_ascii_lowercase();
+    // Another renderer's name for a field is no typo of ours, however far.
+    if let Some(&(_, ours)) = SYNONYMS.iter().find(|(theirs, _)| *theirs == w)
+        && let Some(c) = candidates.iter().find(|c| **c == ours)
+    {
+        return Some(c);
+    }
     let limit = |c: &str| 2.max(c.len() / 4);
     candidates
         .iter()
@@ -28,6 +34,19 @@ pub(super) fn closest<'a>(word: &str, candidates: &[&'a str]) -> Option<&'a str>
         .min_by_key(|&(d, c)| (d, c))
         .map(|(_, c)| c)
 }
+
+/// Names other renderers and languages give what hscene calls otherwise
+/// (lower case): a user coming from them writes these.
+const SYNONYMS: [(&str, &str); 8] = [
+    ("ior", "refraction"),
+    ("eta", "refraction"),
+    ("index", "refraction"),
+    ("colour", "diffuse"),
+    ("color", "diffuse"),
+    ("albedo", "diffuse"),
+    ("transparency", "trans"),
+    ("transmission", "trans"),
+];
 
 /// The candidate `word` was probably meant to be: one that differs from it
 /// in case only (names are case-sensitive, and that is the likeliest slip),
@@ -92,5 +111,18 @@ mod tests {
             Some("wireframe")
         );
         assert_eq!(closest("Xyz", &["Sphere", "Polygon"]), None);
+    }
+
+    /// Another renderer's word for a material field is suggested as
+    /// ours (`ior` is 8 edits from `refraction`, `colour` 6 from
+    /// `diffuse`); where ours is no candidate, spelling decides.
+    #[test]
+    fn other_renderers_words_suggest_ours() {
+        let fields = ["diffuse", "trans", "refraction", "emission"];
+        assert_eq!(closest("ior", &fields), Some("refraction"));
+        assert_eq!(closest("IOR", &fields), Some("refraction"));
+        assert_eq!(closest("colour", &fields), Some("diffuse"));
+        assert_eq!(closest("transparency", &fields), Some("trans"));
+        assert_eq!(closest("colour", &["edges", "colors"]), Some("colors"));
     }
 }

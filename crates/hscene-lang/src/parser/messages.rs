@@ -157,6 +157,9 @@ impl Scanner<'_> {
         } else if !expected.is_empty() {
             diag = diag.with_label(format!("expected {expected}"));
         }
+        if let Some(path) = unquoted_path(self.src, span.start) {
+            diag = diag.with_help(format!("a file name is a string: quote it, \"{path}\""));
+        }
         let letter = self.src[at.min(end)..end]
             .chars()
             .next()
@@ -168,11 +171,48 @@ impl Scanner<'_> {
     }
 }
 
+/// The file name `name.ext` when the error at `at` is the `.ext` of an
+/// unquoted `key = name.ext` (`texture = swirl.png`): the scanner stops
+/// at the dot.
+fn unquoted_path(src: &str, at: usize) -> Option<String> {
+    let before = src.get(..at)?;
+    let is_name = |c: char| c.is_ascii_alphanumeric() || "_-/".contains(c);
+    let stem_start = before.trim_end_matches(is_name).len();
+    let stem = &before[stem_start..];
+    let assigned = before[..stem_start].trim_end().ends_with('=');
+    let ext: String = src
+        .get(at..)?
+        .strip_prefix('.')?
+        .chars()
+        .take_while(|c| c.is_ascii_alphanumeric())
+        .collect();
+    (assigned
+        && !stem.is_empty()
+        && !ext.is_empty()
+        && !stem.starts_with(|c: char| c.is_ascii_digit()))
+    .then(|| format!("{stem}.{ext}"))
+}
+
 #[cfg(test)]
 mod tests {
     use crate::diagnostic::{Code, Span};
     use crate::parser::fixtures::codes;
     use crate::parser::parse;
+
+    /// `texture = swirl.png` unquoted: the help says to quote it.
+    #[test]
+    fn an_unquoted_file_name_is_told_to_be_quoted() {
+        let p = parse("S { m: diffuse = (1, 1, 1), texture = swirl.png; }");
+        assert_eq!(p.diagnostics.len(), 1);
+        let help = p.diagnostics[0].help.as_deref().unwrap_or("");
+        assert!(help.contains("\"swirl.png\""), "{help}");
+        let p = parse("S { a = 0.5.5; }");
+        assert!(
+            p.diagnostics
+                .iter()
+                .all(|d| !d.help.as_deref().unwrap_or("").contains("quote")),
+        );
+    }
 
     #[test]
     fn messages_name_tokens_not_rules() {
