@@ -79,13 +79,20 @@ pub fn run(args: &ExportArgs, color: ColorChoice) -> ExitCode {
         &crate::input::compile_options(&args.scene, args.frame),
     );
     let stderr_tty = std::io::stderr().is_terminal();
-    if !compiled.diagnostics.is_empty() {
+    // A print has no camera: lints about the picture alone are left out.
+    let shown: Vec<hscene_lang::Diagnostic> = compiled
+        .diagnostics
+        .iter()
+        .filter(|d| d.is_error() || !d.code.is_about_the_picture())
+        .cloned()
+        .collect();
+    if !shown.is_empty() {
         diag!(
             "{}",
             report::format_diagnostics(
                 &args.scene,
                 &source,
-                &compiled.diagnostics,
+                &shown,
                 compiled.omitted,
                 ReportFormat::Human,
                 color.enabled(stderr_tty)
@@ -158,5 +165,12 @@ pub fn run(args: &ExportArgs, color: ColorChoice) -> ExitCode {
         bytes,
         start.elapsed().as_secs_f64()
     );
+    // Within the meshing tolerance, bodies whose surfaces meet may have
+    // boxes a little apart.
+    for label in model.floating_bodies(options.tolerance.get()) {
+        diagln!(
+            "warning: {label} touches no other object: printed with the rest it is a loose part; move it to touch another, or print it on its own"
+        );
+    }
     ExitCode::SUCCESS
 }

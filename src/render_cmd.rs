@@ -204,7 +204,8 @@ fn check_arguments(args: &RenderArgs, video: bool) -> Result<(), &'static str> {
 }
 
 /// Says when the format cannot hold the rate asked for (GIF's delays are
-/// whole hundredths of a second, at least 2), with the rate it plays at.
+/// at least 2 hundredths of a second; below 50 frames a second they
+/// alternate to keep the rate), with the rate it plays at.
 fn note_played_rate(format: hrender::VideoFormat, fps: f64) {
     let played = hrender::played_fps(format, fps);
     if (played - fps).abs() > 1e-6 * fps {
@@ -217,7 +218,7 @@ fn note_played_rate(format: hrender::VideoFormat, fps: f64) {
             },
             match format {
                 hrender::VideoFormat::Gif =>
-                    " (its frame delays are whole hundredths of a second, at least 2); use .apng, .mp4 or .webm for this rate",
+                    " (its frame delays are at least 2 hundredths of a second); use .apng, .mp4 or .webm for this rate",
                 _ => " (its frame delays are exact to a thousandth of a frame a second)",
             }
         );

@@ -158,3 +158,40 @@ fn a_scene_in_a_space_is_refused() {
     assert!(!out.exists());
     assert_eq!(names(dir.path()), ["s.hsc"]);
 }
+
+/// A print has no camera: the eye inside a ball (`HSC1006`) is not worth a
+/// maker's time, an unused material (`HSC1002`) still is; two balls that
+/// touch nothing are each named as a loose part.
+#[test]
+fn export_leaves_out_camera_lints_and_warns_of_floating_parts() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("s.hsc");
+    fs::write(
+        &scene,
+        "BRDFs { red: diffuse = (0.8, 0.1, 0.1); spare: diffuse = (1, 1, 1); }\n\
+         Objects { Sphere (0, 0, 0), 0.2, #red; moon: Sphere (0.6, 0, 0), 0.1, #red; }\n",
+    )
+    .unwrap();
+    let check = hscene().arg("check").arg(&scene).output().unwrap();
+    let said = String::from_utf8_lossy(&[check.stdout, check.stderr].concat()).into_owned();
+    assert!(said.contains("HSC1006"), "check still says it: {said}");
+    let run = hscene()
+        .arg("export")
+        .arg(&scene)
+        .arg("-o")
+        .arg(dir.path().join("m.3mf"))
+        .output()
+        .unwrap();
+    assert!(run.status.success(), "{run:?}");
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(!stderr.contains("HSC1006"), "{stderr}");
+    assert!(stderr.contains("HSC1002"), "{stderr}");
+    assert!(
+        stderr.contains("warning: object 1 touches no other object"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("warning: object 2 (\"moon\") touches no other object"),
+        "{stderr}"
+    );
+}

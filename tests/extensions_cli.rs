@@ -245,3 +245,46 @@ fn the_scenes_samples_setting_anti_aliases_and_the_option_overrides_it() {
     assert_eq!(overridden, plain, "`--samples 1` overrides the scene");
     assert_ne!(from_scene, plain);
 }
+
+/// A scene copied from the docs names its mesh from where that scene was;
+/// run from elsewhere, the error names the folder the name led to (the
+/// scene's, not the current one) and says how to fix it.
+#[test]
+fn a_missing_mesh_names_the_folder_it_was_looked_for_in() {
+    let dir = tempfile::tempdir().unwrap();
+    let mine = dir.path().join("mine");
+    fs::create_dir(&mine).unwrap();
+    fs::write(
+        mine.join("bunny.hsc"),
+        "BRDFs { clay: diffuse = (0.8, 0.6, 0.45); }\n\
+         Objects { Mesh \"scenes/meshes/bunny.ply\", 0.5, #clay; }\n",
+    )
+    .unwrap();
+    let run = hscene()
+        .current_dir(dir.path())
+        .args(["check", "mine/bunny.hsc"])
+        .output()
+        .unwrap();
+    assert!(!run.status.success());
+    // The report goes to either stream, its help wrapped to a width:
+    // compared with its runs of white space as one space.
+    let both = [run.stdout, run.stderr].concat();
+    let stderr = String::from_utf8_lossy(&both)
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ");
+    let folder = std::path::absolute(mine.join("scenes/meshes")).unwrap();
+    assert!(stderr.contains("HSC0501"), "{stderr}");
+    assert!(
+        stderr.contains(&format!("looked in the folder `{}`", folder.display())),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("taken from the scene file's folder"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("copy the mesh beside your scene"),
+        "{stderr}"
+    );
+}

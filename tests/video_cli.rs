@@ -129,3 +129,47 @@ fn videos_refuse_what_they_cannot_hold_before_rendering() {
     let left: Vec<_> = fs::read_dir(dir.path()).unwrap().collect();
     assert_eq!(left.len(), 2);
 }
+
+/// GIF delays are whole hundredths of a second: 24 frames a second is
+/// 4.1667 each, which one delay cannot hold. Read back by the `image`
+/// crate's decoder, every frame starts within half a hundredth of
+/// `k / 24` s (the delays alternate 4, 4, 5, ...), the six frames last a
+/// quarter of a second exactly, and no rounding is reported.
+#[test]
+fn a_gif_at_24_fps_keeps_the_rate_frame_by_frame() {
+    use image::AnimationDecoder;
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("s.hsc");
+    fs::write(&scene, SCENE).unwrap();
+    let out = dir.path().join("film.gif");
+    let run = hscene()
+        .args(["render", scene.to_str().unwrap(), "-o"])
+        .arg(&out)
+        .args(["--fps", "24"])
+        .output()
+        .unwrap();
+    assert!(run.status.success(), "{run:?}");
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(!stderr.contains("plays at"), "{stderr}");
+    let file = std::io::BufReader::new(fs::File::open(&out).unwrap());
+    let frames = image::codecs::gif::GifDecoder::new(file)
+        .unwrap()
+        .into_frames()
+        .collect_frames()
+        .unwrap();
+    assert_eq!(frames.len(), 6);
+    let mut start_ms = 0.0;
+    for (k, frame) in frames.iter().enumerate() {
+        let want = k as f64 * 1000.0 / 24.0;
+        assert!(
+            (start_ms - want).abs() <= 5.0 + 1e-9,
+            "frame {k} starts at {start_ms} ms, not {want}"
+        );
+        let (num, den) = frame.delay().numer_denom_ms();
+        start_ms += f64::from(num) / f64::from(den);
+    }
+    assert!(
+        (start_ms - 250.0).abs() < 1e-9,
+        "six frames last {start_ms} ms"
+    );
+}

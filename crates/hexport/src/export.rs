@@ -10,7 +10,7 @@ use rayon::prelude::*;
 use crate::error::ExportError;
 use crate::grid::{PoleSurface, mesh_surface};
 use crate::honeycomb::{self, segment_axis};
-use crate::model::{ExportMaterial, Model, Shell};
+use crate::model::{ExportMaterial, Model, Owner, Shell};
 use crate::options::ExportOptions;
 use crate::rules::{PartSurface, euclidean_ball, plane_plate, polygon_plate, tube};
 use crate::tube::Axis;
@@ -34,6 +34,25 @@ pub fn object_label(index: usize, object: &Object) -> String {
     match &object.name {
         Some(name) => format!("object {} (\"{name}\")", index + 1),
         None => format!("object {}", index + 1),
+    }
+}
+
+/// How a slicer names an object: its name, else its kind and number
+/// (`Sphere 3`), so that the parts list reads like the scene.
+pub fn object_name(index: usize, object: &Object) -> String {
+    match &object.name {
+        Some(name) => name.clone(),
+        None => {
+            let kind = object.shape.kind_name();
+            let mut letters = kind.chars();
+            let first = letters.next().map(|c| c.to_ascii_uppercase());
+            format!(
+                "{}{} {}",
+                first.into_iter().collect::<String>(),
+                letters.as_str(),
+                index + 1
+            )
+        }
     }
 }
 
@@ -146,18 +165,22 @@ pub fn export_scene(
             size: options.size.get(),
         });
     }
-    let labels: Vec<String> = scene
+    let owners: Vec<Owner> = scene
         .objects
         .iter()
         .enumerate()
-        .map(|(i, o)| object_label(i, o))
+        .map(|(index, o)| Owner {
+            index,
+            label: object_label(index, o),
+            name: object_name(index, o),
+        })
         .collect();
     let (tolerance, scale) = (options.tolerance_ball(), options.scale());
     let used = AtomicUsize::new(0);
     let done = AtomicUsize::new(0);
     let total = pieces.len();
     let over = |object: usize| ExportError::TooManyTriangles {
-        object: labels[object].clone(),
+        object: owners[object].label.clone(),
         budget: options
             .max_triangles
             .saturating_sub(used.load(Ordering::Relaxed)),
@@ -182,11 +205,11 @@ pub fn export_scene(
                 return Err(over(piece.object));
             }
             progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
-            let label = &labels[piece.object];
+            let owner = &owners[piece.object];
             let shell = if closed {
-                Shell::from_grid(label, piece.material, mesh, scale)
+                Shell::from_grid(owner, piece.material, mesh, scale)
             } else {
-                Shell::open(label, piece.material, mesh, scale)
+                Shell::open(owner, piece.material, mesh, scale)
             };
             Ok((shell, closed))
         })

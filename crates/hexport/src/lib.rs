@@ -28,8 +28,8 @@ mod triangles;
 mod tube;
 
 pub use error::ExportError;
-pub use export::{export_scene, object_label};
+pub use export::{export_scene, object_label, object_name};
 pub use format::{Format, OutputFile};
 pub use honeycomb::MAX_CHAMBERS;
-pub use model::{ExportMaterial, Model, Shell};
+pub use model::{ExportMaterial, Model, Owner, Shell};
 pub use options::{DEFAULT_MAX_TRIANGLES, ExportOptions, MAX_TRIANGLES, Millimetres, ThinParts};

@@ -190,7 +190,7 @@ impl VideoWriter {
                 // tenth of the best's time.
                 let mut frame =
                     gif::Frame::from_rgb_speed(self.width as u16, self.height as u16, &rgb, 10);
-                frame.delay = gif_delay(self.fps);
+                frame.delay = gif_delay(self.fps, self.frames);
                 e.write_frame(&frame)
                     .map_err(|e| encode(&path)(e.to_string()))?;
             }
@@ -245,20 +245,34 @@ fn gcd(a: u32, b: u32) -> u32 {
     if b == 0 { a.max(1) } else { gcd(b, a % b) }
 }
 
-/// GIF's frame delay in hundredths of a second (at least 2: browsers
-/// play shorter delays at 10 frames a second).
-fn gif_delay(fps: f64) -> u16 {
-    (100.0 / fps).round().clamp(2.0, 65535.0) as u16
+/// The fastest rate a GIF plays at: delays under 2 hundredths of a second
+/// are played by browsers at 10 frames a second.
+const GIF_MAX_FPS: f64 = 50.0;
+
+/// GIF's delay after frame `k`, in hundredths of a second. Delays are
+/// whole hundredths, so a rate like 24 (4.1667 each) cannot be one delay:
+/// each frame ends at `k + 1` frames' time rounded to the hundredth, so
+/// the delays alternate (4, 4, 5, 4, 4, 4, ...) and frame `k` starts
+/// within half a hundredth of `k / fps` however long the animation runs.
+/// Above 50 frames a second every delay is the least, 2.
+fn gif_delay(fps: f64, k: u32) -> u16 {
+    if fps > GIF_MAX_FPS {
+        return 2;
+    }
+    let end = |k: u32| (100.0 * f64::from(k) / fps).round();
+    // `fps` is at least 0.1 (the render checks it), so a delay is at most
+    // 1,000; the clamp keeps a smaller rate from wrapping.
+    (end(k + 1) - end(k)).clamp(2.0, 65535.0) as u16
 }
 
 /// The rate a video of `format` written at `fps` plays at: GIF's delays
-/// are whole hundredths of a second and at least 2 (so at most 50 frames
-/// a second, and 30 plays at 33.3), APNG's are exact to a thousandth of a
-/// frame a second, MP4 and WebM exact. The render says so when it is not
-/// the rate asked for.
+/// are whole hundredths of a second, alternated to keep the rate on
+/// average ([`gif_delay`]), and at least 2 (so at most 50 frames a
+/// second), APNG's are exact to a thousandth of a frame a second, MP4 and
+/// WebM exact. The render says so when it is not the rate asked for.
 pub fn played_fps(format: VideoFormat, fps: f64) -> f64 {
     match format {
-        VideoFormat::Gif => 100.0 / f64::from(gif_delay(fps)),
+        VideoFormat::Gif => fps.min(GIF_MAX_FPS),
         VideoFormat::Apng => {
             let (num, den) = frame_delay(fps);
             f64::from(den) / f64::from(num)
@@ -279,5 +293,27 @@ mod tests {
         assert_eq!(played_fps(VideoFormat::Apng, 240.0), 240.0);
         assert_eq!(played_fps(VideoFormat::Apng, 0.1), 0.1);
         assert_eq!(frame_delay(24000.0 / 1001.0), (125, 2997));
+        assert_eq!(played_fps(VideoFormat::Gif, 24.0), 24.0);
+        assert_eq!(played_fps(VideoFormat::Gif, 30.0), 30.0);
+    }
+
+    #[test]
+    fn gif_delays_keep_every_frame_within_half_a_hundredth_of_its_time() {
+        for fps in [24.0, 30.0, 23.976, 12.0, 7.0, 50.0, 0.1] {
+            let mut start = 0u64;
+            for k in 0..2000 {
+                let want = 100.0 * f64::from(k) / fps;
+                assert!(
+                    (start as f64 - want).abs() <= 0.5 + 1e-9,
+                    "{fps} fps, frame {k}: {start} cs, not {want}"
+                );
+                let d = gif_delay(fps, k);
+                assert!(d >= 2, "{fps} fps: delay {d}");
+                start += u64::from(d);
+            }
+        }
+        let first: Vec<u16> = (0..6).map(|k| gif_delay(24.0, k)).collect();
+        assert_eq!(first, [4, 4, 5, 4, 4, 4]);
+        assert_eq!(gif_delay(240.0, 7), 2);
     }
 }

@@ -78,7 +78,7 @@ fn cell_rank_and_class_of_the_middle_pixel() {
             "Globals {{ resolution = (5, 5); from = {eye}; to = (0, 0, 0.9); fov = 20; }}\n\
              BRDFs {{ a: diffuse = (1, 0, 0); b: diffuse = (0, 1, 0); c: diffuse = (0, 0, 1); }}\n\
              Lights {{ (0, 0, 0), (1, 1, 1), (1, 1, 1); }}\n\
-             Objects {{ Honeycomb {{4,3,5}}, #a, colors = (#a, #b, #c); }}\n"
+             Objects {{ Honeycomb {{4,3,5}}, #a, face_colors = (#a, #b, #c); }}\n"
         );
         let layers = render_aovs(
             &compile(&source),

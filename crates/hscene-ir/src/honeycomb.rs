@@ -39,10 +39,9 @@ impl PartialEq for Honeycomb {
 pub struct PartMaterials {
     /// `faces = #F`: every face in `#F`.
     pub faces: Option<MaterialId>,
-    /// `colors = (#A, #B, ...)`: cell class `k` is drawn in
-    /// `palette[k % len]` — its faces, or, when `faces = #F` or
-    /// `face_colors` is given too, its edges and vertices. Empty without
-    /// `colors`.
+    /// `colors = (#A, #B, ...)`: the edges and vertices of cell class `k`
+    /// are drawn in `palette[k % len]` (never the faces: those are drawn
+    /// only when `faces` or `face_colors` asks). Empty without `colors`.
     pub palette: Vec<MaterialId>,
     /// `face_colors = (#A, #B, ...)`: the faces of cell class `k` are drawn
     /// in `face_palette[k % len]`, whatever else is given. Empty without it.
@@ -76,11 +75,8 @@ impl PartMaterials {
         };
         let faces = self.faces.map(MaterialId::index);
         match kind {
-            HoneycombPart::Face => face_coloured.or(faces).or(coloured).unwrap_or(own),
-            HoneycombPart::Edge | HoneycombPart::Vertex => match faces.or(face_coloured) {
-                Some(_) => coloured.unwrap_or(own),
-                None => own,
-            },
+            HoneycombPart::Face => face_coloured.or(faces).unwrap_or(own),
+            HoneycombPart::Edge | HoneycombPart::Vertex => coloured.unwrap_or(own),
             // Beyond the walk's horizon: no part, so no material of its
             // own; the renderer draws it in the honeycomb's average
             // appearance.

@@ -185,6 +185,22 @@ impl Code {
     pub fn title(self) -> &'static str {
         self.entry().2
     }
+
+    /// True for the lints about the picture alone (the camera, the eye,
+    /// the lights, the integrator): a print has no camera, so
+    /// `hscene export` leaves them out rather than have a maker fix what
+    /// does not change the print.
+    pub fn is_about_the_picture(self) -> bool {
+        matches!(
+            self,
+            Code::LightInsideOpaqueObject
+                | Code::ObjectBehindEye
+                | Code::EyeInsideObject
+                | Code::AmbientUnderPath
+                | Code::SqueezedDisk
+                | Code::UpRoll
+        )
+    }
 }
 
 impl fmt::Display for Code {

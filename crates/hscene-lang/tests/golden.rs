@@ -46,8 +46,14 @@ fn line_text(src: &str, line: usize) -> &str {
         .trim_end_matches('\r')
 }
 
-/// Renders every diagnostic of `compiled` against `src`.
+/// Renders every diagnostic of `compiled` against `src`, with the crate's
+/// folder (named by messages about files) as `$CRATE`, the same on every
+/// machine.
 fn render(src: &str, compiled: &Compiled) -> String {
+    render_here(src, compiled).replace(env!("CARGO_MANIFEST_DIR"), "$CRATE")
+}
+
+fn render_here(src: &str, compiled: &Compiled) -> String {
     let index = LineIndex::new(src);
     let errors = compiled.diagnostics.iter().filter(|d| d.is_error()).count();
     let warnings = compiled.diagnostics.len() - errors;

@@ -81,11 +81,12 @@ fn options_become_the_style_and_the_materials_of_the_parts() {
     assert_eq!(h.surface.style().edges, None);
     assert!(h.surface.style().faces);
 
-    // `colors` draws the faces in the palette, one class per colour.
+    // `colors` colours the default edges, one class per colour, and
+    // closes no cell.
     let s = scene("Honeycomb {3,5,3}, #edge, colors = (#a, #b, #glass);");
     let h = only_honeycomb(&s);
-    assert!(h.surface.style().faces);
-    assert_eq!(h.surface.style().edges, None);
+    assert!(!h.surface.style().faces);
+    assert_eq!(h.surface.style().edges, Some(0.02));
     assert_eq!(h.surface.style().cell_classes, 3);
     assert_eq!(
         h.materials.palette,
@@ -157,9 +158,9 @@ fn the_formatter_keeps_the_symbol_as_mathematicians_write_it() {
     assert_eq!(out, "Objects {\n    Honeycomb {6,3,3}, #1, depth = 1;\n}\n");
 }
 
-/// Every hit says what it met; faces take `face_colors`, `faces = #F` or
-/// the palette by class, edges and vertices `#M` or, with `faces` or
-/// `face_colors` too, the palette (classes count round both palettes).
+/// Every hit says what it met; faces take `face_colors` or `faces = #F`,
+/// edges and vertices the palette by class, or `#M` without one (classes
+/// count round both palettes).
 #[test]
 fn each_part_is_drawn_in_its_material() {
     use hgeom::{HoneycombPart, Ray, decode_honeycomb_part};
@@ -193,8 +194,8 @@ fn each_part_is_drawn_in_its_material() {
             let face_coloured = [glass, edge, a][class as usize % 3];
             let got = h.materials.material(hit.part, own);
             let want = match (case, kind) {
-                (0, HoneycombPart::Face) => coloured,
-                (0, _) => edge,
+                (0, HoneycombPart::Face) => panic!("`colors` alone drew a face"),
+                (0, _) => coloured,
                 (1, HoneycombPart::Face) => glass,
                 (1, _) => coloured,
                 (2, HoneycombPart::Face) => glass,
@@ -205,7 +206,11 @@ fn each_part_is_drawn_in_its_material() {
             assert_eq!(got, want, "case {case}: {kind:?} of class {class}");
             seen[kind as usize] = true;
         }
-        assert!(seen.iter().all(|s| *s), "case {case}: parts met {seen:?}");
+        if case == 0 {
+            assert!(seen[0] && seen[2], "case 0: parts met {seen:?}");
+        } else {
+            assert!(seen.iter().all(|s| *s), "case {case}: parts met {seen:?}");
+        }
         if case == 3 {
             // Classes count round six: 2 and 3 colours together.
             assert_eq!(h.surface.style().cell_classes, 6);
@@ -262,5 +267,45 @@ fn balls_on_ideal_seeds_are_a_warning() {
             .any(|d| d.severity == Severity::Warning && d.message.contains("t3{6,3,3}")),
         "{:#?}",
         c.diagnostics
+    );
+}
+
+/// `colors` without `faces` used to close every cell with opaque walls in
+/// the palette: from inside the base cell every ray stopped at its own
+/// walls. Now it colours the edges and vertices, and rays from the centre
+/// between them go out through the open cells.
+#[test]
+fn colors_without_faces_colours_the_edges_and_leaves_the_cells_open() {
+    use hgeom::{HoneycombPart, Ray, decode_honeycomb_part};
+    let s = scene("Honeycomb {4,3,5}, #edge, colors = (#a, #b);");
+    let h = only_honeycomb(&s);
+    assert!(!h.surface.style().faces, "no walls were asked for");
+    let own = s.objects[0].material.index();
+    let [a, b] = ["a", "b"].map(|n| material(&s, n).index());
+    // Rays that leave the base cell: no hit, or a part of a farther cell.
+    let (mut beyond, mut edges) = (0, 0);
+    for i in 0..2000 {
+        let t = f64::from(i) * 0.618_033_988_749_895 * std::f64::consts::TAU;
+        let z = 1.0 - 2.0 * (f64::from(i) + 0.5) / 2000.0;
+        let r = (1.0 - z * z).sqrt();
+        let ray = Ray::from_origin_unchecked(DVec3::new(r * t.cos(), r * t.sin(), z));
+        match h.surface.intersect(&ray, 0.0, f64::INFINITY) {
+            None => beyond += 1,
+            Some(hit) => {
+                let (kind, class) = decode_honeycomb_part(hit.part);
+                assert_ne!(kind, HoneycombPart::Face);
+                beyond += usize::from(class != 0);
+                if kind == HoneycombPart::Edge {
+                    edges += 1;
+                    let want = if class % 2 == 0 { a } else { b };
+                    assert_eq!(h.materials.material(hit.part, own), want, "class {class}");
+                }
+            }
+        }
+    }
+    assert!(edges > 0, "no edge met");
+    assert!(
+        beyond > 200,
+        "only {beyond} of 2000 rays left the base cell"
     );
 }

@@ -1,6 +1,7 @@
 //! 3MF: a zip package holding the content types, the relationship to the
 //! model part, and the model (millimetres): one base-material group with a
-//! display colour per material, one object a shell, each in the build.
+//! display colour per material, one object per scene object (its shells
+//! one mesh, named as the scene names it), each in the build.
 //! Entries carry the zip format's earliest time stamp, not the clock's, so
 //! two exports of one scene are the same bytes.
 
@@ -57,15 +58,19 @@ fn model_xml(model: &Model) -> String {
         );
     }
     x.push_str("  </basematerials>\n");
-    for (k, shell) in model.shells.iter().enumerate() {
+    // One object a scene object, its shells one mesh: a slicer places
+    // and moves it whole, under the scene's name for it. Triangles of a
+    // shell in another material than the first say so (`p1`).
+    let bodies = model.bodies();
+    for (k, body) in bodies.iter().enumerate() {
+        let material = body[0].material;
         let _ = writeln!(
             x,
-            "  <object id=\"{}\" type=\"model\" pid=\"1\" pindex=\"{}\" name=\"{}\">\n   <mesh>\n    <vertices>",
+            "  <object id=\"{}\" type=\"model\" pid=\"1\" pindex=\"{material}\" name=\"{}\">\n   <mesh>\n    <vertices>",
             k + 2,
-            shell.material,
-            escape(&shell.object)
+            escape(&body[0].object_name)
         );
-        for v in &shell.vertices {
+        for v in body.iter().flat_map(|s| &s.vertices) {
             let _ = writeln!(
                 x,
                 "     <vertex x=\"{}\" y=\"{}\" z=\"{}\"/>",
@@ -73,13 +78,24 @@ fn model_xml(model: &Model) -> String {
             );
         }
         x.push_str("    </vertices>\n    <triangles>\n");
-        for [a, b, c] in &shell.triangles {
-            let _ = writeln!(x, "     <triangle v1=\"{a}\" v2=\"{b}\" v3=\"{c}\"/>");
+        let mut first = 0u32;
+        for shell in body {
+            let own = if shell.material == material {
+                String::new()
+            } else {
+                format!(" pid=\"1\" p1=\"{}\"", shell.material)
+            };
+            for t in &shell.triangles {
+                let [a, b, c] = t.map(|v| v + first);
+                let _ = writeln!(x, "     <triangle v1=\"{a}\" v2=\"{b}\" v3=\"{c}\"{own}/>");
+            }
+            // A body's vertices are counted in u32 by the triangle budget.
+            first += shell.vertices.len() as u32;
         }
         x.push_str("    </triangles>\n   </mesh>\n  </object>\n");
     }
     x.push_str(" </resources>\n <build>\n");
-    for k in 0..model.shells.len() {
+    for k in 0..bodies.len() {
         let _ = writeln!(x, "  <item objectid=\"{}\"/>", k + 2);
     }
     x.push_str(" </build>\n</model>\n");

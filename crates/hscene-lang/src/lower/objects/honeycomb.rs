@@ -15,7 +15,7 @@ use crate::lower::Lowerer;
 use crate::syntax::Value;
 
 /// The edges' radius when none of `edges`, `wireframe`, `faces`,
-/// `vertices` and `colors` is given: thin enough that the far cells stay
+/// `vertices` and `face_colors` is given: thin enough that the far cells stay
 /// apart in the picture, thick enough to see from inside the base cell.
 pub(super) const DEFAULT_EDGE_RADIUS: f64 = 0.02;
 
@@ -199,11 +199,11 @@ impl Lowerer<'_> {
         }
         let palette = colors.unwrap_or_default();
         let face_palette = face_colors.unwrap_or_default();
-        let nothing_asked = edges.is_none()
-            && faces.is_none()
-            && vertices.is_none()
-            && palette.is_empty()
-            && face_palette.is_empty();
+        // `colors` alone colours the edges and vertices (the default
+        // edges, unless `edges` or `vertices` says otherwise): it must not
+        // close every cell with walls the user never asked for.
+        let nothing_asked =
+            edges.is_none() && faces.is_none() && vertices.is_none() && face_palette.is_empty();
         let ideal_vertices = rings.seed_is_ideal(&CoxeterSimplex::new(symbol));
         if let Some((_, span)) = vertices.filter(|_| ideal_vertices) {
             self.report(
@@ -223,7 +223,7 @@ impl Lowerer<'_> {
             } else {
                 edges.map(|(w, _)| w)
             },
-            faces: faces.is_some() || !palette.is_empty() || !face_palette.is_empty(),
+            faces: faces.is_some() || !face_palette.is_empty(),
             vertices: vertices.map(|(r, _)| r),
             depth: depth.map(|(d, _)| d),
             // Both palettes count round the same classes: as many as the

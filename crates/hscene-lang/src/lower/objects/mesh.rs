@@ -56,13 +56,28 @@ impl Lowerer<'_> {
         let data = match self.files.mesh(&path, mesh_file::load) {
             Ok(data) => data,
             Err(MeshFileError::Io(e)) => {
+                // The folder is named because a scene copied from the docs
+                // or the examples names its meshes from where it was: the
+                // user must see where the name led, not only that it failed.
+                let whose = match self.base_dir {
+                    Some(_) => "the scene file's folder",
+                    None => "the current folder",
+                };
+                // Made absolute: a scene named as `scene.hsc` has the
+                // folder "", which says nothing.
+                let looked = std::path::absolute(&path).unwrap_or_else(|_| path.clone());
+                let folder = looked.parent().unwrap_or(&looked);
                 self.report(
                     Diagnostic::new(
                         Code::MeshFileUnreadable,
                         file_span,
-                        format!("cannot read the mesh file {}: {e}", quote(file)),
+                        format!(
+                            "cannot read the mesh file {} (looked in the folder `{}`): {e}",
+                            quote(file),
+                            folder.display()
+                        ),
                     )
-                    .with_help("a relative file name is taken from the scene file's directory"),
+                    .with_help(format!("a relative file name is taken from {whose}, not from where hscene runs: in a scene copied from the docs or the examples, copy the mesh beside your scene or write its path from your scene's folder")),
                 );
                 return None;
             }
