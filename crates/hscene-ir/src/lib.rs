@@ -15,6 +15,7 @@
 //! a material of its scene).
 
 mod animation;
+pub mod bounded_read;
 mod camera;
 mod chart;
 mod color;

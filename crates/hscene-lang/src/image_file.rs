@@ -7,7 +7,7 @@
 
 use std::path::Path;
 
-use crate::bounded_read::{BoundedReadError, read_regular_file};
+use hscene_ir::bounded_read::{BoundedReadError, read_regular_file};
 use hscene_ir::{MAX_TEXTURE_PIXELS, TextureImage, TextureImageError, srgb_to_linear};
 
 /// The largest image file read: 256 MiB.

@@ -15,7 +15,6 @@
 //! assert_eq!(scene.objects.len(), 1);
 //! ```
 
-mod bounded_read;
 pub mod diagnostic;
 mod diagnostic_list;
 mod file_cache;

@@ -13,7 +13,7 @@
 
 use std::path::Path;
 
-use crate::bounded_read::{BoundedReadError, read_regular_file};
+use hscene_ir::bounded_read::{BoundedReadError, read_regular_file};
 
 use hgeom::glam::DMat4;
 use serde::Deserialize;

@@ -95,24 +95,12 @@ impl FlightPath {
     /// Reads a path file: a regular file (checked before it is opened) of
     /// at most [`MAX_FLIGHT_FILE_BYTES`], parsed as [`FlightPath::parse`].
     pub fn read(path: &std::path::Path) -> Result<FlightPath, FlightError> {
-        use std::io::Read;
-        let meta = std::fs::metadata(path)?;
-        if !meta.is_file() {
-            return Err(FlightError::NotAFile);
-        }
-        if meta.len() > MAX_FLIGHT_FILE_BYTES {
-            return Err(FlightError::TooLarge(meta.len()));
-        }
-        let file = std::fs::File::open(path)?;
-        if !file.metadata()?.is_file() {
-            return Err(FlightError::NotAFile);
-        }
-        let mut bytes = Vec::new();
-        file.take(MAX_FLIGHT_FILE_BYTES + 1)
-            .read_to_end(&mut bytes)?;
-        if bytes.len() as u64 > MAX_FLIGHT_FILE_BYTES {
-            return Err(FlightError::TooLarge(bytes.len() as u64));
-        }
+        use hscene_ir::bounded_read::{BoundedReadError, read_regular_file};
+        let bytes = read_regular_file(path, MAX_FLIGHT_FILE_BYTES).map_err(|e| match e {
+            BoundedReadError::NotAFile => FlightError::NotAFile,
+            BoundedReadError::TooLarge(n) => FlightError::TooLarge(n),
+            BoundedReadError::Io(e) => FlightError::from(e),
+        })?;
         let text = String::from_utf8(bytes).map_err(|_| FlightError::NotText)?;
         FlightPath::parse(&text)
     }

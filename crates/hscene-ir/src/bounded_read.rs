@@ -1,5 +1,5 @@
-//! Reading a file a scene names (an image, a space's pairings) without
-//! trusting it: it must be a regular file (a FIFO is never opened, as
+//! Reading a file a scene or a command names (an image, a space's
+//! pairings, a viewer's flight path) without trusting it: it must be a regular file (a FIFO is never opened, as
 //! opening one for reading blocks until a writer comes), and no more than
 //! a limit is ever read, even from a file that grows while it is read.
 
@@ -8,7 +8,7 @@ use std::path::Path;
 
 /// Why a named file was not read.
 #[derive(Debug)]
-pub(crate) enum BoundedReadError {
+pub enum BoundedReadError {
     /// Not a regular file.
     NotAFile,
     /// Larger than the limit (its size, or what was read past it).
@@ -24,7 +24,7 @@ impl From<std::io::Error> for BoundedReadError {
 }
 
 /// The bytes of the regular file at `path`, at most `max` of them.
-pub(crate) fn read_regular_file(path: &Path, max: u64) -> Result<Vec<u8>, BoundedReadError> {
+pub fn read_regular_file(path: &Path, max: u64) -> Result<Vec<u8>, BoundedReadError> {
     let meta = std::fs::metadata(path)?;
     if !meta.is_file() {
         return Err(BoundedReadError::NotAFile);
