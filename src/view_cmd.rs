@@ -177,13 +177,7 @@ fn headless(args: &ViewArgs, scene: &Scene, options: ViewOptions) -> ExitCode {
 
 /// The linear value whose sRGB encoding rounds to `v`.
 fn srgb_to_linear(v: u8) -> f32 {
-    let c = f64::from(v) / 255.0;
-    let l = if c <= 0.04045 {
-        c / 12.92
-    } else {
-        ((c + 0.055) / 1.055).powf(2.4)
-    };
-    l as f32
+    hscene_ir::srgb_to_linear(f64::from(v) / 255.0) as f32
 }
 
 pub fn run(args: &ViewArgs, color: ColorChoice) -> ExitCode {
