@@ -155,13 +155,12 @@ pub fn run(args: &ExportArgs, color: ColorChoice) -> ExitCode {
     }
     let bytes: usize = files.iter().map(|f| f.bytes.len()).sum();
     diagln!(
-        "wrote {}: {} shells, {} triangles, volume {:.1} mm³ (sum of shells), {} parts cut below {} mm, {} bytes, {:.2} s",
+        "wrote {}: {} shells, {} triangles, {}, {}, {} bytes, {:.2} s",
         args.output.display(),
         model.shells.len(),
         model.triangle_count(),
-        model.volume(),
-        model.parts_cut,
-        options.min_feature.get(),
+        volume_summary(&model),
+        left_out_summary(model.parts_cut, &options),
         bytes,
         start.elapsed().as_secs_f64()
     );
@@ -173,4 +172,38 @@ pub fn run(args: &ExportArgs, color: ColorChoice) -> ExitCode {
         );
     }
     ExitCode::SUCCESS
+}
+
+/// The printed volume, said for what it is: the closed shells' sum (an
+/// overlap counts twice); an open surface (a mesh file's with a boundary)
+/// encloses nothing and is counted apart rather than given a volume.
+fn volume_summary(model: &hexport::Model) -> String {
+    let open = model.shells.iter().filter(|s| !s.closed).count();
+    let closed: f64 = model
+        .shells
+        .iter()
+        .filter(|s| s.closed)
+        .map(hexport::Shell::signed_volume)
+        .sum();
+    match open {
+        0 => format!("volume {closed:.1} mm³ (sum of shells)"),
+        n => format!(
+            "volume {closed:.1} mm³ (sum of the closed shells; {n} open surface(s) enclose none)"
+        ),
+    }
+}
+
+/// What the cut rule left out (docs/export.md, "The cut rule"): parts
+/// thinner than the minimum; with `--thicken` nothing is left out for
+/// being thin, only thickened tubes too short to print as rods and the
+/// ends of tubes that run out to the boundary.
+fn left_out_summary(parts: usize, options: &hexport::ExportOptions) -> String {
+    let min = options.min_feature.get();
+    match options.thin {
+        hexport::ThinParts::Cut => format!("{parts} part(s) thinner than {min} mm left out"),
+        hexport::ThinParts::Thicken => format!(
+            "{parts} part(s) left out (tubes shorter than {} mm once thickened to {min} mm)",
+            hexport::THICKENED_MIN_LENGTH * min
+        ),
+    }
 }

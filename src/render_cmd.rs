@@ -122,10 +122,12 @@ pub fn run(args: &RenderArgs, color: ColorChoice) -> ExitCode {
     let compile = |k| hscene_lang::compile_with(&source, &options(k));
     let show_errors =
         |diagnostics: &[hscene_lang::Diagnostic]| show(diagnostics, Default::default());
-    // Every frame is checked before the first is written.
+    // Every frame is checked before the first is written; the frames the
+    // check builds are the ones rendered.
+    let mut later = frames::LaterFrames::new(&compile, &show_errors);
     if args.frame.is_none()
         && frames > 1
-        && let Err(code) = frames::check_every_frame(&scene, frames, &compile, &show_errors)
+        && let Err(code) = later.check_every_frame(&scene, frames)
     {
         return code;
     }
@@ -156,8 +158,7 @@ pub fn run(args: &RenderArgs, color: ColorChoice) -> ExitCode {
     let code = render_every_frame(
         args,
         &scene,
-        &compile,
-        &show_errors,
+        &mut later,
         writer.as_mut(),
         stderr_tty,
         &auto_ev,
@@ -261,40 +262,23 @@ fn open_video(
 fn render_every_frame(
     args: &RenderArgs,
     scene: &hscene_ir::Scene,
-    compile: &dyn Fn(u32) -> hscene_lang::Compiled,
-    show_errors: &dyn Fn(&[hscene_lang::Diagnostic]),
+    later: &mut frames::LaterFrames<'_>,
     mut video: Option<&mut hrender::VideoWriter>,
     stderr_tty: bool,
     auto_ev: &std::cell::Cell<Option<f64>>,
 ) -> ExitCode {
     let frames = scene.settings.frames;
     for k in 0..frames {
-        let later;
+        let built;
         let frame_scene = if k == 0 {
             scene
-        } else if !scene.animation.moves_points {
-            match scene.frame(k) {
-                Ok(s) => {
-                    later = s;
-                    &later
-                }
-                Err(e) => {
-                    diagln!("error: {e}");
-                    return ExitCode::from(EXIT_SCENE_ERRORS);
-                }
-            }
         } else {
-            let compiled = compile(k);
-            match compiled.scene {
-                Some(s) => {
-                    later = s;
-                    &later
+            match later.take(scene, k) {
+                Ok(s) => {
+                    built = s;
+                    &built
                 }
-                None => {
-                    diagln!("error: frame {k} of the animation has errors:");
-                    show_errors(&compiled.diagnostics);
-                    return ExitCode::from(EXIT_SCENE_ERRORS);
-                }
+                Err(code) => return code,
             }
         };
         let path = frame_path(&args.output, k);
@@ -324,23 +308,24 @@ fn warn_if_almost_black(
     auto: bool,
     has_background: bool,
 ) {
-    if !image.pixels().is_empty() && hrender::is_black(image) {
-        // A scene with a background whose picture is black hides it behind
-        // its objects: adding one is no fix.
-        let background = if has_background {
-            "; the scene's background is hidden behind its objects everywhere"
-        } else {
-            ", or a `background`"
-        };
-        diagln!(
-            "warning: the image is black: no pixel receives any light; add a light (`Lights`), an `ambient` colour to the materials (with the global `ambient`), `emission`{background}"
-        );
-        return;
-    }
-    if !hrender::is_almost_black(image, display) {
-        return;
-    }
-    let hint = match hrender::suggested_exposure(image, current) {
+    let bright_level = match hrender::darkness(image, display) {
+        hrender::Darkness::Visible => return,
+        hrender::Darkness::AlmostBlack { bright_level } => bright_level,
+        hrender::Darkness::Black => {
+            // A scene with a background whose picture is black hides it
+            // behind its objects: adding one is no fix.
+            let background = if has_background {
+                "; the scene's background is hidden behind its objects everywhere"
+            } else {
+                ", or a `background`"
+            };
+            diagln!(
+                "warning: the image is black: no pixel receives any light; add a light (`Lights`), an `ambient` colour to the materials (with the global `ambient`), `emission`{background}"
+            );
+            return;
+        }
+    };
+    let hint = match hrender::exposure_for_level(bright_level, current) {
         Some(ev) if !auto => format!(
             "; try --exposure {ev:.1} (or --exposure auto), brighter lights or `irradiance_at`"
         ),

@@ -549,3 +549,43 @@ fn the_viewer_folds_the_eye_in_a_closed_space() {
     let norm = coords.iter().map(|c| c * c).sum::<f64>().sqrt();
     assert!(norm < 0.9, "the eye is at {from}");
 }
+
+/// Class 7: `render` of a camera flown 30 along a line through a closed
+/// space: every frame renders (the camera is carried home whole,
+/// `space_prepare.rs`), none with a failed pixel, each showing the space's
+/// edges and ball (at least a tenth of the pixels; beyond the horizon the
+/// background shows, as at the origin).
+#[test]
+fn a_camera_flown_far_through_a_closed_space_renders_every_frame() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(
+        dir.path().join("fly.hsc"),
+        "Globals { space = seifert_weber; domain = 0.03, #brass; frames = 3; resolution = (24, 24);\n\
+                   to = (0.1, 0.03, 0.3); fov = 100; background = (0, 0, 1); ambient = (0.3, 0.3, 0.3); }\n\
+         Points { o = (0, 0, 0); d = (0.1, 0.03, 0.3); }\n\
+         BRDFs { brass: ambient = (0.5, 0.4, 0.2), diffuse = (0.8, 0.6, 0.3); red: ambient = (0.5, 0.1, 0.1), diffuse = (0.9, 0.2, 0.15); }\n\
+         Lights { (0.05, 0.1, -0.1), (1, 1, 1), (0.5, 0.5, 0.5), irradiance_at = 0.6; }\n\
+         Transformations { axis: hline(%o, %d); @camera->Translate(%axis, 30), animate; }\n\
+         Objects { Sphere (0.25, 0, 0.1), 0.12, #red; }\n",
+    )
+    .unwrap();
+    let out = hscene()
+        .args(["render", "fly.hsc", "-o", "fly.png"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    assert!(!stderr.contains("numeric failure"), "{stderr}");
+    for k in 0..3 {
+        let img = image::open(dir.path().join(format!("fly-{k:04}.png")))
+            .unwrap()
+            .to_rgb8();
+        let background = img.pixels().filter(|p| p.0 == [0, 0, 255]).count();
+        assert!(
+            background * 10 < img.pixels().len() * 9,
+            "frame {k}: {background} of {} pixels show the background",
+            img.pixels().len()
+        );
+    }
+}

@@ -11,8 +11,12 @@ domain's volume hscene reports with SnapPy's `M.volume()`.
     python3 tests/snappy_census.py --double       # snappy.Manifold's f64 data
     python3 tests/snappy_census.py --fixtures DIR  # write the committed set
 
-Fails (exit 1) when more than 1 in 40 is refused or any accepted volume is
-off by more than 1e-9 relative; prints the reason and exits 0 only where
+Every `--render-every`-th accepted domain (default 3) is also rendered, a
+small picture from inside it with a ball and a light (`render_scene`), and
+must render with no failed pixel (hscene warns "numeric failure" for any).
+
+Fails (exit 1) when more than 1 in 40 is refused, any accepted volume is
+off by more than 1e-9 relative, or a render fails or has failed pixels; prints the reason and exits 0 only where
 SnapPy cannot be installed.
 """
 
@@ -119,11 +123,54 @@ def check(hscene, json_path, scene_path):
     return True, space.get("volume"), ""
 
 
+RENDER_SCENE = """Globals {
+    resolution = (32, 32);
+    space = "%s";
+    domain = 0.02, #frame;
+    from = (0, 0, 0);
+    to = (0.1, 0.03, 0.3);
+    fov = 100;
+    background = (0.02, 0.02, 0.05);
+    ambient = (0.15, 0.15, 0.15);
+    recursion_depth = 1;
+}
+BRDFs {
+    frame: ambient = (0.5, 0.4, 0.2), diffuse = (0.8, 0.6, 0.3);
+    ball: ambient = (0.5, 0.1, 0.1), diffuse = (0.9, 0.2, 0.15), specular = (0.6, 0.6, 0.6), shininess = 60;
+}
+Lights {
+    (0.05, 0.1, -0.1), (1, 0.95, 0.85), (0.5, 0.5, 0.5), irradiance_at = 0.6;
+}
+Objects {
+    Sphere (0.1, 0, 0.12), 0.05, #ball;
+}
+"""
+
+
+def render(hscene, json_path, folder):
+    """A small picture from inside the domain: "" when it rendered with no
+    failed pixel, else why not."""
+    scene = os.path.join(folder, "render.hsc")
+    with open(scene, "w") as f:
+        f.write(RENDER_SCENE % os.path.basename(json_path))
+    r = subprocess.run(
+        [hscene, "render", scene, "-o", os.path.join(folder, "render.png"), "--force"],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    if r.returncode != 0:
+        return "render exited %d: %s" % (r.returncode, r.stderr.strip()[:300])
+    failures = [l.strip() for l in r.stderr.splitlines() if "numeric failure" in l]
+    return failures[0] if failures else ""
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--count", type=int, default=120)
     ap.add_argument("--seed", type=int, default=51)
     ap.add_argument("--hscene", default=None)
+    ap.add_argument("--render-every", type=int, default=3, help="render every K-th accepted domain (0: none)")
     ap.add_argument("--double", action="store_true", help="snappy.Manifold (f64), not ManifoldHP")
     ap.add_argument("--fixtures", default=None, help="write a small committed set to this folder")
     args = ap.parse_args()
@@ -152,6 +199,7 @@ def main():
     started = time.time()
     names = sample(snappy, args.count, args.seed)
     accepted, refused, no_domain, worst = 0, [], [], (0.0, None)
+    rendered, bad_renders = 0, []
     with tempfile.TemporaryDirectory() as tmp:
         for k, name in enumerate(names):
             M, D = dirichlet(snappy, name, not args.double)
@@ -167,6 +215,11 @@ def main():
                 refused.append((name, message))
                 continue
             accepted += 1
+            if args.render_every > 0 and accepted % args.render_every == 1 % args.render_every:
+                why = render(hscene, json_path, tmp)
+                rendered += 1
+                if why:
+                    bad_renders.append((name, why))
             expected = float(M.volume())
             error = abs(volume - expected) / expected if volume is not None else float("inf")
             if error > worst[0] or worst[1] is None:
@@ -176,13 +229,16 @@ def main():
         f"snappy_census: {accepted} of {tried} accepted "
         f"({'f64' if args.double else 'high precision'}, seed {args.seed}); "
         f"worst volume error {worst[0]:.2e} relative ({worst[1]}); "
+        f"{rendered} rendered, {len(bad_renders)} with failures; "
         f"{time.time() - started:.0f} s"
     )
+    for name, why in bad_renders:
+        print(f"  render of {name}: {why}")
     for name, message in refused:
         print(f"  refused {name}: {message}")
     for name in no_domain:
         print(f"  SnapPy built no Dirichlet domain for {name} (not counted)")
-    failed = len(refused) * 40 > tried or worst[0] > VOLUME_TOLERANCE
+    failed = len(refused) * 40 > tried or worst[0] > VOLUME_TOLERANCE or bad_renders
     return 1 if failed else 0
 
 

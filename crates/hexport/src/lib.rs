@@ -33,3 +33,4 @@ pub use format::{Format, OutputFile};
 pub use honeycomb::MAX_CHAMBERS;
 pub use model::{ExportMaterial, Model, Owner, Shell};
 pub use options::{DEFAULT_MAX_TRIANGLES, ExportOptions, MAX_TRIANGLES, Millimetres, ThinParts};
+pub use rules::THICKENED_MIN_LENGTH;

@@ -50,13 +50,8 @@ impl Shell {
     /// wound so that its normals point out.
     pub fn from_grid(owner: &Owner, material: usize, mesh: TriangleShell, scale: f64) -> Shell {
         let mut shell = Shell {
-            object: owner.label.clone(),
-            object_index: owner.index,
-            object_name: owner.name.clone(),
-            material,
-            vertices: mesh.vertices.iter().map(|v| *v * scale).collect(),
-            triangles: mesh.triangles,
             closed: true,
+            ..Shell::open(owner, material, mesh, scale)
         };
         if shell.signed_volume() < 0.0 {
             for t in &mut shell.triangles {

@@ -105,7 +105,7 @@ pub use polygons::{
     regular_polygon_with_side, saccheri_quadrilateral,
 };
 pub use polyhedron::{Platonic, Polyhedron, unique_edges};
-pub use ray::{Hit, Ray};
+pub use ray::{CHORD_FROM, Hit, Ray, on_hyperboloid};
 pub use rod::Rod;
 pub use segment::Segment;
 pub use shape::{Shape, Solid};

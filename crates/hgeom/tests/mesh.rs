@@ -1,7 +1,7 @@
 //! Triangle meshes: agreement with `ConvexPolygon`, hits on their triangles,
 //! watertightness, isometry invariance, and the hard cases.
 //!
-//! Run with `cargo test -p hgeom --test mesh`; `PROPTEST_CASES=n` raises the
+//! Run with `cargo test -p hgeom --test integration mesh::`; `PROPTEST_CASES=n` raises the
 //! case count of the properties, and `--nocapture` prints the measured
 //! errors.
 

@@ -4,7 +4,7 @@
 //! random unit directions, so they are spread over the whole space rather than
 //! bunched near the Euclidean centre of the ball.
 //!
-//! Run with `cargo test -p hgeom --test properties`. `PROPTEST_CASES=n`
+//! Run with `cargo test -p hgeom --test integration properties::`. `PROPTEST_CASES=n`
 //! raises the case count of every property for a heavier run.
 
 use std::f64::consts::{PI, TAU};

@@ -1,5 +1,6 @@
 //! The `serde` feature: every value type round-trips exactly, and input that
-//! breaks an invariant is refused. Run with `cargo test -p hgeom --features serde`.
+//! breaks an invariant is refused. The test support crate turns the feature on,
+//! so `cargo test -p hgeom` (and the workspace's tests) run these.
 #![cfg(feature = "serde")]
 
 use hgeom::glam::{DMat3, DVec3};

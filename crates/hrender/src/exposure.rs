@@ -148,24 +148,43 @@ pub fn bright_level(image: &Image) -> Option<f64> {
     Some(f64::from(*v))
 }
 
-/// True when the picture would look almost black: fewer than 1 % of the
-/// pixels that see anything reach [`DARK_LEVEL`] once tone-mapped and
-/// encoded by `display` (so its [`bright_level`] stays below it). A small
-/// object on a black background is not dark (its own pixels are bright);
-/// an image that sees nothing at all is not "almost black" either (there
-/// is nothing to expose: [`is_black`]). One pass, no allocation: the level
-/// is turned into a linear threshold once.
-pub fn is_almost_black(image: &Image, display: DisplayTransform) -> bool {
-    let threshold = dark_threshold(display);
-    let (mut lit, mut bright) = (0u64, 0u64);
-    for p in image.pixels() {
-        let m = p[0].max(p[1]).max(p[2]);
-        if m > 0.0 {
-            lit += 1;
-            bright += u64::from(m >= threshold);
-        }
+/// How a picture looks once displayed, judged by one measure: its
+/// [`bright_level`] against the level `display` stores as [`DARK_LEVEL`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Darkness {
+    /// No pixel sees anything: every channel of every pixel is 0 (there is
+    /// nothing to expose).
+    Black,
+    /// Its bright pixels stay below [`DARK_LEVEL`] once tone-mapped and
+    /// encoded: at most 1 % of the pixels that see anything reach it. A
+    /// small object on a black background is not dark (its own pixels are
+    /// bright). Carries the bright level, for [`suggested_exposure`].
+    AlmostBlack {
+        /// The picture's [`bright_level`], linear.
+        bright_level: f64,
+    },
+    /// Neither.
+    Visible,
+}
+
+/// The [`Darkness`] of `image` shown through `display` (an empty image is
+/// [`Darkness::Visible`]: there is nothing to warn about).
+pub fn darkness(image: &Image, display: DisplayTransform) -> Darkness {
+    if image.pixels().is_empty() {
+        return Darkness::Visible;
     }
-    lit > 0 && bright * 100 < lit
+    match bright_level(image) {
+        None => Darkness::Black,
+        Some(v) if v < f64::from(dark_threshold(display)) => {
+            Darkness::AlmostBlack { bright_level: v }
+        }
+        Some(_) => Darkness::Visible,
+    }
+}
+
+/// True when the picture would look almost black ([`Darkness::AlmostBlack`]).
+pub fn is_almost_black(image: &Image, display: DisplayTransform) -> bool {
+    matches!(darkness(image, display), Darkness::AlmostBlack { .. })
 }
 
 /// True when no pixel sees anything: every channel of every pixel is 0.
@@ -194,7 +213,12 @@ fn dark_threshold(display: DisplayTransform) -> f32 {
 /// the suggestion is the same whether it was made at 0 or at 5 stops. `None`
 /// when nothing is lit.
 pub fn suggested_exposure(image: &Image, current: f64) -> Option<f64> {
-    let v = bright_level(image)?;
+    exposure_for_level(bright_level(image)?, current)
+}
+
+/// The `--exposure` that takes a picture of [`bright_level`] `v`, rendered
+/// at `current` stops, to linear 0.5 ([`suggested_exposure`]).
+pub fn exposure_for_level(v: f64, current: f64) -> Option<f64> {
     let ev = current + (SUGGESTED_LEVEL / v).log2();
     ev.is_finite()
         .then(|| ev.clamp(-MAX_EXPOSURE, MAX_EXPOSURE))

@@ -63,8 +63,8 @@ pub use aov::{Aov, AovLayers, render_aovs};
 pub use display::{DisplayTransform, Encoding, ToneMap, srgb_decode, srgb_encode};
 pub use error::RenderError;
 pub use exposure::{
-    AUTO_KEY, DARK_LEVEL, Exposure, MAX_EXPOSURE, auto_exposure, bright_level, is_almost_black,
-    is_black, luminance, suggested_exposure,
+    AUTO_KEY, DARK_LEVEL, Darkness, Exposure, MAX_EXPOSURE, auto_exposure, bright_level, darkness,
+    exposure_for_level, is_almost_black, is_black, luminance, suggested_exposure,
 };
 pub use exr_layers::write_exr_with_layers;
 pub use fallible::allocation_is_fallible;

@@ -5,6 +5,7 @@
 //! light reach, and the domain's edges added as a honeycomb of the
 //! domain's cells. What is kept and why is in `docs/manifolds.md`.
 
+use hgeom::glam::DVec3;
 use hgeom::{
     DEFAULT_HORIZON, GeomError, HCylinder, HLine, HoneycombStyle, IdealPoint, Isometry, Point,
     QuotientSpace, RegularHoneycomb, Rod, Vertex,
@@ -46,8 +47,14 @@ pub(crate) fn unfold(
     let eye_home = q
         .fold(&eye)
         .map_err(|e| invalid(format!("the eye cannot be folded into the domain: {e}")))?;
-    let mut staged = vec![eye_home.inverse()];
-    staged.extend_from_slice(stages);
+    let staged = match folded_stages(stages, &eye_home) {
+        Some(folded) => folded,
+        None => {
+            let mut staged = vec![eye_home.inverse()];
+            staged.extend_from_slice(stages);
+            staged
+        }
+    };
 
     let mut unfolded = scene.clone();
     unfolded.settings.sky = None;
@@ -126,6 +133,34 @@ pub(crate) fn unfold(
             numbers,
         },
     })
+}
+
+/// The canonical frame of the camera carried home by `home` (the fold of
+/// its eye into the domain), when `home` keeps orientation: the camera's
+/// eye, a point ahead and a point above, carried back from the canonical
+/// frame and home, make a camera near the domain whose frame is built
+/// afresh. Composing `stages` with `home`'s inverse instead multiplies two
+/// isometries that each move by the eye's distance (20 after flying 20
+/// through a closed space): their product is near the identity, but every
+/// image of an object or light passes through points as far again on the
+/// way, past what f64 holds. `None` (compose them as they are) for the
+/// identity, a fold that reflects (a mirror cell: a camera rebuilt from
+/// points would see the picture mirrored) or a point that cannot be made.
+fn folded_stages(stages: &[Isometry], home: &Isometry) -> Option<Vec<Isometry>> {
+    if *home == Isometry::IDENTITY || !home.preserves_orientation() {
+        return None;
+    }
+    let back = stages
+        .iter()
+        .fold(Isometry::IDENTITY, |acc, stage| stage.compose(&acc))
+        .inverse();
+    let carry = |p: Point| home.checked_apply(&back.checked_apply(&p).ok()?).ok();
+    let camera = ir::Camera {
+        eye: carry(Point::ORIGIN)?,
+        target: carry(Point::at_distance_from_origin(DVec3::Z, 1.0).ok()?)?,
+        up: Some(carry(Point::at_distance_from_origin(DVec3::Y, 1.0).ok()?)?),
+    };
+    Some(ir::view::canonical_frame(&camera)?.stages.to_vec())
 }
 
 /// Why an object has no images.

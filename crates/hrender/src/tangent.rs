@@ -1,5 +1,7 @@
 //! Keeping tangent vectors on the hyperboloid honest: the checks and the
 //! renormalisation every integrator applies to the directions it makes.
+//! (Hit points and arriving tangents are kept honest by hgeom itself:
+//! `hgeom::on_hyperboloid`, `Ray::tangent_arriving_at`.)
 
 use hgeom::glam::DVec4;
 use hgeom::lorentz;
@@ -22,46 +24,6 @@ pub fn is_unit(v: DVec4) -> bool {
 pub fn renormalize(p: DVec4, v: DVec4) -> DVec4 {
     let t = v + lorentz::dot(p, v) * p;
     t / lorentz::norm(t)
-}
-
-/// The point `p` put back on the hyperboloid `<p,p> = -1`, `w > 0`, by
-/// recomputing its time coordinate from its space part. A hit point is
-/// `cosh t X + sinh t V`, off the hyperboloid by the rounding of the ray's
-/// origin and direction times `e^{2t}`; a ray started from it carries that
-/// off to its own hit, times `e^{2t}` again, so inside a closed mirror the
-/// defect compounds bounce after bounce (`e^{2·chord}` a bounce: inside a
-/// mirror sphere of radius 2 it lost the unit tangents at the fifth).
-/// Started from the projected point, every bounce begins with the
-/// rounding of one step only. `w` from `1 + |x|^2` has a relative error of
-/// an ulp, where `-<p,p>` would cancel for a far point.
-#[inline]
-pub fn on_hyperboloid(p: DVec4) -> DVec4 {
-    let x = p.truncate();
-    x.extend((1.0 + x.length_squared()).sqrt())
-}
-
-/// Arc length past which [`arriving_direction`] takes the chord: there
-/// `eps |X|^2 / sinh t` (the chord's error) is below `eps |X|^2 e^{2t}`
-/// (the tangent's).
-const CHORD_FROM: f64 = 0.5;
-
-/// The unit tangent with which `ray` arrives at its hit `p` (arc length
-/// `t`, `p` on the hyperboloid). `Ray::tangent_at` is
-/// `sinh t X + cosh t V`: the rounding of `<X,V> = 0` and `<X,X> = -1`
-/// comes back multiplied by `sinh 2t` and `sinh² t`, so a secondary ray
-/// 12 long from a point 6 from the eye arrives with a tangent 3-8 % off
-/// unit, and off in direction by as much. The same tangent is the
-/// direction at `p` away from the ray's origin, the chord's, which is
-/// exact to `eps |X|^2 / sinh t` (`lorentz::unit_tangent_towards`): used
-/// past [`CHORD_FROM`], where it is the better of the two.
-#[inline]
-pub fn arriving_direction(ray: &hgeom::Ray, t: f64, p: DVec4) -> DVec4 {
-    if t > CHORD_FROM
-        && let Some(back) = lorentz::unit_tangent_towards(p, ray.origin)
-    {
-        return -back;
-    }
-    ray.tangent_at(t)
 }
 
 #[cfg(test)]
@@ -97,13 +59,13 @@ mod tests {
             hgeom::Ray::from_origin_unchecked((-u + DVec3::new(0.0005, 0.001, 0.0)).normalize());
         let out = Point::at_distance_from_origin(u, 6.0).unwrap();
         let m = hgeom::Isometry::transvection_from_origin(out).to_lorentz();
-        let origin = on_hyperboloid(m * near.origin);
+        let origin = hgeom::on_hyperboloid(m * near.origin);
         let ray = hgeom::Ray {
             origin,
             dir: renormalize(origin, m * near.dir),
         };
-        let p = on_hyperboloid(ray.at(t));
-        let d = arriving_direction(&ray, t, p);
+        let p = hgeom::on_hyperboloid(ray.at(t));
+        let d = ray.tangent_arriving_at(t, p);
         assert!((lorentz::dot(d, d) - 1.0).abs() < 1e-9);
         assert!(lorentz::dot(d, p).abs() < 1e-9 * p.w);
         let away = lorentz::dot(d, ray.origin) / -t.sinh();

@@ -163,6 +163,10 @@ const MAX_FOLD_STEPS: u32 = 100_000;
 #[derive(Clone, Debug)]
 pub struct RegularHoneycomb {
     symbol: Schlafli,
+    /// The characteristic simplex's vertices (its `v0..v3`), kept so that
+    /// per-hit queries ([`RegularHoneycomb::face_frame`]) do not rebuild
+    /// the simplex for every textured face hit.
+    simplex_vertices: [DVec4; 4],
     rings: Rings,
     style: HoneycombStyle,
     domain: Arc<WalkDomain>,
@@ -244,6 +248,7 @@ impl RegularHoneycomb {
     ) -> RegularHoneycomb {
         RegularHoneycomb {
             symbol,
+            simplex_vertices: simplex.vertices(),
             rings,
             style,
             domain: Arc::new(domain),

@@ -33,8 +33,9 @@ use crate::material::reflectances;
 use crate::sampling::SampleStream;
 use crate::scene::{Nearest, PreparedScene, T_MIN};
 use crate::spherical_triangle::SphericalTriangle;
-use crate::tangent::{arriving_direction, is_unit, on_hyperboloid};
+use crate::tangent::is_unit;
 use crate::trace_stats::TraceStats;
+use hgeom::on_hyperboloid;
 
 /// The most surfaces a path scatters from: far beyond where Russian
 /// roulette ends paths in any scene that absorbs light at all.
@@ -409,7 +410,7 @@ impl Integrator for PathTracer<'_> {
             };
             beta = self.fogged(&mut radiance, beta, travelled + hit.t);
             let p = on_hyperboloid(hit.point);
-            let d = arriving_direction(&ray, hit.t, p);
+            let d = ray.tangent_arriving_at(hit.t, p);
             if !(is_unit(d) && is_unit(hit.normal) && is_unit(hit.shading)) {
                 stats.failures += 1;
                 return self.scene.background;

@@ -22,8 +22,9 @@ use crate::material::{Shading, reflectances};
 use crate::ray_budget::RayBudget;
 use crate::sampling::SampleStream;
 use crate::scene::{Nearest, PreparedLight, PreparedScene, T_MIN};
-use crate::tangent::{arriving_direction, is_unit, on_hyperboloid, renormalize};
+use crate::tangent::{is_unit, renormalize};
 use crate::trace_stats::TraceStats;
+use hgeom::on_hyperboloid;
 
 /// Rays whose weight in the final pixel falls below this are not traced.
 const MIN_WEIGHT: f64 = 1e-3;
@@ -129,7 +130,7 @@ impl<'s> Whitted<'s> {
         // Each bounce starts on the hyperboloid, so the rounding of one
         // segment is not carried into the next (`tangent.rs`).
         let p = on_hyperboloid(hit.point);
-        let d = arriving_direction(ray, hit.t, p);
+        let d = ray.tangent_arriving_at(hit.t, p);
         // The hyperboloid loses unit tangent vectors far from the eye (its
         // f64 range ends near distance 19, docs/geometry.md section 16). Along a ray the error of
         // the invariants grows like `1e-16 cosh^2(s) cosh^2(t)` for an origin

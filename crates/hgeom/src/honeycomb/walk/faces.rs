@@ -15,7 +15,7 @@ use glam::{DMat4, DVec4};
 use crate::lorentz;
 
 use super::super::kernels::reflect;
-use super::super::simplex::{CoxeterSimplex, reflection_matrix};
+use super::super::simplex::reflection_matrix;
 use super::RegularHoneycomb;
 
 /// The most reflections a point is folded by: a point within the horizon
@@ -66,7 +66,7 @@ impl RegularHoneycomb {
             .filter(|(i, _)| self.domain.is_face(*i))
             .map(|(i, n)| (i, lorentz::dot(o, *n).abs()))
             .min_by(|a, b| a.1.total_cmp(&b.1))?;
-        let v = CoxeterSimplex::new(self.symbol).vertices();
+        let v = self.simplex_vertices;
         let n = walls[i];
         let foot = v[3] - lorentz::dot(v[3], n) * n;
         let norm2 = -lorentz::dot(foot, foot);

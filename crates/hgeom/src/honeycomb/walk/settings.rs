@@ -16,7 +16,6 @@ use crate::point::Point;
 use super::super::domain::WalkDomain;
 use super::super::kernels::lorentz_inverse;
 use super::super::schlafli::Schlafli;
-use super::super::simplex::CoxeterSimplex;
 use super::super::style::{CellColouring, HoneycombStyle};
 use super::super::uniform::Rings;
 use super::super::view_horizon::ViewHorizon;
@@ -144,7 +143,7 @@ impl RegularHoneycomb {
     /// Twice the distance from an edge's midpoint to a face centre: the
     /// width of a face across its middle (1.25 for `{4,3,5}`).
     fn feature_size(&self) -> f64 {
-        let v = CoxeterSimplex::new(self.symbol).vertices();
+        let v = self.simplex_vertices;
         2.0 * lorentz::distance(v[1], v[2])
     }
 
@@ -152,7 +151,8 @@ impl RegularHoneycomb {
     /// them), inward unit normals in the honeycomb's frame before placement:
     /// the faces of the base cell when the cells are finite, else (and for
     /// every uniform honeycomb other than the regular one) the four mirrors
-    /// of the characteristic simplex ([`CoxeterSimplex::normals`]).
+    /// of the characteristic simplex
+    /// ([`CoxeterSimplex::normals`](super::super::simplex::CoxeterSimplex::normals)).
     pub fn walls(&self) -> Vec<DVec4> {
         self.domain.walls().to_vec()
     }
@@ -162,7 +162,7 @@ impl RegularHoneycomb {
     /// against.
     #[cfg(test)]
     pub(in crate::honeycomb) fn walked_by_simplex(mut self) -> RegularHoneycomb {
-        let simplex = CoxeterSimplex::new(self.symbol);
+        let simplex = super::super::simplex::CoxeterSimplex::new(self.symbol);
         if let Ok(domain) = WalkDomain::simplex(&simplex, &self.style) {
             self.domain = Arc::new(domain);
         }
