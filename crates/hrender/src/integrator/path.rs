@@ -277,6 +277,8 @@ impl Integrator for PathTracer<'_> {
         let mut last: LastScatter = None;
         let mut smooth = 0;
         for bounce in 0..MAX_PATH_LENGTH {
+            // Each bounce draws from its own Sobol dimensions (sampling.rs).
+            stream.begin_bounce(bounce);
             stats.rays += 1;
             // In a quotient space the ray comes back carried into the
             // domain, `travelled` along it.
@@ -352,6 +354,7 @@ impl Integrator for PathTracer<'_> {
                     break;
                 }
             }
+            stream.seek(3);
             let u = [stream.next_unit(), stream.next_unit(), stream.next_unit()];
             let Some(scatter) = bsdf.sample(p, n, hit.normal, entering, wo, u) else {
                 break;
@@ -379,6 +382,7 @@ impl Integrator for PathTracer<'_> {
             // and MAX_PATH_LENGTH bounds it.
             let q = beta.channels().into_iter().fold(0.0, f64::max);
             if bounce + 1 >= ROULETTE_AFTER && q < 1.0 {
+                stream.seek(6);
                 if !(stream.next_unit() < q) {
                     break;
                 }
