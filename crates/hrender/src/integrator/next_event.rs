@@ -10,7 +10,7 @@ use hgeom::lorentz::{self, Separation};
 use hscene_ir::Rgb;
 
 use super::path::{
-    FaceEmitter, LastScatter, PathTracer, ShadingPoint, Source, SphereEmitter, power_heuristic,
+    FaceEmitter, LastScatter, PathTracer, ShadingPoint, Source, power_heuristic,
 };
 use crate::bsdf::clear_transmission;
 use crate::light_sampling::SphereCone;
@@ -62,10 +62,12 @@ impl PathTracer<'_> {
                 let e = &self.emitters[k];
                 match SphereCone::new(at.p, e.centre, e.radius) {
                     Some(cone) => {
-                        let wi = cone.sample(u1, u2);
+                        // The distance to the sphere comes with the
+                        // direction: the emitter is not intersected again.
+                        let (wi, t) = cone.sample_with_distance(u1, u2);
                         let pdf = cone.pdf() * choice.pmf;
-                        self.light_along(at, wi, pdf, e.radiance, stats, |ray| {
-                            self.emitter_distance(e, ray)
+                        self.light_along(at, wi, pdf, e.radiance, stats, |_| {
+                            (t > 0.0 && t.is_finite()).then_some(t)
                         })
                     }
                     None => Rgb::BLACK,
@@ -227,17 +229,6 @@ impl PathTracer<'_> {
                 }
             }
             None => 1.0,
-        }
-    }
-
-    /// Where `ray` meets emitter `e`'s sphere.
-    fn emitter_distance(&self, e: &SphereEmitter, ray: &Ray) -> Option<f64> {
-        match (&e.surface, e.object) {
-            (Some(s), _) => s.intersect(ray, 0.0, f64::INFINITY).map(|h| h.t),
-            (None, Some(o)) => self.scene.objects[o]
-                .intersect(ray, 0.0, f64::INFINITY)
-                .map(|h| h.t),
-            (None, None) => None,
         }
     }
 }
