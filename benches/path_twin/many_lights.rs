@@ -43,7 +43,11 @@ fn points(count: u32) -> Box3 {
     for k in 0..count {
         let (i, j, l) = (k % 4, (k / 4) % 4, k / 16);
         let at = |g: u32, lo: f64, hi: f64| lo + (hi - lo) * f64::from(g) / 3.0;
-        let tint = [1.0 + 0.3 * f64::from(k % 3), 1.0, 1.0 + 0.3 * f64::from(k % 2)];
+        let tint = [
+            1.0 + 0.3 * f64::from(k % 3),
+            1.0,
+            1.0 + 0.3 * f64::from(k % 2),
+        ];
         b.points.push((
             [at(i, -0.7, 0.7), at(j, 0.0, 0.8), at(l, 1.3, 2.7)],
             [0, 1, 2].map(|c| INTENSITY[c] * tint[c] / n),
@@ -169,10 +173,16 @@ pub fn run(
         ("triangles", triangles),
     ] {
         let one = twins(hscene, dir, &format!("{kind}-1"), &make(1), shape, threads)?;
-        let many = twins(hscene, dir, &format!("{kind}-64"), &make(64), shape, threads)?;
-        let growth = |a: &(Run, f64), b: &(Run, f64)| {
-            per_sample(&b.0, samples) / per_sample(&a.0, samples)
-        };
+        let many = twins(
+            hscene,
+            dir,
+            &format!("{kind}-64"),
+            &make(64),
+            shape,
+            threads,
+        )?;
+        let growth =
+            |a: &(Run, f64), b: &(Run, f64)| per_sample(&b.0, samples) / per_sample(&a.0, samples);
         println!(
             "{kind}: CPU per sample at 64 lights over 1: hscene {:.2}x, mitsuba {:.2}x (independent), {:.2}x (stratified); hscene {:.2} us per sample at 64",
             growth(&one.hscene, &many.hscene),

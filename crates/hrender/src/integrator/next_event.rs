@@ -9,9 +9,7 @@ use hgeom::glam::DVec4;
 use hgeom::lorentz::{self, Separation};
 use hscene_ir::Rgb;
 
-use super::path::{
-    FaceEmitter, LastScatter, PathTracer, ShadingPoint, Source, power_heuristic,
-};
+use super::path::{FaceEmitter, LastScatter, PathTracer, ShadingPoint, Source, power_heuristic};
 use crate::bsdf::clear_transmission;
 use crate::light_sampling::SphereCone;
 use crate::sampling::SampleStream;
@@ -236,12 +234,7 @@ impl PathTracer<'_> {
 /// The triangle of `e` that holds `point` (seen from `from` in direction
 /// `d`), and its solid angle from `from`: of the triangles whose planes
 /// pass nearest the point, the one whose directions hold `d`.
-fn holding_triangle(
-    e: &FaceEmitter,
-    from: DVec4,
-    point: DVec4,
-    d: DVec4,
-) -> Option<(usize, f64)> {
+fn holding_triangle(e: &FaceEmitter, from: DVec4, point: DVec4, d: DVec4) -> Option<(usize, f64)> {
     // `<x, m>` is the sinh of the distance from the plane: rounding makes
     // it of the order of eps times the point's coordinates on its own.
     let tolerance = 1e-9 * point.w.abs().max(1.0);

@@ -26,9 +26,9 @@ use hgeom::{HSphere, Ray};
 use hscene_ir::Rgb;
 
 use super::Integrator;
+use super::next_event::plane_normal;
 use crate::absorption::{absorbed, sheet_filter};
 use crate::bsdf::Bsdf;
-use super::next_event::plane_normal;
 use crate::light_select::{LightSelector, LightUnit};
 use crate::material::reflectances;
 use crate::sampling::SampleStream;
@@ -187,9 +187,8 @@ impl<'s> PathTracer<'s> {
             // anyway (its solid angle is nothing): it keeps a unit that is
             // never drawn, so the indices stay in step.
             for (t, (tri, _)) in e.triangles.iter().enumerate() {
-                let unit = LightUnit::triangle(*tri, e.radiance, e.object).unwrap_or_else(|| {
-                    LightUnit::sphere(tri[0], 0.0, Rgb::BLACK, Some(e.object))
-                });
+                let unit = LightUnit::triangle(*tri, e.radiance, e.object)
+                    .unwrap_or_else(|| LightUnit::sphere(tri[0], 0.0, Rgb::BLACK, Some(e.object)));
                 units.push(unit);
                 sources.push(Source::Triangle(f, t));
             }
