@@ -8,6 +8,7 @@
 //! cargo bench --bench path -- --threads 1
 //! cargo bench --bench path -- --keep /tmp/p   # keep the scenes, twins and images
 //! cargo bench --bench path -- --scenes cornell-flat   # some of the scenes
+//! cargo bench --bench path -- --no-many       # without the many-light twins
 //! ```
 //!
 //! Three scenes, each rendered by `hscene render --integrator path` as a
@@ -31,6 +32,13 @@
 //! - `honeycomb-glass`: the `{4,3,5}` honeycomb walked with glass faces
 //!   (index 1.3, Fresnel) and emissive vertices.
 //!
+//! - many lights (`path_twin/many_lights.rs`): the flat box lit by 1 or 64
+//!   point lights, or by 1 or 64 emissive triangles under the ceiling,
+//!   each against its Mitsuba twin with the independent and the
+//!   stratified sampler; every renderer's error against its own converged
+//!   reference; CPU time for equal error, and the cost of a sample at 1
+//!   and at 64 lights.
+//!
 //! Samples per second are pixel samples (camera paths) per CPU second.
 
 // POV-Ray and the hit errors are the scene benches'; this one measures light.
@@ -43,6 +51,9 @@ use std::process::{Command, ExitCode};
 
 use common::{Measured, arg_value, hscene_binary, measure};
 
+#[path = "path_twin/many_lights.rs"]
+mod many_lights;
+
 /// A Cornell box in Euclidean units: the eye at the origin looking along
 /// +z, the box `x, y ∈ [-1, 1]`, `z ∈ [1, 3]`, open towards the eye.
 struct Box3 {
@@ -51,6 +62,11 @@ struct Box3 {
     /// Quads (four corners in order) with their albedo, for the twin.
     quads: Vec<([[f64; 3]; 4], [f64; 3])>,
     spheres: Vec<Ball>,
+    /// Point lights: position and Euclidean radiant intensity (W/sr).
+    points: Vec<([f64; 3], [f64; 3])>,
+    /// Emissive triangles (three corners) with their radiance, emitting
+    /// towards `(b - a) × (c - a)` in the twin (one-sided in Mitsuba).
+    emitters: Vec<([[f64; 3]; 3], [f64; 3])>,
 }
 
 /// A sphere of the box.
@@ -148,6 +164,8 @@ fn cornell() -> Box3 {
                 emission: LIGHT,
             },
         ],
+        points: Vec::new(),
+        emitters: Vec::new(),
     }
 }
 
@@ -205,6 +223,33 @@ fn cornell_hsc(b: &Box3, scale: f64, size: u32, fov: f64) -> String {
             sphere.radius * scale
         );
     }
+    for (t, e) in &b.emitters {
+        let k = material([0.0; 3], *e, &mut s);
+        let _ = writeln!(
+            objects,
+            "  Polygon ({}, {}, {}), #m{k};",
+            ball(t[0], scale),
+            ball(t[1], scale),
+            ball(t[2], scale)
+        );
+    }
+    if !b.points.is_empty() {
+        // A point light of colour Φ gives `Φ / (4 sinh² r)` at hyperbolic
+        // distance `r = scale r_e`: Euclidean intensity `I` is `Φ = 4 I
+        // scale²` to first order.
+        s.push_str("}\nLights {\n");
+        for (p, i) in &b.points {
+            let k = 4.0 * scale * scale;
+            let _ = writeln!(
+                s,
+                "  {}, ({:e}, {:e}, {:e}), (0, 0, 0);",
+                ball(*p, scale),
+                i[0] * k,
+                i[1] * k,
+                i[2] * k
+            );
+        }
+    }
     s.push_str("}\nObjects {\n");
     s.push_str(&objects);
     s.push_str("}\n");
@@ -212,7 +257,7 @@ fn cornell_hsc(b: &Box3, scale: f64, size: u32, fov: f64) -> String {
 }
 
 /// The box as Mitsuba twin JSON (benches/path_twin/mitsuba_twin.py).
-fn cornell_json(b: &Box3, size: u32, fov: f64, spp: u32, seed: u64) -> String {
+fn cornell_json(b: &Box3, size: u32, fov: f64, spp: u32, seed: u64, sampler: &str) -> String {
     let v = |p: [f64; 3]| format!("[{}, {}, {}]", p[0], p[1], p[2]);
     let spheres: Vec<String> = b
         .spheres
@@ -239,11 +284,32 @@ fn cornell_json(b: &Box3, size: u32, fov: f64, spp: u32, seed: u64) -> String {
             )
         })
         .collect();
+    let points: Vec<String> = b
+        .points
+        .iter()
+        .map(|(p, i)| format!("{{\"position\": {}, \"intensity\": {}}}", v(*p), v(*i)))
+        .collect();
+    let triangles: Vec<String> = b
+        .emitters
+        .iter()
+        .map(|(t, e)| {
+            format!(
+                "{{\"corners\": [{}, {}, {}], \"emission\": {}}}",
+                v(t[0]),
+                v(t[1]),
+                v(t[2]),
+                v(*e)
+            )
+        })
+        .collect();
     format!(
         "{{\"resolution\": [{size}, {size}], \"fov\": {fov}, \"spp\": {spp}, \"seed\": {seed}, \
-         \"max_depth\": -1, \"spheres\": [{}], \"quads\": [{}]}}",
+         \"sampler\": \"{sampler}\", \"max_depth\": -1, \"spheres\": [{}], \"quads\": [{}], \
+         \"points\": [{}], \"triangles\": [{}]}}",
         spheres.join(", "),
-        quads.join(", ")
+        quads.join(", "),
+        points.join(", "),
+        triangles.join(", ")
     )
 }
 
@@ -459,7 +525,11 @@ fn run() -> Result<bool, String> {
             println!("{name:<16} mitsuba  (not installed: pip install mitsuba numpy)");
             continue;
         }
-        let twin = mitsuba_run(&dir, &cornell_json(&b, size, fov, spp, 1), "cornell-twin")?;
+        let twin = mitsuba_run(
+            &dir,
+            &cornell_json(&b, size, fov, spp, 1, "independent"),
+            "cornell-twin",
+        )?;
         let twin_error = relative_error(&twin.image, &reference.image);
         line(name, "mitsuba", spp, pixels, &twin, twin_error);
         // Agreement: the difference from hscene's converged reference is
@@ -499,9 +569,34 @@ fn run() -> Result<bool, String> {
             run.measured.cpu_s / twin.measured.cpu_s,
             run.measured.wall_s / twin.measured.wall_s,
             own_error / twin_error,
-            (run.measured.cpu_s * own_error * own_error)
-                / (twin.measured.cpu_s * twin_error * twin_error)
+            equal_error_cpu(&run, own_error, &twin, twin_error)
+        );
+        let stratified = mitsuba_run(
+            &dir,
+            &cornell_json(&b, size, fov, spp, 1, "stratified"),
+            "cornell-twin-stratified",
+        )?;
+        let strat_error = relative_error(&stratified.image, &reference.image);
+        line(name, "mi-strat", spp, pixels, &stratified, strat_error);
+        println!(
+            "speed: CPU time for equal error {:.2}x Mitsuba's with its stratified sampler",
+            equal_error_cpu(&run, own_error, &stratified, strat_error)
         );
     }
+    if !arg_flag(&args, "--no-many") {
+        agrees &= many_lights::run(&hscene, &dir, size, spp, threads)?;
+    }
     Ok(agrees)
+}
+
+/// hscene's CPU time for the error of `b` over `b`'s: error falls as
+/// `1/sqrt(samples)`, so CPU time x error² is the cost of a given error,
+/// whatever the sample count.
+fn equal_error_cpu(a: &Run, a_error: f64, b: &Run, b_error: f64) -> f64 {
+    (a.measured.cpu_s * a_error * a_error) / (b.measured.cpu_s * b_error * b_error)
+}
+
+/// Whether `--name` is on the command line.
+fn arg_flag(args: &[String], name: &str) -> bool {
+    args.iter().any(|a| a == name)
 }

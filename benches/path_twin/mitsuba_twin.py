@@ -9,7 +9,13 @@ SCENE.json (written by benches/path.rs):
    "max_depth": d (or -1), "threads": t,
    "spheres": [{"center": [x,y,z], "radius": r, "albedo": [r,g,b],
                 "emission": [r,g,b]}],
-   "quads":   [{"corners": [[x,y,z] x4], "albedo": [r,g,b], "emission": [r,g,b]}]}
+   "quads":   [{"corners": [[x,y,z] x4], "albedo": [r,g,b], "emission": [r,g,b]}],
+   "points":  [{"position": [x,y,z], "intensity": [r,g,b]}],
+   "triangles": [{"corners": [[x,y,z] x3], "emission": [r,g,b]}],
+   "sampler": "independent" or "stratified"}
+
+Each emissive triangle is a shape of its own (an OBJ file written beside
+OUT.exr), emitting on the side of (b - a) x (c - a).
 
 The camera sits at the origin looking along +z with +y up, the x axis to
 the right of the image, as hscene's canonical frame; a box pixel filter.
@@ -70,7 +76,11 @@ def main():
                 "rfilter": {"type": "box"},
                 "pixel_format": "rgb",
             },
-            "sampler": {"type": "independent", "sample_count": s["spp"], "seed": s.get("seed", 0)},
+            "sampler": {
+                "type": s.get("sampler", "independent"),
+                "sample_count": s["spp"],
+                "seed": s.get("seed", 0),
+            },
         },
     }
     for k, sp in enumerate(s.get("spheres", [])):
@@ -88,6 +98,25 @@ def main():
         if any(q.get("emission", [0, 0, 0])):
             shape["emitter"] = emitter(q["emission"])
         d[f"quad{k}"] = shape
+    for k, p in enumerate(s.get("points", [])):
+        d[f"point{k}"] = {
+            "type": "point",
+            "position": p["position"],
+            "intensity": {"type": "rgb", "value": p["intensity"]},
+        }
+    for k, t in enumerate(s.get("triangles", [])):
+        path = f"{out}.tri{k}.obj"
+        with open(path, "w") as f:
+            for v in t["corners"]:
+                f.write("v {} {} {}\n".format(*v))
+            f.write("f 1 2 3\n")
+        d[f"triangle{k}"] = {
+            "type": "obj",
+            "filename": path,
+            "face_normals": True,
+            "bsdf": bsdf([0, 0, 0]),
+            "emitter": emitter(t["emission"]),
+        }
     scene = mi.load_dict(d)
     image = mi.render(scene, spp=s["spp"], seed=s.get("seed", 0))
     mi.Bitmap(image).write(out)

@@ -10,6 +10,7 @@
 //! its row in this module's table (docs/ARCHITECTURE.md, "Adding an
 //! integrator").
 
+mod next_event;
 mod path;
 mod whitted;
 

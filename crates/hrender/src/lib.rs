@@ -33,6 +33,7 @@ mod image;
 mod image_texture;
 mod integrator;
 mod light_sampling;
+mod light_select;
 mod material;
 mod nets;
 mod noise;

@@ -4,7 +4,7 @@
 
 use std::f64::consts::TAU;
 
-use hgeom::glam::DVec4;
+use hgeom::glam::{DVec3, DVec4};
 use hgeom::lorentz;
 
 use crate::sampling::SampleStream;
@@ -105,6 +105,12 @@ pub struct SphereCone {
     basis: (DVec4, DVec4),
     /// `1 - cos α`, without cancellation.
     one_minus_cos: f64,
+    /// `cosh` and `sinh` of the centre's distance, `cosh` of the radius.
+    cosh_d: f64,
+    sinh_d: f64,
+    cosh_a: f64,
+    /// `sinh²` of the radius.
+    sinh2_a: f64,
 }
 
 impl SphereCone {
@@ -115,7 +121,8 @@ impl SphereCone {
         if !(d > radius) {
             return None;
         }
-        let sin = radius.sinh() / d.sinh();
+        let (sinh_a, sinh_d) = (radius.sinh(), d.sinh());
+        let sin = sinh_a / sinh_d;
         let cos = (1.0 - sin * sin).max(0.0).sqrt();
         let one_minus_cos = sin * sin / (1.0 + cos);
         if !(one_minus_cos > 0.0) {
@@ -126,18 +133,31 @@ impl SphereCone {
             axis,
             basis: tangent_basis(p, axis),
             one_minus_cos,
+            cosh_d: d.cosh(),
+            sinh_d,
+            cosh_a: radius.cosh(),
+            sinh2_a: sinh_a * sinh_a,
         })
     }
 
     /// A direction drawn uniformly from the cone with the uniforms `u1`,
-    /// `u2`: a unit tangent at the point.
-    pub fn sample(&self, u1: f64, u2: f64) -> DVec4 {
+    /// `u2` (a unit tangent at the point), with the distance at which the direction
+    /// meets the sphere, from the triangle of the point, the centre and
+    /// the hit: the hyperbolic law of cosines `cosh a = cosh d cosh t -
+    /// sinh d sinh t cos θ` has the nearer root `e^t = (A + B) / (C +
+    /// sqrt(sinh² a - sinh² d sin² θ))` with `A = cosh d`, `B = sinh d cos
+    /// θ`, `C = cosh a` (written without cancellation). No intersection is
+    /// computed again.
+    pub fn sample_with_distance(&self, u1: f64, u2: f64) -> (DVec4, f64) {
         let h = u1 * self.one_minus_cos;
-        let (cos, sin) = (1.0 - h, (h * (2.0 - h)).max(0.0).sqrt());
+        let sin2 = (h * (2.0 - h)).max(0.0);
+        let (cos, sin) = (1.0 - h, sin2.sqrt());
         let phi = TAU * u2;
         let (b1, b2) = self.basis;
         let v = self.axis * cos + (b1 * phi.cos() + b2 * phi.sin()) * sin;
-        crate::tangent::renormalize(self.p, v)
+        let disc = (self.sinh2_a - self.sinh_d * self.sinh_d * sin2).max(0.0);
+        let t = ((self.cosh_d + self.sinh_d * cos) / (self.cosh_a + disc.sqrt())).ln();
+        (crate::tangent::renormalize(self.p, v), t)
     }
 
     /// The density of [`SphereCone::sample`] per unit solid angle.
@@ -147,32 +167,36 @@ impl SphereCone {
 }
 
 /// Two unit tangents at `c` that complete the unit tangent `e` to a Lorentz
-/// orthonormal basis of the tangent space. The first is a coordinate axis
-/// projected into the tangent space and away from `e` (the axis that keeps
-/// most of its length, so the projection never degenerates); the second is
-/// orthogonal to `c`, `e` and the first.
+/// orthonormal basis of the tangent space, without a square root or a
+/// branch on the data's size.
+///
+/// The boost that takes the origin to `c = (x, w)` maps the origin's
+/// tangent space (Euclidean `R³`) isometrically onto `c`'s:
+/// `v ↦ (v + (x·v)/(1+w) x, x·v)`, with inverse `(e_s, e_t) ↦ e_s -
+/// e_t/(1+w) x` on tangents. So `e` is pulled back to a Euclidean unit
+/// vector, completed there by the branchless orthonormal basis of Duff et
+/// al. (2017, "Building an orthonormal basis, revisited"; Frisvad's with
+/// the singularity at `z = -1` removed), and the two are pushed forward.
 pub fn tangent_basis(c: DVec4, e: DVec4) -> (DVec4, DVec4) {
-    let project = |a: DVec4| {
-        let v = a + lorentz::dot(c, a) * c;
-        v - lorentz::dot(e, v) * e
+    let x = c.truncate();
+    let k = 1.0 / (1.0 + c.w);
+    let n = e.truncate() - (e.w * k) * x;
+    let sign = 1.0f64.copysign(n.z);
+    let a = -1.0 / (sign + n.z);
+    let b = n.x * n.y * a;
+    let u = DVec3::new(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
+    let v = DVec3::new(b, sign + n.y * n.y * a, -n.y);
+    let push = |t: DVec3| {
+        let xt = x.dot(t);
+        (t + (xt * k) * x).extend(xt)
     };
-    let mut b1 = project(DVec4::X);
-    for a in [DVec4::Y, DVec4::Z] {
-        let v = project(a);
-        if lorentz::dot(v, v) > lorentz::dot(b1, b1) {
-            b1 = v;
-        }
-    }
-    let b1 = b1 / lorentz::norm(b1);
-    let b2 = lorentz::orthogonal_complement(c, e, b1);
-    (b1, b2 / lorentz::norm(b2))
+    (push(u), push(v))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use hgeom::Point;
-    use hgeom::glam::DVec3;
 
     /// The tangent basis is Lorentz orthonormal and tangent, also for a
     /// centre away from the origin and every direction.
@@ -212,9 +236,11 @@ mod tests {
         let cone = SphereCone::new(p, centre.to_hyperboloid(), a).unwrap();
         let mut stream = SampleStream::new(11);
         for _ in 0..1000 {
-            let dir = cone.sample(stream.next_unit(), stream.next_unit());
+            let (dir, t) = cone.sample_with_distance(stream.next_unit(), stream.next_unit());
             let ray = hgeom::Ray { origin: p, dir };
-            assert!(sphere.intersect(&ray, 0.0, f64::INFINITY).is_some());
+            let hit = sphere.intersect(&ray, 0.0, f64::INFINITY).expect("a hit");
+            // The law of cosines gives the intersection's own distance.
+            assert!((hit.t - t).abs() < 1e-12, "{} vs {t}", hit.t);
         }
         // Uniform directions on the sphere of directions at the origin.
         let n = 400_000;

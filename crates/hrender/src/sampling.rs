@@ -1,11 +1,20 @@
-//! Sub-pixel sample positions for anti-aliasing.
+//! Sub-pixel sample positions and the numbers that shading draws.
 //!
-//! Positions come from a counter-based hash of `(seed, x, y, sample)`, not
-//! from a random-number stream, so a pixel's samples do not depend on which
-//! thread renders it or in which order: the same seed gives the same image.
-//! The same hash seeds a [`SampleStream`] per pixel sample, which shading
-//! draws from (the points sampled on area lights), so those are just as
-//! independent of the thread count.
+//! Every number of a pixel sample is a coordinate of an Owen-scrambled
+//! Sobol point (Burley 2020, the `sobol_burley` crate): sample `k` of pixel
+//! `(x, y)` is point `k` of a sequence scrambled by a hash of `(seed, x,
+//! y)`. Dimensions 0-1 place the sample in the pixel, 2-3 on the lens, and
+//! each bounce of a path owns the next [`BOUNCE_DIMENSIONS`] (light choice,
+//! point on the light, the lobes' three, roulette): *padded* per bounce,
+//! so a vertex that draws fewer numbers does not shift the next one's.
+//! Each dimension's first `2^m` samples are stratified in `2^m` intervals
+//! (and pairs of dimensions in 2-D), which lowers the noise of every
+//! smooth integrand against independent numbers. Past what the layout
+//! covers (Whitted's area-light samples, bounces beyond the table, more
+//! than 2^16 samples), a counter-based hash takes over.
+//!
+//! Nothing depends on which thread renders a pixel or in which order: the
+//! same seed gives the same image.
 
 /// Where the samples of a pixel fall.
 #[derive(Clone, Copy, Debug)]
@@ -49,20 +58,26 @@ impl Sampler {
     }
 
     /// The offset of sample `k` inside pixel `(x, y)`, both coordinates in
-    /// `[0, 1)` from the pixel's top-left corner.
+    /// `[0, 1)` from the pixel's top-left corner: the Sobol point's first
+    /// two dimensions, for a sample count that is a power of two (every
+    /// prefix of `2^m` samples covers the pixel evenly); a perfect square
+    /// that is not is stratified on its `m x m` grid instead.
     #[inline]
     pub fn offset(&self, x: u32, y: u32, k: u32) -> (f64, f64) {
         if self.samples == 1 {
             return (0.5, 0.5);
         }
-        let (u, v) = uniform_pair(self.seed, x, y, k);
         match self.strata {
-            Some(m) => {
+            Some(m) if !self.samples.is_power_of_two() => {
+                let (u, v) = uniform_pair(self.seed, x, y, k);
                 let (cx, cy) = (k % m, k / m);
                 let inv = 1.0 / f64::from(m);
                 ((f64::from(cx) + u) * inv, (f64::from(cy) + v) * inv)
             }
-            None => (u, v),
+            _ => {
+                let point = SobolPoint::new(self.seed, x, y, k);
+                (point.get(0), point.get(1))
+            }
         }
     }
 }
@@ -74,7 +89,14 @@ impl Sampler {
     /// nothing else.
     #[inline]
     pub fn stream(&self, x: u32, y: u32, k: u32) -> SampleStream {
-        SampleStream(mix(hash(self.seed, x, y, k) ^ STREAM_SALT))
+        SampleStream {
+            state: mix(hash(self.seed, x, y, k) ^ STREAM_SALT),
+            sobol: Some(Cursor {
+                point: SobolPoint::new(self.seed, x, y, k),
+                next: LENS_DIMENSION,
+                end: LENS_DIMENSION + 2,
+            }),
+        }
     }
 
     /// The stream for a net-4 node `(a, b)` of the equidistant lattice:
@@ -84,8 +106,60 @@ impl Sampler {
     pub fn node_stream(&self, a: i64, b: i64) -> SampleStream {
         // Bit patterns of the indices; the hash does not care about signs.
         let h = mix(mix(mix(self.seed ^ NODE_SALT) ^ a as u64) ^ b as u64);
-        SampleStream(mix(h ^ STREAM_SALT))
+        SampleStream::new(mix(h ^ STREAM_SALT))
     }
+}
+
+/// The first of the lens's two dimensions (the pixel has 0 and 1).
+const LENS_DIMENSION: u32 = 2;
+
+/// The dimensions each bounce of a path owns: the light unit, two for the
+/// point on it, three for the lobes, one for roulette, one spare.
+pub const BOUNCE_DIMENSIONS: u32 = 8;
+
+/// One point of the scrambled Sobol sequence of a pixel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct SobolPoint {
+    /// Its index in the sequence (below 2^16, the crate's limit).
+    index: u32,
+    /// The pixel's scramble (with the block of 2^16 samples mixed in).
+    seed: u64,
+}
+
+impl SobolPoint {
+    fn new(seed: u64, x: u32, y: u32, k: u32) -> SobolPoint {
+        // The pixel's sequence does not depend on k, except past 2^16
+        // samples, where each block of 2^16 gets a sequence of its own.
+        SobolPoint {
+            index: k & 0xFFFF,
+            seed: mix(hash(seed, x, y, k >> 16) ^ SOBOL_SALT),
+        }
+    }
+
+    /// Its coordinate in dimension `d`: the crate has 256 dimensions, and
+    /// each further 256 take another scramble (independent of the first).
+    #[inline]
+    fn get(&self, d: u32) -> f64 {
+        let (block, dim) = (d / 256, d % 256);
+        let seed = if block == 0 {
+            self.seed
+        } else {
+            mix(self.seed ^ u64::from(block))
+        };
+        f64::from(sobol_burley::sample(self.index, dim, seed as u32))
+    }
+}
+
+/// Separates the Sobol scrambles from the other hashes.
+const SOBOL_SALT: u64 = 0x50B0_1B0B_5EED_F00D;
+
+/// Where a stream stands in its sample's Sobol point: the next dimension
+/// to hand out and the end of the run it may use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Cursor {
+    point: SobolPoint,
+    next: u32,
+    end: u32,
 }
 
 /// Separates the shading streams from the sample positions.
@@ -93,26 +167,63 @@ const STREAM_SALT: u64 = 0x5EED_0FA5_EA11_C7D3;
 /// Separates net-4 node keys from pixel keys.
 const NODE_SALT: u64 = 0x0DE5_0F4E_7400_0004;
 
-/// A deterministic stream of uniforms for one pixel sample (SplitMix64 from
-/// a hashed seed). Tracing is deterministic, so the `n`-th draw of a
+/// A deterministic stream of uniforms for one pixel sample: the sample's
+/// Sobol coordinates while the current run of dimensions lasts (the lens's,
+/// or a bounce's after [`SampleStream::begin_bounce`]), else SplitMix64
+/// from a hashed seed. Tracing is deterministic, so the `n`-th draw of a
 /// sample's path is always the same number, on any number of threads.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct SampleStream(u64);
+pub struct SampleStream {
+    state: u64,
+    sobol: Option<Cursor>,
+}
 
 impl SampleStream {
-    /// A stream from a seed (used where no pixel is known; the renderer
-    /// takes its streams from [`Sampler::stream`]).
+    /// A stream of independent uniforms from a seed (used where no pixel
+    /// is known; the renderer takes its streams from [`Sampler::stream`]).
     pub const fn new(seed: u64) -> SampleStream {
-        SampleStream(seed)
+        SampleStream {
+            state: seed,
+            sobol: None,
+        }
     }
 
-    /// The next uniform in `[0, 1)` (53 bits).
+    /// The next uniform in `[0, 1)`: a Sobol coordinate (24 bits) inside
+    /// the current run, else 53 random bits.
     #[inline]
     pub fn next_unit(&mut self) -> f64 {
+        if let Some(c) = &mut self.sobol
+            && c.next < c.end
+        {
+            let d = c.next;
+            c.next += 1;
+            return c.point.get(d);
+        }
         // A Weyl sequence through the finaliser (SplitMix64 with the
         // increment applied once more inside `mix`).
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        (mix(self.0) >> 11) as f64 * (1.0 / 9_007_199_254_740_992.0)
+        self.state = self.state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        (mix(self.state) >> 11) as f64 * (1.0 / 9_007_199_254_740_992.0)
+    }
+
+    /// Start bounce `bounce` of a path: the next draws are its
+    /// [`BOUNCE_DIMENSIONS`] Sobol dimensions (a stream without a Sobol
+    /// point stays random).
+    #[inline]
+    pub fn begin_bounce(&mut self, bounce: u32) {
+        if let Some(c) = &mut self.sobol {
+            c.next = LENS_DIMENSION + 2 + bounce.saturating_mul(BOUNCE_DIMENSIONS);
+            c.end = c.next.saturating_add(BOUNCE_DIMENSIONS);
+        }
+    }
+
+    /// Skip to dimension `offset` of the current bounce, so each decision
+    /// keeps its own dimensions whether or not the ones before were drawn.
+    #[inline]
+    pub fn seek(&mut self, offset: u32) {
+        if let Some(c) = &mut self.sobol {
+            let start = c.end.saturating_sub(BOUNCE_DIMENSIONS);
+            c.next = c.next.max(start.saturating_add(offset)).min(c.end);
+        }
     }
 }
 
@@ -160,6 +271,46 @@ mod tests {
             cells[(v * 4.0) as usize * 4 + (u * 4.0) as usize] = true;
         }
         assert!(cells.iter().all(|c| *c), "one sample in every cell");
+    }
+
+    /// Each bounce dimension of a pixel's first 16 streams is stratified:
+    /// one number in each sixteenth of [0, 1); the bounces are padded, so
+    /// a skipped draw does not shift the next decision's dimension.
+    #[test]
+    fn bounce_dimensions_are_stratified_and_padded() {
+        let s = Sampler::new(16, 5);
+        for bounce in [0, 1, 7] {
+            for dim in 0..BOUNCE_DIMENSIONS {
+                let mut cells = [false; 16];
+                for k in 0..16 {
+                    let mut st = s.stream(3, 4, k);
+                    st.begin_bounce(bounce);
+                    st.seek(dim);
+                    let u = st.next_unit();
+                    assert!((0.0..1.0).contains(&u));
+                    cells[(u * 16.0) as usize] = true;
+                }
+                assert!(cells.iter().all(|c| *c), "bounce {bounce} dim {dim}");
+            }
+        }
+        let mut a = s.stream(3, 4, 0);
+        a.begin_bounce(2);
+        a.seek(3);
+        let mut b = s.stream(3, 4, 0);
+        b.begin_bounce(2);
+        for _ in 0..3 {
+            b.next_unit();
+        }
+        assert_eq!(a.next_unit(), b.next_unit());
+        // Past its run a stream is random, not a repeat of the next bounce.
+        let mut c = s.stream(3, 4, 0);
+        c.begin_bounce(0);
+        for _ in 0..BOUNCE_DIMENSIONS {
+            c.next_unit();
+        }
+        let mut d = s.stream(3, 4, 0);
+        d.begin_bounce(1);
+        assert_ne!(c.next_unit(), d.next_unit());
     }
 
     #[test]

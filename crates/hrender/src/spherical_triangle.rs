@@ -11,8 +11,6 @@
 //! drawn uniformly from it meets the triangle: an emissive polygon is
 //! sampled exactly by solid angle, density `1 / Ω`.
 
-use std::f64::consts::PI;
-
 use hgeom::glam::{DVec3, DVec4};
 use hgeom::lorentz;
 
@@ -54,12 +52,17 @@ impl SphericalTriangle {
             .normalize()
         };
         let (a, b, c) = (coords(towards[0]), coords(towards[1]), coords(towards[2]));
-        let angle_at = |x: DVec3, y: DVec3, z: DVec3| {
-            let (u, w) = (y - x * x.dot(y), z - x * x.dot(z));
-            u.angle_between(w)
-        };
-        let (alpha, beta, gamma) = (angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b));
-        let area = alpha + beta + gamma - PI;
+        // The solid angle by Van Oosterom and Strackee (1983): `tan(Ω/2) =
+        // |a·(b×c)| / (1 + a·b + b·c + c·a)`, one atan2 (exact, and stable
+        // for small triangles where `α + β + γ - π` cancels); Arvo's
+        // sampling needs the angle at `a` as well, itself one atan2 of the
+        // sine and cosine of the angle between the two edge planes.
+        // With `u = a×b`, `w = a×c`: `|u×w| = |a·(b×c)|` and `u·w = b·c -
+        // (a·b)(a·c)` (Lagrange's identity).
+        let triple = a.dot(b.cross(c)).abs();
+        let (ab, bc, ca) = (a.dot(b), b.dot(c), c.dot(a));
+        let area = 2.0 * triple.atan2(1.0 + ab + bc + ca);
+        let alpha = triple.atan2(bc - ab * ca);
         if !(area > 1e-12 && area.is_finite()) {
             return None;
         }
@@ -122,6 +125,32 @@ mod tests {
     use super::*;
     use crate::sampling::SampleStream;
     use hgeom::{ConvexPolygon, Point, Ray, Vertex};
+    use std::f64::consts::PI;
+
+    /// One atan2 (Van Oosterom-Strackee) gives the angle excess `α + β +
+    /// γ - π` of the three `acos` it replaces, and the angle at `a`,
+    /// against the same quantities from the angles in f64 (a triangle
+    /// large enough that the excess does not cancel).
+    #[test]
+    fn one_atan2_is_the_angle_excess() {
+        let v = [at(0.3, 0.1, 0.5), at(-0.2, 0.25, 0.6), at(0.05, -0.3, 0.55)]
+            .map(|q| q.to_hyperboloid());
+        for p in [at(0.02, -0.05, 0.0), at(0.5, 0.4, -0.3), at(0.0, 0.0, 0.9)] {
+            let st = SphericalTriangle::new(p.to_hyperboloid(), v).unwrap();
+            let angle_at = |x: DVec3, y: DVec3, z: DVec3| {
+                let (u, w) = (y - x * x.dot(y), z - x * x.dot(z));
+                u.angle_between(w)
+            };
+            let (alpha, beta, gamma) = (
+                angle_at(st.a, st.b, st.c),
+                angle_at(st.b, st.c, st.a),
+                angle_at(st.c, st.a, st.b),
+            );
+            let excess = alpha + beta + gamma - PI;
+            assert!((st.solid_angle() - excess).abs() < 1e-12 * excess.max(1e-3));
+            assert!((st.alpha - alpha).abs() < 1e-12);
+        }
+    }
 
     fn at(x: f64, y: f64, z: f64) -> Point {
         Point::from_coords(DVec3::new(x, y, z)).unwrap()

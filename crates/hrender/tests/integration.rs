@@ -16,6 +16,7 @@ mod horizon_fill;
 mod horizon_sky;
 mod image_textures;
 mod light_strength;
+mod many_lights;
 mod mesh_smooth;
 mod optics;
 mod path_tracer;

@@ -21,18 +21,18 @@
 //! throughput channel, when below 1), at most [`MAX_PATH_LENGTH`] bounces.
 
 use hgeom::glam::DVec4;
-use hgeom::lorentz::{self, Separation};
+use hgeom::lorentz;
 use hgeom::{HSphere, Ray};
 use hscene_ir::Rgb;
 
 use super::Integrator;
+use super::next_event::plane_normal;
 use crate::absorption::{absorbed, sheet_filter};
-use crate::bsdf::{Bsdf, clear_transmission};
-use crate::light_sampling::SphereCone;
+use crate::bsdf::Bsdf;
+use crate::light_select::{LightSelector, LightUnit};
 use crate::material::reflectances;
 use crate::sampling::SampleStream;
 use crate::scene::{Nearest, PreparedScene, T_MIN};
-use crate::spherical_triangle::SphericalTriangle;
 use crate::tangent::is_unit;
 use crate::trace_stats::TraceStats;
 use hgeom::on_hyperboloid;
@@ -45,45 +45,88 @@ pub const MAX_PATH_LENGTH: u32 = 64;
 const ROULETTE_AFTER: u32 = 3;
 
 /// A spherical emitter: an area light, or an emissive h-sphere object.
-struct SphereEmitter {
-    centre: DVec4,
-    radius: f64,
+pub(super) struct SphereEmitter {
+    pub(super) centre: DVec4,
+    pub(super) radius: f64,
     /// The radiance it emits, from both sides.
-    radiance: Rgb,
+    pub(super) radiance: Rgb,
     /// The area light's own surface (an object's is in the scene).
-    surface: Option<HSphere>,
+    pub(super) surface: Option<HSphere>,
     /// The object it is, for an emissive h-sphere object.
-    object: Option<usize>,
+    pub(super) object: Option<usize>,
+    /// Its light unit in the selector.
+    pub(super) unit: usize,
 }
 
 /// An emissive object with flat faces (a polygon, a polyhedron).
-struct FaceEmitter {
-    object: usize,
+pub(super) struct FaceEmitter {
+    pub(super) object: usize,
     /// The radiance it emits, from both sides.
-    radiance: Rgb,
-    /// Its faces as geodesic triangles.
-    triangles: Vec<[DVec4; 3]>,
+    pub(super) radiance: Rgb,
+    /// Its faces as geodesic triangles, each with the unit normal of its
+    /// h-plane (`<x, m> = 0` on it).
+    pub(super) triangles: Vec<([DVec4; 3], DVec4)>,
+    /// The light unit of its first triangle; the others follow in order.
+    pub(super) first_unit: usize,
+}
+
+/// What a light unit of the selector is, in the integrator's own lists.
+#[derive(Clone, Copy)]
+pub(super) enum Source {
+    /// `scene.lights[k]`, a point light.
+    Point(usize),
+    /// `emitters[k]`.
+    Sphere(usize),
+    /// Triangle `t` of `faces[f]`.
+    Triangle(usize, usize),
 }
 
 /// The path integrator over a prepared scene.
 pub struct PathTracer<'s> {
-    scene: &'s PreparedScene,
-    emitters: Vec<SphereEmitter>,
-    faces: Vec<FaceEmitter>,
+    pub(super) scene: &'s PreparedScene,
+    pub(super) emitters: Vec<SphereEmitter>,
+    pub(super) faces: Vec<FaceEmitter>,
+    /// Every light next-event estimation may draw, one per vertex.
+    pub(super) selector: LightSelector,
+    /// What each of the selector's units is.
+    pub(super) sources: Vec<Source>,
     /// Paths end at this many diffuse or glossy vertices (after light
     /// sampling there).
     smooth_vertices: u32,
 }
 
 /// What the last scattering vertex tells the next emitter hit: where it
-/// was, the object it was on, and the density its smooth lobes drew the
-/// direction with; `None` at the eye or after a mirror or a refraction,
-/// which light sampling cannot reproduce.
-type LastScatter = Option<(DVec4, usize, f64)>;
+/// was, its shading normal, the object it was on, the density its smooth
+/// lobes drew the direction with, and the sum of the lights' importances
+/// there (light selection's normaliser); `None` at the eye or after a
+/// mirror or a refraction, which light sampling cannot reproduce.
+#[derive(Clone, Copy)]
+pub(super) struct Scattered {
+    pub(super) from: DVec4,
+    pub(super) n: DVec4,
+    pub(super) on: usize,
+    pub(super) pdf_bsdf: f64,
+    pub(super) total: f64,
+}
+
+pub(super) type LastScatter = Option<Scattered>;
 
 impl<'s> PathTracer<'s> {
     /// The integrator over `scene`: its spherical emitters gathered once.
     pub fn new(scene: &'s PreparedScene) -> PathTracer<'s> {
+        let mut units = Vec::new();
+        let mut sources = Vec::new();
+        for (k, light) in scene.lights.iter().enumerate() {
+            if light.radius == 0.0 {
+                units.push(LightUnit::point(
+                    light.position,
+                    light.diffuse,
+                    light.near_sinh2,
+                    light.cosh_reach,
+                ));
+                sources.push(Source::Point(k));
+            }
+        }
         let mut emitters = Vec::new();
         for light in scene.lights.iter().filter(|l| l.radius > 0.0) {
             let surface = light.sphere();
@@ -94,6 +137,7 @@ impl<'s> PathTracer<'s> {
                     radiance: light.radiance(),
                     surface,
                     object: None,
+                    unit: 0,
                 });
             }
         }
@@ -110,10 +154,16 @@ impl<'s> PathTracer<'s> {
         for (index, object) in sampled.iter().enumerate() {
             let m = &scene.materials[object.material];
             if !object.faces.is_empty() && !m.emission.is_black() {
+                let triangles = object
+                    .faces
+                    .iter()
+                    .filter_map(|t| Some((*t, plane_normal(*t)?)))
+                    .collect();
                 faces.push(FaceEmitter {
                     object: index,
                     radiance: m.emission,
-                    triangles: object.faces.clone(),
+                    triangles,
+                    first_unit: 0,
                 });
             }
             if let (Some((centre, radius)), false) = (object.ball, m.emission.is_black()) {
@@ -123,13 +173,33 @@ impl<'s> PathTracer<'s> {
                     radiance: m.emission,
                     surface: None,
                     object: Some(index),
+                    unit: 0,
                 });
+            }
+        }
+        for (k, e) in emitters.iter_mut().enumerate() {
+            e.unit = units.len();
+            units.push(LightUnit::sphere(e.centre, e.radius, e.radiance, e.object));
+            sources.push(Source::Sphere(k));
+        }
+        for (f, e) in faces.iter_mut().enumerate() {
+            e.first_unit = units.len();
+            // A triangle too degenerate for a unit could not be sampled
+            // anyway (its solid angle is nothing): it keeps a unit that is
+            // never drawn, so the indices stay in step.
+            for (t, (tri, _)) in e.triangles.iter().enumerate() {
+                let unit = LightUnit::triangle(*tri, e.radiance, e.object)
+                    .unwrap_or_else(|| LightUnit::sphere(tri[0], 0.0, Rgb::BLACK, Some(e.object)));
+                units.push(unit);
+                sources.push(Source::Triangle(f, t));
             }
         }
         PathTracer {
             scene,
             emitters,
             faces,
+            selector: LightSelector::new(units),
+            sources,
             smooth_vertices: MAX_PATH_LENGTH,
         }
     }
@@ -164,182 +234,6 @@ impl<'s> PathTracer<'s> {
         best
     }
 
-    /// The power-heuristic weight of emission from emitter `k` reached by
-    /// a direction the last vertex's lobes drew.
-    fn emission_weight(&self, k: usize, last: LastScatter) -> f64 {
-        let Some((from, on, pdf_bsdf)) = last else {
-            return 1.0;
-        };
-        let e = &self.emitters[k];
-        // Light sampling skips the emitter a point lies on (`direct`).
-        if e.object == Some(on) {
-            return 1.0;
-        }
-        match SphereCone::new(from, e.centre, e.radius) {
-            Some(cone) => power_heuristic(pdf_bsdf, cone.pdf()),
-            None => 1.0,
-        }
-    }
-
-    /// Light arriving at the shading point straight from the point lights,
-    /// the spherical emitters and the emissive faces, reflected towards the
-    /// viewer: next-event estimation.
-    fn direct(
-        &self,
-        at: &ShadingPoint<'_>,
-        own: usize,
-        stream: &mut SampleStream,
-        stats: &mut TraceStats,
-    ) -> Rgb {
-        let ShadingPoint { p, n, wo, bsdf } = *at;
-        let mut sum = Rgb::BLACK;
-        for light in self.scene.lights.iter().filter(|l| l.radius == 0.0) {
-            if light.out_of_reach(p) {
-                continue;
-            }
-            let Some(wi) = lorentz::unit_tangent_towards(p, light.position) else {
-                continue;
-            };
-            let cos = lorentz::dot(n, wi);
-            if !(cos > 0.0) {
-                continue;
-            }
-            let apart = Separation::between(p, light.position);
-            // An image beyond its reach (quotient spaces) lights nothing.
-            let weight = light.fade(apart.distance());
-            if weight == 0.0 {
-                continue;
-            }
-            stats.rays += 1;
-            let shadow = self.scene.transmittance(
-                &Ray { origin: p, dir: wi },
-                T_MIN,
-                apart.distance(),
-                apart.tanh(),
-                clear_transmission,
-            );
-            if shadow == 0.0 {
-                continue;
-            }
-            // A point light of colour Φ has radiant intensity Φ/4 (power
-            // πΦ): a Lambertian surface of albedo ρ facing it reflects
-            // exactly Whitted's `ρ Φ / (4π sinh² r)`; clear tinted glass on
-            // the way filters it.
-            let intensity = light.diffuse.tint(self.filtered(p, wi, apart.distance())) * 0.25;
-            sum += bsdf.eval(n, wo, wi).tint(intensity)
-                * (cos * shadow * weight / light.falloff_sinh2(apart.sinh_squared()));
-        }
-        for e in &self.emitters {
-            let (u1, u2) = (stream.next_unit(), stream.next_unit());
-            if e.object == Some(own) {
-                continue;
-            }
-            let Some(cone) = SphereCone::new(p, e.centre, e.radius) else {
-                continue;
-            };
-            let wi = cone.sample(u1, u2);
-            sum += self.light_along(at, wi, cone.pdf(), e.radiance, stats, |ray| {
-                self.emitter_distance(e, ray)
-            });
-        }
-        // Emissive faces: one direction per triangle, drawn uniformly
-        // from the spherical triangle of directions it fills.
-        for e in self.faces.iter().filter(|e| e.object != own) {
-            for tri in &e.triangles {
-                let (u1, u2) = (stream.next_unit(), stream.next_unit());
-                let Some(solid) = SphericalTriangle::new(p, *tri) else {
-                    continue;
-                };
-                let wi = solid.sample(u1, u2);
-                let pdf = 1.0 / solid.solid_angle();
-                sum += self.light_along(at, wi, pdf, e.radiance, stats, |ray| {
-                    self.scene.objects[e.object]
-                        .intersect(ray, 0.0, f64::INFINITY)
-                        .map(|h| h.t)
-                });
-            }
-        }
-        sum
-    }
-
-    /// What an emitter of `radiance` sends to `at` along the unit tangent
-    /// `wi`, drawn by light sampling with density `pdf`, reflected towards
-    /// the viewer: nothing below the surface; `surface` finds where the ray
-    /// meets the emitter, and the shadow ray stops short of it; weighted
-    /// against the lobes by the power heuristic.
-    fn light_along(
-        &self,
-        at: &ShadingPoint<'_>,
-        wi: DVec4,
-        pdf: f64,
-        radiance: Rgb,
-        stats: &mut TraceStats,
-        surface: impl FnOnce(&Ray) -> Option<f64>,
-    ) -> Rgb {
-        let cos = lorentz::dot(at.n, wi);
-        if !(cos > 0.0) {
-            return Rgb::BLACK;
-        }
-        let ray = Ray {
-            origin: at.p,
-            dir: wi,
-        };
-        let Some(t) = surface(&ray) else {
-            return Rgb::BLACK;
-        };
-        let t_max = t - T_MIN;
-        stats.rays += 1;
-        let shadow = if t_max > T_MIN {
-            self.scene
-                .transmittance(&ray, T_MIN, t_max, t_max.tanh(), clear_transmission)
-        } else {
-            1.0
-        };
-        if shadow == 0.0 {
-            return Rgb::BLACK;
-        }
-        let radiance = radiance.tint(self.filtered(at.p, wi, t_max));
-        let w = power_heuristic(pdf, at.bsdf.pdf(at.n, at.wo, wi));
-        at.bsdf.eval(at.n, at.wo, wi).tint(radiance) * (cos * shadow * w / pdf)
-    }
-
-    /// The power-heuristic weight of emission from the faces of object
-    /// `index` at `point`, reached by a direction the last vertex's lobes
-    /// drew: light sampling would have drawn it from the one triangle whose
-    /// solid angle holds it.
-    fn face_weight(&self, index: usize, point: DVec4, last: LastScatter) -> f64 {
-        let Some((from, on, pdf_bsdf)) = last else {
-            return 1.0;
-        };
-        let Some(e) = self.faces.iter().find(|e| e.object == index) else {
-            return 1.0;
-        };
-        if on == index {
-            return 1.0;
-        }
-        let Some(d) = lorentz::unit_tangent_towards(from, point) else {
-            return 1.0;
-        };
-        e.triangles
-            .iter()
-            .filter_map(|tri| SphericalTriangle::new(from, *tri))
-            .find(|solid| solid.contains(d))
-            .map_or(1.0, |solid| {
-                power_heuristic(pdf_bsdf, 1.0 / solid.solid_angle())
-            })
-    }
-
-    /// Where `ray` meets emitter `e`'s sphere.
-    fn emitter_distance(&self, e: &SphereEmitter, ray: &Ray) -> Option<f64> {
-        match (&e.surface, e.object) {
-            (Some(s), _) => s.intersect(ray, 0.0, f64::INFINITY).map(|h| h.t),
-            (None, Some(o)) => self.scene.objects[o]
-                .intersect(ray, 0.0, f64::INFINITY)
-                .map(|h| h.t),
-            (None, None) => None,
-        }
-    }
-
     /// Radiance brought by a ray that leaves the scene: the fog colour in
     /// fog, else the sky where the ray ends, else the background.
     fn leaving(&self, ray: &Ray) -> Rgb {
@@ -360,17 +254,17 @@ impl<'s> PathTracer<'s> {
 
 /// A shading point as light sampling sees it.
 #[derive(Clone, Copy)]
-struct ShadingPoint<'b> {
-    p: DVec4,
+pub(super) struct ShadingPoint<'b> {
+    pub(super) p: DVec4,
     /// The shading normal on the viewer's side.
-    n: DVec4,
+    pub(super) n: DVec4,
     /// Towards the viewer.
-    wo: DVec4,
-    bsdf: &'b Bsdf,
+    pub(super) wo: DVec4,
+    pub(super) bsdf: &'b Bsdf,
 }
 
 /// Veach's power heuristic with one sample of each strategy.
-fn power_heuristic(f: f64, g: f64) -> f64 {
+pub(super) fn power_heuristic(f: f64, g: f64) -> f64 {
     let (f2, g2) = (f * f, g * g);
     if f2 + g2 > 0.0 { f2 / (f2 + g2) } else { 0.0 }
 }
@@ -383,6 +277,8 @@ impl Integrator for PathTracer<'_> {
         let mut last: LastScatter = None;
         let mut smooth = 0;
         for bounce in 0..MAX_PATH_LENGTH {
+            // Each bounce draws from its own Sobol dimensions (sampling.rs).
+            stream.begin_bounce(bounce);
             stats.rays += 1;
             // In a quotient space the ray comes back carried into the
             // domain, `travelled` along it.
@@ -442,6 +338,7 @@ impl Integrator for PathTracer<'_> {
             let wo = -d;
             let (_, diffuse) = reflectances(object, m, &hit);
             let bsdf = Bsdf::new(m, diffuse);
+            let mut total = 0.0;
             if bsdf.is_smooth() {
                 let at = ShadingPoint {
                     p,
@@ -449,12 +346,15 @@ impl Integrator for PathTracer<'_> {
                     wo,
                     bsdf: &bsdf,
                 };
-                radiance += beta.tint(self.direct(&at, index, stream, stats));
+                let (light, sum) = self.direct(&at, index, stream, stats);
+                radiance += beta.tint(light);
+                total = sum;
                 smooth += 1;
                 if smooth >= self.smooth_vertices {
                     break;
                 }
             }
+            stream.seek(3);
             let u = [stream.next_unit(), stream.next_unit(), stream.next_unit()];
             let Some(scatter) = bsdf.sample(p, n, hit.normal, entering, wo, u) else {
                 break;
@@ -465,7 +365,13 @@ impl Integrator for PathTracer<'_> {
                 beta = beta.tint(sheet_filter(m, lorentz::dot(d, hit.normal)));
             }
             if !scatter.passed_through {
-                last = scatter.pdf.map(|pdf| (p, index, pdf));
+                last = scatter.pdf.map(|pdf_bsdf| Scattered {
+                    from: p,
+                    n,
+                    on: index,
+                    pdf_bsdf,
+                    total,
+                });
             }
             ray = Ray {
                 origin: p,
@@ -476,6 +382,7 @@ impl Integrator for PathTracer<'_> {
             // and MAX_PATH_LENGTH bounds it.
             let q = beta.channels().into_iter().fold(0.0, f64::max);
             if bounce + 1 >= ROULETTE_AFTER && q < 1.0 {
+                stream.seek(6);
                 if !(stream.next_unit() < q) {
                     break;
                 }
@@ -494,7 +401,7 @@ impl Integrator for PathTracer<'_> {
 impl PathTracer<'_> {
     /// What absorbing objects let through of the shadow segment from `p`
     /// along `dir` to distance `t_max` (white in a scene without any).
-    fn filtered(&self, p: DVec4, dir: DVec4, t_max: f64) -> Rgb {
+    pub(super) fn filtered(&self, p: DVec4, dir: DVec4, t_max: f64) -> Rgb {
         if self.scene.absorbing().is_empty() {
             return Rgb::new(1.0, 1.0, 1.0);
         }
