@@ -69,7 +69,7 @@ fn the_setting_is_checked() {
             .assert()
             .success();
         let ir = String::from_utf8_lossy(&ok.get_output().stdout).into_owned();
-        assert!(ir.contains(&format!("\"denoise\": {value}")), "{ir}");
+        assert!(ir.contains(&format!("\"denoise\":{value}")), "{ir}");
     }
     for (value, says) in [("yes", "`yes`"), ("1", "a number")] {
         let s = scene(dir.path(), &format!("denoise = {value};"));

@@ -639,7 +639,7 @@ fn render_picture(
     }
     let job = RenderJob {
         net,
-        pixel_net: pixel_net.clone(),
+        pixel_net: *pixel_net,
         window,
         width,
         height,
