@@ -51,7 +51,10 @@ fn a_missing_library_refuses_the_render_with_the_install_command() {
         let stderr = String::from_utf8_lossy(&refused.get_output().stderr).into_owned();
         assert!(stderr.contains("python3 -m pip install oidn"), "{stderr}");
         assert!(stderr.contains("HSCENE_OIDN"), "{stderr}");
-        assert!(stderr.contains("no-such-libOpenImageDenoise.so"), "{stderr}");
+        assert!(
+            stderr.contains("no-such-libOpenImageDenoise.so"),
+            "{stderr}"
+        );
         assert!(!out.exists());
     }
 }
@@ -111,7 +114,9 @@ fn a_denoised_render_keeps_its_noisy_layer() {
     }
     assert!(run.status.success(), "{stderr}");
     let bytes = fs::read(&exr).unwrap();
-    for channel in ["noisy.R", "noisy.G", "noisy.B", "albedo.R", "N.X", "R", "G", "B"] {
+    for channel in [
+        "noisy.R", "noisy.G", "noisy.B", "albedo.R", "N.X", "R", "G", "B",
+    ] {
         let needle = format!("{channel}\0");
         assert!(
             bytes.windows(needle.len()).any(|w| w == needle.as_bytes()),

@@ -107,11 +107,25 @@ fn no_moves_reports_nothing_flown() {
     let out = hscene()
         .arg("view")
         .arg(&scene)
-        .args(["--headless", "--frames", "0", "--samples", "2", "--resolution", "16x12"])
+        .args([
+            "--headless",
+            "--frames",
+            "0",
+            "--samples",
+            "2",
+            "--resolution",
+            "16x12",
+        ])
         .assert()
         .success();
     let stdout = String::from_utf8_lossy(&out.get_output().stdout).into_owned();
-    assert!(stdout.contains("0 moves at 16x12: nothing flown"), "{stdout}");
+    assert!(
+        stdout.contains("0 moves at 16x12: nothing flown"),
+        "{stdout}"
+    );
     assert!(!stdout.contains("fps"), "{stdout}");
-    assert!(stdout.contains("converged to 2 samples per pixel"), "{stdout}");
+    assert!(
+        stdout.contains("converged to 2 samples per pixel"),
+        "{stdout}"
+    );
 }

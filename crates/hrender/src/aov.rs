@@ -174,7 +174,11 @@ impl AovLayers {
 
     /// The three channels `names` as pixels.
     fn triples(&self, names: &[&str]) -> Option<Vec<[f32; 3]>> {
-        let [r, g, b] = [self.channel(names[0])?, self.channel(names[1])?, self.channel(names[2])?];
+        let [r, g, b] = [
+            self.channel(names[0])?,
+            self.channel(names[1])?,
+            self.channel(names[2])?,
+        ];
         Some(
             r.iter()
                 .zip(g)
@@ -198,7 +202,13 @@ pub fn render_guides(
     options: &RenderOptions,
     region: Option<Region>,
 ) -> Result<crate::denoise::Guides, RenderError> {
-    let layers = render_layers(scene, options, region, &[Aov::Albedo, Aov::Normal], GUIDE_GRID)?;
+    let layers = render_layers(
+        scene,
+        options,
+        region,
+        &[Aov::Albedo, Aov::Normal],
+        GUIDE_GRID,
+    )?;
     let albedo = layers.triples(Aov::Albedo.channels());
     let normal = layers.triples(Aov::Normal.channels());
     match (albedo, normal) {
@@ -285,7 +295,12 @@ fn render_layers(
     let channels = names
         .iter()
         .enumerate()
-        .map(|(k, name)| (*name, data.iter().skip(k).step_by(stride).copied().collect()))
+        .map(|(k, name)| {
+            (
+                *name,
+                data.iter().skip(k).step_by(stride).copied().collect(),
+            )
+        })
         .collect();
     Ok(AovLayers {
         width: region.width,
@@ -387,7 +402,13 @@ fn albedo_of(
     let smooth = (diffuse + m.specular) * k;
     let albedo = hscene_ir::Rgb::new(smooth.r + white, smooth.g + white, smooth.b + white);
     let clamp = |c: hscene_ir::Rgb| {
-        let [r, g, b] = c.channels().map(|v| if v.is_finite() { v.clamp(0.0, 1.0) } else { 0.0 });
+        let [r, g, b] = c.channels().map(|v| {
+            if v.is_finite() {
+                v.clamp(0.0, 1.0)
+            } else {
+                0.0
+            }
+        });
         hscene_ir::Rgb::new(r, g, b)
     };
     if albedo.is_black() && !m.emission.is_black() {

@@ -97,8 +97,17 @@ type DeviceFn = unsafe extern "C" fn(Handle);
 type SetDeviceInt = unsafe extern "C" fn(Handle, *const c_char, i32);
 type GetError = unsafe extern "C" fn(Handle, *mut *const c_char) -> i32;
 type NewFilter = unsafe extern "C" fn(Handle, *const c_char) -> Handle;
-type SetImage =
-    unsafe extern "C" fn(Handle, *const c_char, *mut c_void, i32, usize, usize, usize, usize, usize);
+type SetImage = unsafe extern "C" fn(
+    Handle,
+    *const c_char,
+    *mut c_void,
+    i32,
+    usize,
+    usize,
+    usize,
+    usize,
+    usize,
+);
 type SetBool = unsafe extern "C" fn(Handle, *const c_char, bool);
 
 /// The loaded library and the functions hscene calls.
@@ -123,7 +132,9 @@ pub struct Denoiser {
 
 impl std::fmt::Debug for Denoiser {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("Denoiser").field("path", &self.path).finish()
+        f.debug_struct("Denoiser")
+            .field("path", &self.path)
+            .finish()
     }
 }
 
@@ -209,7 +220,11 @@ fn python_package_dir() -> Option<PathBuf> {
 /// The library in the wheel's folder `dir` (under `lib.linux.x64/`, or
 /// `dir` itself), and the TBB beside it if any.
 fn wheel_library(dir: &Path) -> Option<(PathBuf, Option<PathBuf>)> {
-    for sub in [dir.join("lib.linux.x64"), dir.join("lib"), dir.to_path_buf()] {
+    for sub in [
+        dir.join("lib.linux.x64"),
+        dir.join("lib"),
+        dir.to_path_buf(),
+    ] {
         let Ok(entries) = std::fs::read_dir(&sub) else {
             continue;
         };
@@ -372,9 +387,7 @@ impl Denoiser {
             };
             self.check(device.handle)?;
             if filter.handle.is_null() {
-                return Err(DenoiseError::Failed(
-                    "it has no \"RT\" filter".to_string(),
-                ));
+                return Err(DenoiseError::Failed("it has no \"RT\" filter".to_string()));
             }
             for (name, buffer) in [
                 (c"color", input.as_mut_ptr()),

@@ -330,11 +330,25 @@ mod tests {
                 let table = Levels8::new(d);
                 let exact = |c: f32| (d.apply(c) * 255.0).round() as u8;
                 for t in table.thresholds.iter().copied() {
-                    for c in [t, f32::from_bits(t.to_bits() - 1), f32::from_bits(t.to_bits() + 1)] {
+                    for c in [
+                        t,
+                        f32::from_bits(t.to_bits() - 1),
+                        f32::from_bits(t.to_bits() + 1),
+                    ] {
                         assert_eq!(table.level(c), exact(c), "{d:?} at {c}");
                     }
                 }
-                for c in [0.0, -0.0, -1.0, 1.0, 2.0, 1e30, f32::MAX, f32::NAN, f32::INFINITY] {
+                for c in [
+                    0.0,
+                    -0.0,
+                    -1.0,
+                    1.0,
+                    2.0,
+                    1e30,
+                    f32::MAX,
+                    f32::NAN,
+                    f32::INFINITY,
+                ] {
                     assert_eq!(table.level(c), exact(c), "{d:?} at {c}");
                 }
                 let pixels = [[0.5, 0.18, 2.0], [0.0, 0.2141, 1e-3]];

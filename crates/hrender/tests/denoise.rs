@@ -63,7 +63,13 @@ fn guides_are_albedo_and_unit_normals() {
     let scene = cornell();
     let guides = render_guides(&scene, &options(1, 0), None).unwrap();
     assert_eq!(guides.albedo.len(), 1600);
-    assert!(guides.albedo.iter().flatten().all(|v| (0.0..=1.0).contains(v)));
+    assert!(
+        guides
+            .albedo
+            .iter()
+            .flatten()
+            .all(|v| (0.0..=1.0).contains(v))
+    );
     // The red wall is on the left, the green on the right (row 20).
     let left = guides.albedo[20 * 40 + 3];
     let right = guides.albedo[20 * 40 + 36];
