@@ -81,6 +81,7 @@ fn main() -> ExitCode {
             coarse: 4,
             exposure: 0.0,
             threads: None,
+            denoise: false,
         };
         let report = match hview::run_headless(&scene, view, &FlightPath::default_flight(moves)) {
             Ok(r) => r,

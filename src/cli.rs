@@ -89,6 +89,11 @@ pub struct ViewArgs {
     /// Exposure in stops.
     #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
     pub exposure: f64,
+    /// Denoise the converged still view (as the scene's `denoise = true;`)
+    /// where Intel Open Image Denoise is installed; without it the view
+    /// stays noisy and says so once.
+    #[arg(long)]
+    pub denoise: bool,
     /// The hyperbolic distance one key press flies (Shift: five times).
     #[arg(long, default_value_t = 0.05)]
     pub step: f64,
@@ -186,9 +191,18 @@ pub struct RenderArgs {
     /// hyperbolic distance along the pixel's central ray), `normal` (N.X,
     /// N.Y, N.Z, in the scene's ball coordinates), `id` (the object's
     /// number), `cell` (cell.rank, cell.class of a honeycomb's cell) and
-    /// `word` (word.length, word.1..word.8: the faces crossed in a space).
+    /// `word` (word.length, word.1..word.8: the faces crossed in a space),
+    /// `albedo` (albedo.R, .G, .B: the first hit's reflectance, the
+    /// denoiser's guide) and `noisy` (noisy.R, .G, .B: the picture before
+    /// --denoise).
     #[arg(long, value_name = "LAYERS", value_parser = parse_aovs)]
     pub aov: Option<AovList>,
+    /// Denoise the picture with Intel Open Image Denoise (as the scene's
+    /// `denoise = true;`), guided by the first hit's albedo and normal;
+    /// refused where the library is not installed (`python3 -m pip install
+    /// oidn`; or HSCENE_OIDN=/path/to/libOpenImageDenoise.so).
+    #[arg(long)]
+    pub denoise: bool,
     /// Worker threads, 1 to 1024 (default: all cores).
     #[arg(long, value_parser = clap::value_parser!(u16).range(1..=hrender::MAX_THREADS as i64))]
     pub threads: Option<u16>,

@@ -95,6 +95,7 @@ fn header(path: &Path, scene: &Scene) -> Value {
             "frames": s.frames,
             "fov": s.fov,
             "integrator": s.integrator.name(),
+            "denoise": s.denoise,
             "sky": s.sky.as_ref().map(|sky| match sky {
                 hscene_ir::Sky::Gradient { zenith, horizon } => json!({
                     "zenith": rgb(*zenith),

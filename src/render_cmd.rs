@@ -104,6 +104,14 @@ pub fn run(args: &RenderArgs, color: ColorChoice) -> ExitCode {
             "warning: `ambient` has no meaning under the path integrator, which computes the light bouncing between surfaces instead; surfaces lit only by ambient light come out darker [HSC1010]"
         );
     }
+    // Refuse a denoised render before its rays are spent when the library
+    // is missing.
+    if (args.denoise || scene.settings.denoise)
+        && let Err(e) = hrender::denoiser()
+    {
+        diagln!("error: {e}");
+        return ExitCode::from(EXIT_USAGE_OR_IO);
+    }
     let frames = scene.settings.frames;
     if let Some(k) = args.frame
         && k >= frames
@@ -392,7 +400,7 @@ fn render_frame(
             bar.set_position(u64::from(rows));
         }
     };
-    let rendered = match hrender::render_region(scene, &options, args.crop, &progress) {
+    let mut rendered = match hrender::render_region(scene, &options, args.crop, &progress) {
         Ok(r) => r,
         Err(e) => {
             diagln!("error: {e}");
@@ -411,11 +419,22 @@ fn render_frame(
     if let Some(bar) = &bar {
         bar.finish_and_clear();
     }
+    let noisy = if args.denoise || scene.settings.denoise {
+        match denoise(scene, &options, args.crop, &rendered.image) {
+            Ok(denoised) => Some(std::mem::replace(&mut rendered.image, denoised)),
+            Err(e) => {
+                diagln!("error: {e}");
+                return ExitCode::from(EXIT_USAGE_OR_IO);
+            }
+        }
+    } else {
+        None
+    };
     // `--exposure auto` is chosen on the first frame and kept for the rest.
     if rendered.auto_exposure.is_some() {
         auto_ev.set(rendered.auto_exposure);
     }
-    let output = match write_frame(args, scene, &options, &rendered, sink) {
+    let output = match write_frame(args, scene, &options, &rendered, noisy.as_ref(), sink) {
         Ok(output) => output,
         Err(e) => {
             diagln!("error: {e}");
@@ -439,6 +458,18 @@ fn render_frame(
         );
     }
     ExitCode::SUCCESS
+}
+
+/// `image` (the picture of `scene` with `options`, cropped to `crop`)
+/// denoised, guided by its albedo and normal layers.
+fn denoise(
+    scene: &hscene_ir::Scene,
+    options: &RenderOptions,
+    crop: Option<hrender::Region>,
+    image: &hrender::Image,
+) -> Result<hrender::Image, hrender::RenderError> {
+    let guides = hrender::render_guides(scene, options, crop)?;
+    Ok(hrender::denoiser()?.denoise(image, &guides, options.threads)?)
 }
 
 /// The renderer's options from the command line; `auto_ev` is the
@@ -493,6 +524,7 @@ fn write_frame(
     scene: &hscene_ir::Scene,
     options: &RenderOptions,
     rendered: &hrender::Rendered,
+    noisy: Option<&hrender::Image>,
     sink: FrameSink,
 ) -> Result<std::path::PathBuf, hrender::RenderError> {
     match sink {
@@ -502,7 +534,9 @@ fn write_frame(
             let png = hrender::PngLevel::new(args.png_level).unwrap_or_default();
             match &args.aov {
                 Some(aovs) => {
-                    let layers = hrender::render_aovs(scene, options, args.crop, &aovs.0)?;
+                    let mut layers = hrender::render_aovs(scene, options, args.crop, &aovs.0)?;
+                    // Without denoising, the noisy layer is the picture.
+                    layers.add_picture(noisy.unwrap_or(&rendered.image));
                     hrender::write_exr_with_layers(&rendered.image, &layers, output)?;
                 }
                 None => hrender::write_image_with(

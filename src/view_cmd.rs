@@ -94,6 +94,7 @@ fn options(args: &ViewArgs, scene: &Scene) -> Result<ViewOptions, String> {
         coarse: 4,
         exposure: args.exposure,
         threads: args.threads.map(|t| t as usize),
+        denoise: args.denoise || scene.settings.denoise,
     })
 }
 
@@ -130,18 +131,28 @@ fn headless(args: &ViewArgs, scene: &Scene, options: ViewOptions) -> ExitCode {
             return ExitCode::from(EXIT_USAGE_OR_IO);
         }
     };
-    let moves = report.moves.max(1) as f64;
-    let coarse = ms(report.to_coarse) / moves;
-    let full = ms(report.full_pass) / moves;
-    let worst = ms(report.worst_coarse);
-    outln!(
-        "{} moves at {}x{}: move to coarse frame {coarse:.1} ms (worst {worst:.1} ms); full-resolution pass {full:.1} ms; moving {:.1} fps (coarse + full pass), {:.1} fps (coarse only)",
-        report.moves,
-        options.resolution.width(),
-        options.resolution.height(),
-        1000.0 / (coarse + full).max(1e-9),
-        1000.0 / coarse.max(1e-9),
-    );
+    if report.moves == 0 {
+        // No move flown: no time per move to report (dividing by zero
+        // moves printed "1000000000000.0 fps").
+        outln!(
+            "0 moves at {}x{}: nothing flown",
+            options.resolution.width(),
+            options.resolution.height(),
+        );
+    } else {
+        let moves = report.moves as f64;
+        let coarse = ms(report.to_coarse) / moves;
+        let full = ms(report.full_pass) / moves;
+        let worst = ms(report.worst_coarse);
+        outln!(
+            "{} moves at {}x{}: move to coarse frame {coarse:.1} ms (worst {worst:.1} ms); full-resolution pass {full:.1} ms; moving {:.1} fps (coarse + full pass), {:.1} fps (coarse only)",
+            report.moves,
+            options.resolution.width(),
+            options.resolution.height(),
+            1000.0 / (coarse + full).max(1e-9),
+            1000.0 / coarse.max(1e-9),
+        );
+    }
     outln!(
         "still: converged to {} samples per pixel in {:.1} ms",
         report.last.samples,
@@ -208,6 +219,11 @@ pub fn run(args: &ViewArgs, color: ColorChoice) -> ExitCode {
             return ExitCode::from(EXIT_USAGE_OR_IO);
         }
     };
+    if options.denoise
+        && let Err(e) = hrender::denoiser()
+    {
+        diagln!("warning: {e}; the view is shown without denoising");
+    }
     if args.headless {
         return headless(args, &scene, options);
     }

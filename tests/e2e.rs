@@ -8,6 +8,7 @@
 mod cli;
 mod cli_corpus;
 mod colour_cli;
+mod denoise_cli;
 mod editor_cli;
 mod editor_grammar;
 mod emit_ir;

@@ -95,3 +95,37 @@ fn paths_fly_and_bad_paths_are_located() {
         .code(2)
         .stderr(predicates::str::contains("line 2"));
 }
+
+/// `--frames 0` flies nothing: the report says so instead of dividing by
+/// zero moves (it printed "1000000000000.0 fps"), and the still view still
+/// converges.
+#[test]
+fn no_moves_reports_nothing_flown() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("s.hsc");
+    fs::write(&scene, SCENE).unwrap();
+    let out = hscene()
+        .arg("view")
+        .arg(&scene)
+        .args([
+            "--headless",
+            "--frames",
+            "0",
+            "--samples",
+            "2",
+            "--resolution",
+            "16x12",
+        ])
+        .assert()
+        .success();
+    let stdout = String::from_utf8_lossy(&out.get_output().stdout).into_owned();
+    assert!(
+        stdout.contains("0 moves at 16x12: nothing flown"),
+        "{stdout}"
+    );
+    assert!(!stdout.contains("fps"), "{stdout}");
+    assert!(
+        stdout.contains("converged to 2 samples per pixel"),
+        "{stdout}"
+    );
+}

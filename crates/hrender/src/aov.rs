@@ -26,6 +26,16 @@
 //!   so the tile shown is `g_{f_k} ∘ ... ∘ g_{f_1}` of the domain's
 //!   contents: its length, and its first eight letters (0 past the end);
 //!   0 everywhere in H³.
+//! - `albedo` (`albedo.R`, `albedo.G`, `albedo.B`): the surface's
+//!   reflectance there (its texture's where it has one), all its lobes
+//!   together (diffuse, glossy, mirror, transmission, scaled as the path
+//!   integrator scales them), at most 1; an emitter that reflects nothing
+//!   shows its emission scaled to a largest channel of 1; 0 where nothing
+//!   is met. With `normal`, the denoiser's guide (`denoise.rs`).
+//! - `noisy` (`noisy.R`, `noisy.G`, `noisy.B`): the picture before
+//!   denoising (the picture itself when nothing is denoised); filled in by
+//!   the caller that has the picture ([`AovLayers::add_picture`]), not
+//!   here.
 //!
 //! Every layer is of the first surface that is not fully transparent (a
 //! material that lets all light through unbent and shines none: a `trans
@@ -42,6 +52,8 @@ use hscene_ir::Scene;
 use crate::error::RenderError;
 use crate::nets::Sample;
 use crate::scene::{Nearest, T_MIN};
+use rayon::prelude::*;
+
 use crate::{Region, RenderOptions, picture};
 
 /// A pixel layer.
@@ -59,6 +71,10 @@ pub enum Aov {
     /// shows onto the domain, as a word in the face pairings: its length
     /// and its first [`WORD_LETTERS`] letters.
     Word,
+    /// The first hit's reflectance (a denoiser's guide).
+    Albedo,
+    /// The picture before denoising.
+    Noisy,
 }
 
 /// The letters of the `word` layer kept as channels (`word.1` ...): the
@@ -71,12 +87,14 @@ pub const MAX_CLEAR_SURFACES: u32 = 256;
 
 impl Aov {
     /// Every layer, by the names `--aov` takes.
-    pub const ALL: [(&'static str, Aov); 5] = [
+    pub const ALL: [(&'static str, Aov); 7] = [
         ("depth", Aov::Depth),
         ("normal", Aov::Normal),
         ("id", Aov::Id),
         ("cell", Aov::Cell),
         ("word", Aov::Word),
+        ("albedo", Aov::Albedo),
+        ("noisy", Aov::Noisy),
     ];
 
     /// The layers of a comma-separated list (`depth,normal`), each once.
@@ -115,6 +133,8 @@ impl Aov {
                 "word.7",
                 "word.8",
             ],
+            Aov::Albedo => &["albedo.R", "albedo.G", "albedo.B"],
+            Aov::Noisy => &["noisy.R", "noisy.G", "noisy.B"],
         }
     }
 }
@@ -139,6 +159,64 @@ impl AovLayers {
             .find(|(n, _)| *n == name)
             .map(|(_, v)| v.as_slice())
     }
+
+    /// The `noisy` layer's channels filled from `picture` (same size),
+    /// where the layers include it.
+    pub fn add_picture(&mut self, picture: &crate::Image) {
+        for (k, name) in Aov::Noisy.channels().iter().enumerate() {
+            if let Some((_, c)) = self.channels.iter_mut().find(|(n, _)| n == name) {
+                for (v, px) in c.iter_mut().zip(picture.pixels()) {
+                    *v = px[k];
+                }
+            }
+        }
+    }
+
+    /// The three channels `names` as pixels.
+    fn triples(&self, names: &[&str]) -> Option<Vec<[f32; 3]>> {
+        let [r, g, b] = [
+            self.channel(names[0])?,
+            self.channel(names[1])?,
+            self.channel(names[2])?,
+        ];
+        Some(
+            r.iter()
+                .zip(g)
+                .zip(b)
+                .map(|((r, g), b)| [*r, *g, *b])
+                .collect(),
+        )
+    }
+}
+
+/// Sub-positions per pixel side the denoiser's guides average: its input
+/// is anti-aliased, so guides through the pixel centre alone would give
+/// it staircase edges its picture does not have.
+const GUIDE_GRID: u32 = 3;
+
+/// The denoiser's guides for the picture `render_region` would make of
+/// `scene` with `options` and `region`: albedo and normal, each the mean
+/// over a grid of [`GUIDE_GRID`]² positions in the pixel.
+pub fn render_guides(
+    scene: &Scene,
+    options: &RenderOptions,
+    region: Option<Region>,
+) -> Result<crate::denoise::Guides, RenderError> {
+    let layers = render_layers(
+        scene,
+        options,
+        region,
+        &[Aov::Albedo, Aov::Normal],
+        GUIDE_GRID,
+    )?;
+    let albedo = layers.triples(Aov::Albedo.channels());
+    let normal = layers.triples(Aov::Normal.channels());
+    match (albedo, normal) {
+        (Some(albedo), Some(normal)) => Ok(crate::denoise::Guides { albedo, normal }),
+        _ => Err(RenderError::InvalidScene(
+            "the guide layers were not rendered".to_string(),
+        )),
+    }
 }
 
 /// The layers `which` of the picture `render_region` would make of `scene`
@@ -148,6 +226,18 @@ pub fn render_aovs(
     options: &RenderOptions,
     region: Option<Region>,
     which: &[Aov],
+) -> Result<AovLayers, RenderError> {
+    render_layers(scene, options, region, which, 1)
+}
+
+/// The layers `which`, each pixel's the mean over `grid`² positions in
+/// it (1: its centre); only albedo and normal are meaningful as means.
+fn render_layers(
+    scene: &Scene,
+    options: &RenderOptions,
+    region: Option<Region>,
+    which: &[Aov],
+    grid: u32,
 ) -> Result<AovLayers, RenderError> {
     options.validate()?;
     // Ranks, not classes, where a honeycomb's classes are ranks.
@@ -171,17 +261,82 @@ pub fn render_aovs(
         width: picture.width,
         height: picture.height,
     });
-    let to_scene = picture.camera_to_scene.to_lorentz();
     let n = (region.width as usize) * (region.height as usize);
     let names: Vec<&'static str> = which.iter().flat_map(|a| a.channels()).copied().collect();
-    let mut channels: Vec<(&'static str, Vec<f32>)> =
-        names.iter().map(|name| (*name, vec![0.0; n])).collect();
-    let (w, h) = (f64::from(picture.width), f64::from(picture.height));
-    for row in 0..region.height {
-        for col in 0..region.width {
-            let (i, j) = (region.x + col, region.y + row);
-            let sx = (f64::from(i) + 0.5) / w - 0.5;
-            let sy = 0.5 - (f64::from(j) + 0.5) / h;
+    let stride = names.len();
+    let row_len = region.width as usize * stride;
+    // Interleaved (pixel by pixel, channel by channel) so that rows are
+    // computed in parallel into disjoint slices, then split by channel.
+    let mut data = vec![0.0f32; n * stride];
+    let layer = LayerJob {
+        scene,
+        picture: &picture,
+        to_scene: picture.camera_to_scene.to_lorentz(),
+        names: &names,
+        grid: grid.max(1),
+    };
+    let fill = |data: &mut [f32]| {
+        data.par_chunks_mut(row_len.max(1))
+            .zip(region.y..region.y + region.height)
+            .for_each(|(out, j)| {
+                for (col, values) in out.chunks_mut(stride.max(1)).enumerate() {
+                    layer.pixel(region.x + col as u32, j, values);
+                }
+            });
+    };
+    match options.threads {
+        Some(t) => rayon::ThreadPoolBuilder::new()
+            .num_threads(t)
+            .build()
+            .map_err(|e| RenderError::Threads(e.to_string()))?
+            .install(|| fill(&mut data)),
+        None => fill(&mut data),
+    }
+    let channels = names
+        .iter()
+        .enumerate()
+        .map(|(k, name)| {
+            (
+                *name,
+                data.iter().skip(k).step_by(stride).copied().collect(),
+            )
+        })
+        .collect();
+    Ok(AovLayers {
+        width: region.width,
+        height: region.height,
+        channels,
+    })
+}
+
+/// What every pixel of a layer render shares.
+struct LayerJob<'a> {
+    scene: &'a Scene,
+    picture: &'a crate::Picture,
+    to_scene: hgeom::glam::DMat4,
+    names: &'a [&'static str],
+    grid: u32,
+}
+
+impl LayerJob<'_> {
+    /// Pixel `(i, j)`'s channel values into `values` (in `names` order).
+    fn pixel(&self, i: u32, j: u32, values: &mut [f32]) {
+        let picture = self.picture;
+        let (w, h) = (f64::from(picture.width), f64::from(picture.height));
+        let g = f64::from(self.grid);
+        let weight = 1.0 / (g * g);
+        let mut put = |name: &str, v: f64| {
+            if let Some(k) = self.names.iter().position(|n| *n == name) {
+                values[k] += (v * weight) as f32;
+            }
+        };
+        for sub in 0..self.grid * self.grid {
+            let (ox, oy) = (
+                (f64::from(sub % self.grid) + 0.5) / g,
+                (f64::from(sub / self.grid) + 0.5) / g,
+            );
+            let sx = (f64::from(i) + ox) / w - 0.5;
+            let sy = 0.5 - (f64::from(j) + oy) / h;
             let mut word: Vec<usize> = Vec::new();
             let found = match picture.pixel_net.sample(sx, sy) {
                 Sample::Ray(dir) => first_visible(
@@ -190,12 +345,6 @@ pub fn render_aovs(
                     &mut word,
                 ),
                 Sample::Outside => None,
-            };
-            let k = (row as usize) * (region.width as usize) + col as usize;
-            let mut put = |name: &str, v: f64| {
-                if let Some((_, c)) = channels.iter_mut().find(|(n, _)| *n == name) {
-                    c[k] = v as f32;
-                }
             };
             put("word.length", word.len() as f64);
             for (letter, face) in word.iter().take(WORD_LETTERS).enumerate() {
@@ -214,10 +363,16 @@ pub fn render_aovs(
             } else {
                 hit.shading
             };
-            let normal: DVec3 = ball_direction(to_scene * hit.point, to_scene * facing);
+            let normal: DVec3 = ball_direction(self.to_scene * hit.point, self.to_scene * facing);
             put("N.X", normal.x);
             put("N.Y", normal.y);
             put("N.Z", normal.z);
+            if let Some(object) = picture.prepared.objects.get(index) {
+                let albedo = albedo_of(&picture.prepared, object, &hit);
+                put("albedo.R", albedo.r);
+                put("albedo.G", albedo.g);
+                put("albedo.B", albedo.b);
+            }
             // In a space, the prepared objects are the objects' images and
             // the domain's rods: each is given its object's number.
             let number = match &picture.prepared.space {
@@ -225,16 +380,44 @@ pub fn render_aovs(
                 None => index + 1,
             };
             put("id", number as f64);
-            let (rank, class) = cell_of(scene, number.wrapping_sub(1), hit.part);
+            let (rank, class) = cell_of(self.scene, number.wrapping_sub(1), hit.part);
             put("cell.rank", rank);
             put("cell.class", class);
         }
     }
-    Ok(AovLayers {
-        width: region.width,
-        height: region.height,
-        channels,
-    })
+}
+
+/// The reflectance of `object` at `hit` (module docs, `albedo`).
+fn albedo_of(
+    scene: &crate::scene::PreparedScene,
+    object: &crate::scene::PreparedObject,
+    hit: &hgeom::Hit,
+) -> hscene_ir::Rgb {
+    let Some(m) = scene.materials.get(object.material_of(hit)) else {
+        return hscene_ir::Rgb::BLACK;
+    };
+    let (_, diffuse) = crate::material::reflectances(object, m, hit);
+    let k = crate::bsdf::energy_scale(m, diffuse);
+    let white = (m.reflection + m.transmission) * k;
+    let smooth = (diffuse + m.specular) * k;
+    let albedo = hscene_ir::Rgb::new(smooth.r + white, smooth.g + white, smooth.b + white);
+    let clamp = |c: hscene_ir::Rgb| {
+        let [r, g, b] = c.channels().map(|v| {
+            if v.is_finite() {
+                v.clamp(0.0, 1.0)
+            } else {
+                0.0
+            }
+        });
+        hscene_ir::Rgb::new(r, g, b)
+    };
+    if albedo.is_black() && !m.emission.is_black() {
+        let top = m.emission.channels().into_iter().fold(0.0, f64::max);
+        if top > 0.0 && top.is_finite() {
+            return clamp(m.emission * (1.0 / top));
+        }
+    }
+    clamp(albedo)
 }
 
 /// The channels of the word's letters.

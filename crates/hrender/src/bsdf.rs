@@ -66,7 +66,7 @@ fn mean(c: Rgb) -> f64 {
 
 /// The factor every lobe of `m` is scaled by so that the material reflects
 /// and transmits at most all of the light: `1 / max(1, total)`.
-fn energy_scale(m: &Material, diffuse: Rgb) -> f64 {
+pub(crate) fn energy_scale(m: &Material, diffuse: Rgb) -> f64 {
     let smooth = (diffuse + m.specular)
         .channels()
         .into_iter()

@@ -103,6 +103,94 @@ impl DisplayTransform {
     }
 }
 
+/// The 8-bit levels of a [`DisplayTransform`] as a table: for each level
+/// above that of 0, the least positive `f32` that reaches it. A sample's
+/// level is then a binary search of 255 thresholds, no power, and the
+/// same for every sample as [`DisplayTransform::to_rgb8`]'s (the tests
+/// compare every `f32` from `2^-13` to 1, and the thresholds' neighbours).
+///
+/// Why a table is exact: the transform is a non-decreasing function of
+/// its `f32` input. The tone curves are monotone and `powf` in `f64` errs
+/// by an ulp of `2^-52`, while two `f32`s differ by at least `2^-24` of
+/// themselves, so no rounding can reorder them; `* 255`, `round` and the
+/// other correctly rounded steps never reorder. Non-finite samples (which
+/// a rendered image never holds) take the computed path.
+#[derive(Clone, Debug)]
+pub struct Levels8 {
+    transform: DisplayTransform,
+    /// The level of 0 and of every non-positive sample.
+    base: u8,
+    /// `thresholds[k]`: the least positive `f32` whose level is at least
+    /// `base + 1 + k`; levels no finite sample reaches are left out.
+    thresholds: Vec<f32>,
+}
+
+impl Levels8 {
+    /// The table of `transform`.
+    pub fn new(transform: DisplayTransform) -> Levels8 {
+        let level = |c: f32| (transform.apply(c) * 255.0).round() as u8;
+        let base = level(0.0);
+        let mut thresholds = Vec::with_capacity(255);
+        let top = f32::MAX.to_bits();
+        for b in base.saturating_add(1)..=255 {
+            if base == 255 || level(f32::MAX) < b {
+                break;
+            }
+            // The least bit pattern of a positive finite f32 with level
+            // >= b: positive floats order as their bits do.
+            let (mut lo, mut hi) = (1u32, top);
+            while lo < hi {
+                let mid = lo + (hi - lo) / 2;
+                if level(f32::from_bits(mid)) >= b {
+                    hi = mid;
+                } else {
+                    lo = mid + 1;
+                }
+            }
+            thresholds.push(f32::from_bits(lo));
+        }
+        Levels8 {
+            transform,
+            base,
+            thresholds,
+        }
+    }
+
+    /// The 8-bit level of the sample `c`.
+    #[inline]
+    pub fn level(&self, c: f32) -> u8 {
+        if !c.is_finite() {
+            return (self.transform.apply(c) * 255.0).round() as u8;
+        }
+        if !(c > 0.0) {
+            return self.base;
+        }
+        // At most 255 levels above the base, so the count fits.
+        self.base + self.thresholds.partition_point(|t| *t <= c) as u8
+    }
+
+    /// Every sample's level, interleaved RGB, rows in parallel on the
+    /// current rayon pool: the same bytes as
+    /// [`DisplayTransform::to_rgb8`].
+    pub fn to_rgb8_parallel(&self, pixels: &[[f32; 3]]) -> Vec<u8> {
+        use rayon::prelude::*;
+        let mut out = vec![0u8; 3 * pixels.len()];
+        // Chunks of a few thousand pixels: enough work per task to pay
+        // for its scheduling.
+        const CHUNK: usize = 4096;
+        out.par_chunks_mut(3 * CHUNK)
+            .zip(pixels.par_chunks(CHUNK))
+            .for_each(|(out, pixels)| {
+                for (o, p) in out.chunks_exact_mut(3).zip(pixels) {
+                    for k in 0..3 {
+                        o[k] = self.level(p[k]);
+                    }
+                }
+            });
+        out
+    }
+}
+
 /// `level` of every sample, interleaved: a plain loop into a buffer of the
 /// known size (a `flat_map` over the pixels' arrays compiled to twice the
 /// instructions per pixel in some builds and not in others).
@@ -205,6 +293,68 @@ mod tests {
             .collect();
         assert_eq!(d.to_rgb8(&pixels), expect8);
         assert_eq!(d.to_rgb16(&pixels), expect16);
+    }
+
+    /// The table gives the computed level of every `f32` from `2^-13` to
+    /// 1 (below, every level is 0 both ways; the thresholds' neighbours
+    /// are checked too), for the viewer's transform; and the thresholds'
+    /// neighbours for every transform.
+    #[test]
+    fn level_table_equals_the_computed_levels() {
+        use rayon::prelude::*;
+        let d = DisplayTransform::default();
+        let table = Levels8::new(d);
+        let exact = |c: f32| (d.apply(c) * 255.0).round() as u8;
+        let (lo, hi) = ((2.0f32).powi(-13).to_bits(), 1.0f32.to_bits());
+        // Blocks of 2^16 bit patterns, in parallel.
+        let bad: usize = (lo >> 16..=hi >> 16)
+            .into_par_iter()
+            .map(|block| {
+                (block << 16..=(block << 16 | 0xffff))
+                    .filter(|bits| (lo..=hi).contains(bits))
+                    .filter(|bits| {
+                        let c = f32::from_bits(*bits);
+                        table.level(c) != exact(c)
+                    })
+                    .count()
+            })
+            .sum();
+        assert_eq!(bad, 0);
+        // Below, every level is 0 both ways: the least level above 0 needs
+        // 12.92 x 255 >= 0.5, x >= 1.5e-4.
+        assert_eq!(exact(2.0f32.powi(-13)), 0);
+        assert!(table.thresholds[0] > 2.0f32.powi(-13));
+        for tone in [ToneMap::Clip, ToneMap::Reinhard, ToneMap::Aces] {
+            for encoding in [Encoding::Srgb, Encoding::Linear] {
+                let d = DisplayTransform { tone, encoding };
+                let table = Levels8::new(d);
+                let exact = |c: f32| (d.apply(c) * 255.0).round() as u8;
+                for t in table.thresholds.iter().copied() {
+                    for c in [
+                        t,
+                        f32::from_bits(t.to_bits() - 1),
+                        f32::from_bits(t.to_bits() + 1),
+                    ] {
+                        assert_eq!(table.level(c), exact(c), "{d:?} at {c}");
+                    }
+                }
+                for c in [
+                    0.0,
+                    -0.0,
+                    -1.0,
+                    1.0,
+                    2.0,
+                    1e30,
+                    f32::MAX,
+                    f32::NAN,
+                    f32::INFINITY,
+                ] {
+                    assert_eq!(table.level(c), exact(c), "{d:?} at {c}");
+                }
+                let pixels = [[0.5, 0.18, 2.0], [0.0, 0.2141, 1e-3]];
+                assert_eq!(table.to_rgb8_parallel(&pixels), d.to_rgb8(&pixels));
+            }
+        }
     }
 
     #[test]

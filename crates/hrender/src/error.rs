@@ -113,6 +113,9 @@ pub enum RenderError {
         /// The underlying error.
         source: std::io::Error,
     },
+    /// Denoising failed or its library is missing.
+    #[error(transparent)]
+    Denoise(#[from] crate::denoise::DenoiseError),
     /// Building the worker pool failed.
     #[error("cannot start worker threads: {0}")]
     Threads(String),

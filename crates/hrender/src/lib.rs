@@ -19,6 +19,7 @@ mod absorption;
 mod accel;
 mod aov;
 mod bsdf;
+mod denoise;
 mod display;
 mod error;
 mod exposure;
@@ -60,8 +61,11 @@ use hscene_ir::view::{CanonicalFrame, FovError};
 use hscene_ir::{Camera, Net, Resolution, Rgb, Scene, Window};
 use rayon::prelude::*;
 
-pub use aov::{Aov, AovLayers, render_aovs};
-pub use display::{DisplayTransform, Encoding, ToneMap, srgb_decode, srgb_encode};
+pub use aov::{Aov, AovLayers, render_aovs, render_guides};
+pub use denoise::{
+    DenoiseError, Denoiser, Guides, OIDN_ENV, OIDN_INSTALL, denoiser, denoiser_available,
+};
+pub use display::{DisplayTransform, Encoding, Levels8, ToneMap, srgb_decode, srgb_encode};
 pub use error::RenderError;
 pub use exposure::{
     AUTO_KEY, DARK_LEVEL, Darkness, Exposure, MAX_EXPOSURE, auto_exposure, bright_level, darkness,
@@ -553,6 +557,62 @@ fn render_in_pool(
     region: Option<Region>,
     progress: &(dyn Fn(u32) + Sync),
 ) -> Result<Rendered, RenderError> {
+    let picture = picture(scene, options)?;
+    render_picture(scene, &picture, options, region, progress)
+}
+
+/// A picture's set-up (its net, window and the scene prepared for its
+/// camera and footprint), kept by a caller that renders the same view
+/// many times: a progressive viewer's passes differ only in their
+/// samples, and preparing a large scene costs more than a pass.
+pub struct PreparedPicture {
+    picture: Picture,
+}
+
+impl std::fmt::Debug for PreparedPicture {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("PreparedPicture")
+            .field("width", &self.picture.width)
+            .field("height", &self.picture.height)
+            .finish_non_exhaustive()
+    }
+}
+
+/// The set-up of the picture of `scene` that `options` ask for (their
+/// net and resolution; the rest may change between renders of it).
+pub fn prepare_picture(
+    scene: &Scene,
+    options: &RenderOptions,
+) -> Result<PreparedPicture, RenderError> {
+    options.validate()?;
+    Ok(PreparedPicture {
+        picture: picture(scene, options)?,
+    })
+}
+
+/// [`render_region`] of a prepared picture, on the current rayon pool
+/// (the caller's, kept for many renders; `options.threads` is not used).
+/// `scene` and `options`' net and resolution must be those it was
+/// prepared with (the samples, their range, the seed, the exposure and
+/// the integrator may differ).
+pub fn render_prepared(
+    scene: &Scene,
+    prepared: &PreparedPicture,
+    options: &RenderOptions,
+    region: Option<Region>,
+    progress: &(dyn Fn(u32) + Sync),
+) -> Result<Rendered, RenderError> {
+    options.validate()?;
+    render_picture(scene, &prepared.picture, options, region, progress)
+}
+
+fn render_picture(
+    scene: &Scene,
+    picture: &Picture,
+    options: &RenderOptions,
+    region: Option<Region>,
+    progress: &(dyn Fn(u32) + Sync),
+) -> Result<Rendered, RenderError> {
     let Picture {
         net,
         window,
@@ -561,7 +621,8 @@ fn render_in_pool(
         pixel_net,
         prepared,
         ..
-    } = picture(scene, options)?;
+    } = picture;
+    let (net, window, width, height) = (*net, *window, *width, *height);
     let region = region.unwrap_or(Region {
         x: 0,
         y: 0,
@@ -579,7 +640,7 @@ fn render_in_pool(
     }
     let job = RenderJob {
         net,
-        pixel_net,
+        pixel_net: *pixel_net,
         window,
         width,
         height,
@@ -606,7 +667,7 @@ fn render_in_pool(
         lens: scene.settings.lens,
         integrator: integrator::build(
             options.integrator.unwrap_or(scene.settings.integrator),
-            &prepared,
+            prepared,
         ),
         background: prepared.background,
     };

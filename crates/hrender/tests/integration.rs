@@ -9,6 +9,7 @@ mod absorption;
 mod aov;
 mod area_lights;
 mod closed_mirrors;
+mod denoise;
 mod depth_of_field;
 mod far_isometries;
 mod geometry;

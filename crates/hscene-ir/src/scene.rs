@@ -50,6 +50,10 @@ pub struct Settings {
     pub lens: Option<Lens>,
     /// The space the scene is in (`space = NAME;`); `None`: H³.
     pub space: Option<crate::space::Space>,
+    /// Denoise the finished picture (`denoise = true;`, `render
+    /// --denoise`): Intel Open Image Denoise guided by the first hit's
+    /// albedo and normal, where the library is installed.
+    pub denoise: bool,
 }
 
 /// Fog: the radiance carried along a ray segment of hyperbolic length `s`

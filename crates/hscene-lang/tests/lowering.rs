@@ -290,6 +290,7 @@ fn appendix_a_compiles_with_one_warning() {
             sky: None,
             lens: None,
             space: None,
+            denoise: false,
         }
     );
     assert_eq!(scene.camera.eye, Point::ORIGIN);
@@ -565,6 +566,7 @@ fn empty_file_gets_the_documented_defaults() {
                 sky: None,
                 lens: None,
                 space: None,
+                denoise: false,
             }
         );
         assert_eq!(

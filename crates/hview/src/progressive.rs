@@ -6,7 +6,9 @@
 //! `N` passes the still picture is that render's (to float rounding of the
 //! average: within one 8-bit level).
 
-use hrender::{DisplayTransform, Exposure, RenderError, RenderOptions};
+use std::sync::Arc;
+
+use hrender::{DisplayTransform, Exposure, Levels8, PreparedPicture, RenderError, RenderOptions};
 use hscene_ir::{IntegratorKind, Net, Resolution, Scene};
 
 /// How the viewer renders.
@@ -26,6 +28,8 @@ pub struct ViewOptions {
     pub exposure: f64,
     /// Worker threads (`None`: all cores).
     pub threads: Option<usize>,
+    /// Denoise the converged picture (where the library is installed).
+    pub denoise: bool,
 }
 
 /// A picture to show: 0RGB pixels, row-major, at the view's resolution.
@@ -57,6 +61,16 @@ pub struct Progressive {
     sum: Vec<[f64; 3]>,
     passes: u32,
     coarse_shown: bool,
+    /// One worker pool for the view's whole life (made on the first
+    /// render): a pool per pass cost its threads' start every pass.
+    pool: Option<Arc<rayon::ThreadPool>>,
+    /// The full-resolution picture's set-up, kept across the passes of
+    /// one view (dropped by [`Progressive::restart`]).
+    prepared: Option<Arc<PreparedPicture>>,
+    /// The display transform's levels as a table (made once).
+    levels: Arc<Levels8>,
+    /// The converged picture, denoised when asked, shown from then on.
+    still: Option<Frame>,
 }
 
 impl Progressive {
@@ -67,6 +81,10 @@ impl Progressive {
             sum: Vec::new(),
             passes: 0,
             coarse_shown: false,
+            pool: None,
+            prepared: None,
+            levels: Arc::new(Levels8::new(DisplayTransform::default())),
+            still: None,
         }
     }
 
@@ -80,6 +98,31 @@ impl Progressive {
         self.sum.clear();
         self.passes = 0;
         self.coarse_shown = false;
+        self.prepared = None;
+        self.still = None;
+    }
+
+    /// The worker pool, made on first use.
+    fn pool(&mut self) -> Result<Arc<rayon::ThreadPool>, RenderError> {
+        if let Some(pool) = &self.pool {
+            return Ok(pool.clone());
+        }
+        let mut builder = rayon::ThreadPoolBuilder::new();
+        if let Some(n) = self.options.threads {
+            builder = builder.num_threads(n);
+        }
+        let pool = Arc::new(
+            builder
+                .build()
+                .map_err(|e| RenderError::Threads(e.to_string()))?,
+        );
+        self.pool = Some(pool.clone());
+        Ok(pool)
+    }
+
+    /// Linear pixels as 0RGB words, in parallel, through the level table.
+    fn display(&self, pool: &rayon::ThreadPool, pixels: &[[f32; 3]]) -> Vec<u32> {
+        pool.install(|| pack(&self.levels.to_rgb8_parallel(pixels)))
     }
 
     /// Samples per pixel so far.
@@ -115,13 +158,20 @@ impl Progressive {
             self.options.resolution.width(),
             self.options.resolution.height(),
         );
+        let pool = self.pool()?;
         if !self.coarse_shown && self.options.coarse > 1 {
             self.coarse_shown = true;
             let c = self.options.coarse;
             let small =
                 Resolution::new(w.div_ceil(c), h.div_ceil(c)).unwrap_or(self.options.resolution);
-            let image = hrender::render(scene, &self.render_options(small, 0), &|_| {})?.image;
-            let colours = pack(&DisplayTransform::default().to_rgb8(image.pixels()));
+            let options = self.render_options(small, 0);
+            let image = pool
+                .install(|| {
+                    let prepared = hrender::prepare_picture(scene, &options)?;
+                    hrender::render_prepared(scene, &prepared, &options, None, &|_| {})
+                })?
+                .image;
+            let colours = self.display(&pool, image.pixels());
             // Each coarse pixel covers a c x c block.
             let sw = small.width();
             let pixels = (0..h)
@@ -135,13 +185,22 @@ impl Progressive {
                 samples: 0,
             });
         }
+        if let Some(still) = &self.still {
+            return Ok(still.clone());
+        }
         if !self.is_converged() {
-            let image = hrender::render(
-                scene,
-                &self.render_options(self.options.resolution, self.passes),
-                &|_| {},
-            )?
-            .image;
+            let options = self.render_options(self.options.resolution, self.passes);
+            let prepared = match &self.prepared {
+                Some(p) => p.clone(),
+                None => {
+                    let p = Arc::new(pool.install(|| hrender::prepare_picture(scene, &options))?);
+                    self.prepared = Some(p.clone());
+                    p
+                }
+            };
+            let image = pool
+                .install(|| hrender::render_prepared(scene, &prepared, &options, None, &|_| {}))?
+                .image;
             if self.sum.len() != image.pixels().len() {
                 self.sum = vec![[0.0; 3]; image.pixels().len()];
             }
@@ -154,12 +213,50 @@ impl Progressive {
         }
         let n = f64::from(self.passes.max(1));
         let mean: Vec<[f32; 3]> = self.sum.iter().map(|s| s.map(|c| (c / n) as f32)).collect();
-        Ok(Frame {
+        let converged = self.is_converged();
+        let shown = if converged && (self.options.denoise || scene.settings.denoise) {
+            self.denoised(&pool, scene, &mean).unwrap_or(mean)
+        } else {
+            mean
+        };
+        let frame = Frame {
             width: w,
             height: h,
-            pixels: pack(&DisplayTransform::default().to_rgb8(&mean)),
+            pixels: self.display(&pool, &shown),
             samples: self.passes,
-        })
+        };
+        if converged {
+            self.still = Some(frame.clone());
+        }
+        Ok(frame)
+    }
+
+    /// The still picture `mean` denoised, or `None` where the library is
+    /// missing or fails (the view then shows it as it is: a viewer has no
+    /// reason to stop over a denoiser).
+    fn denoised(
+        &self,
+        pool: &rayon::ThreadPool,
+        scene: &Scene,
+        mean: &[[f32; 3]],
+    ) -> Option<Vec<[f32; 3]>> {
+        let denoiser = hrender::denoiser().ok()?;
+        let options = self.render_options(self.options.resolution, 0);
+        let (w, h) = (
+            self.options.resolution.width(),
+            self.options.resolution.height(),
+        );
+        if mean.len() != w as usize * h as usize {
+            return None;
+        }
+        let image = hrender::Image::from_pixels(w, h, mean.to_vec());
+        let guides = pool
+            .install(|| hrender::render_guides(scene, &options, None))
+            .ok()?;
+        let out = denoiser
+            .denoise(&image, &guides, self.options.threads)
+            .ok()?;
+        Some(out.pixels().to_vec())
     }
 }
 

@@ -44,6 +44,20 @@ pub enum ViewError {
     Scene(String),
 }
 
+impl ViewError {
+    /// A windowing error in words, without the source file and line
+    /// winit puts in front of an OS error's message ("os error at
+    /// /root/.cargo/registry/.../winit-0.30/src/...rs:42: neither
+    /// WAYLAND_DISPLAY nor ... is set"): that path says nothing to the user.
+    fn display(message: &str) -> ViewError {
+        let words = message
+            .strip_prefix("os error at ")
+            .and_then(|rest| rest.split_once(": ").map(|(_, words)| words))
+            .unwrap_or(message);
+        ViewError::Display(words.to_string())
+    }
+}
+
 struct Live {
     window: Rc<Window>,
     surface: softbuffer::Surface<Rc<Window>, Rc<Window>>,
@@ -292,7 +306,7 @@ impl ApplicationHandler for App<'_> {
         match opened {
             Ok(live) => self.live = Some(live),
             Err(e) => {
-                self.failure = Some(ViewError::Display(e));
+                self.failure = Some(ViewError::display(&e));
                 event_loop.exit();
             }
         }
@@ -395,7 +409,7 @@ pub fn run_window(
     let scene = base.clone();
     let pose = Pose::of(&scene.camera)
         .ok_or_else(|| ViewError::Scene("the scene's camera is degenerate".into()))?;
-    let event_loop = EventLoop::new().map_err(|e| ViewError::Display(e.to_string()))?;
+    let event_loop = EventLoop::new().map_err(|e| ViewError::display(&e.to_string()))?;
     let now = Instant::now();
     let mut app = App {
         source,
@@ -423,9 +437,30 @@ pub fn run_window(
     };
     event_loop
         .run_app(&mut app)
-        .map_err(|e| ViewError::Display(e.to_string()))?;
+        .map_err(|e| ViewError::display(&e.to_string()))?;
     match app.failure {
         Some(e) => Err(e),
         None => Ok(()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// winit's source path is dropped, the reason kept; other messages
+    /// are left as they are.
+    #[test]
+    fn display_errors_drop_the_source_path() {
+        let e = ViewError::display(
+            "os error at /root/.cargo/registry/src/winit-0.30.12/src/platform_impl/linux/mod.rs:771: neither WAYLAND_DISPLAY nor WAYLAND_SOCKET nor DISPLAY is set.",
+        );
+        let text = e.to_string();
+        assert!(!text.contains(".rs"), "{text}");
+        assert!(text.contains("neither WAYLAND_DISPLAY"), "{text}");
+        assert_eq!(
+            ViewError::display("the display refused").to_string(),
+            ViewError::Display("the display refused".into()).to_string()
+        );
     }
 }

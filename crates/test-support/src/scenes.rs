@@ -113,6 +113,7 @@ pub fn settings(net: Net, size: u32, window: f64) -> Settings {
         sky: None,
         lens: None,
         space: None,
+        denoise: false,
     }
 }
 

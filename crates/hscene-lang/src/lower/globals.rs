@@ -29,6 +29,7 @@ enum Global {
     Sky,
     Ambient,
     Integrator,
+    Denoise,
     Camera(CameraKey),
     View(ViewKey),
     Lens(LensKey),
@@ -79,6 +80,7 @@ const KEYS: &[GlobalKey] = &[
     key("sky", Global::Sky),
     key("ambient", Global::Ambient),
     key("integrator", Global::Integrator),
+    key("denoise", Global::Denoise),
     key("fog_color", Global::View(ViewKey::FogColor)),
     key("fog_distance", Global::View(ViewKey::FogDistance)),
     key("aperture", Global::Lens(LensKey::Aperture)),
@@ -128,6 +130,7 @@ pub(super) fn default_settings() -> Settings {
         sky: None,
         lens: None,
         space: None,
+        denoise: false,
     }
 }
 
@@ -233,6 +236,7 @@ impl Lowerer<'_> {
                 self.settings.ambient = self.rgb(value).unwrap_or(self.settings.ambient)
             }
             Global::Integrator => self.integrator(value),
+            Global::Denoise => self.denoise(value),
             Global::View(key) => self.view_global(key, value),
             Global::Lens(key) => self.lens_global(key, value),
             Global::Space(key) => self.space_global(key, value),
@@ -305,6 +309,36 @@ impl Lowerer<'_> {
                     format!("unknown integrator `{}`", name.text),
                 )
                 .with_help(help()),
+            ),
+        }
+    }
+
+    /// `denoise = true|false`.
+    fn denoise(&mut self, value: &Value) {
+        let found = match value {
+            Value::Ident(name) => match name.text.as_str() {
+                "true" => Some(true),
+                "false" => Some(false),
+                _ => None,
+            },
+            _ => None,
+        };
+        match found {
+            Some(on) => self.settings.denoise = on,
+            None => self.report(
+                Diagnostic::new(
+                    Code::InvalidValue,
+                    value.span(),
+                    match value {
+                        Value::Ident(name) => {
+                            format!("`denoise` is `true` or `false`, not `{}`", name.text)
+                        }
+                        _ => format!("`denoise` is `true` or `false`, not {}", value.describe()),
+                    },
+                )
+                .with_help(
+                    "write `denoise = true;` to denoise the picture with Intel Open Image Denoise (path-traced pictures gain most)",
+                ),
             ),
         }
     }
