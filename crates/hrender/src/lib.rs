@@ -53,6 +53,7 @@ mod unfinished;
 mod video;
 
 use std::collections::HashMap;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use hgeom::{Isometry, Ray};
 use hscene_ir::view::{CanonicalFrame, FovError};
@@ -240,6 +241,21 @@ pub fn render_region(
     region: Option<Region>,
     progress: &(dyn Fn(u32) + Sync),
 ) -> Result<Rendered, RenderError> {
+    render_region_cancellable(scene, options, region, progress, &AtomicBool::new(false))
+}
+
+/// [`render_region`], stopped early when `cancel` becomes true (set from
+/// another thread: the Python binding sets it on Ctrl-C, since a process
+/// that embeds the renderer cannot simply exit as the CLI does). Rows not
+/// yet begun are skipped, so a render stops within about one row's time;
+/// the result is then [`RenderError::Cancelled`], never a partial image.
+pub fn render_region_cancellable(
+    scene: &Scene,
+    options: &RenderOptions,
+    region: Option<Region>,
+    progress: &(dyn Fn(u32) + Sync),
+    cancel: &AtomicBool,
+) -> Result<Rendered, RenderError> {
     options.validate()?;
     let pool = {
         let mut b = rayon::ThreadPoolBuilder::new();
@@ -248,7 +264,7 @@ pub fn render_region(
         }
         b.build().map_err(|e| RenderError::Threads(e.to_string()))?
     };
-    pool.install(|| render_in_pool(scene, options, region, progress))
+    pool.install(|| render_in_pool(scene, options, region, progress, cancel))
 }
 
 /// One render: everything a row of pixels needs, shared by all rows.
@@ -551,6 +567,7 @@ fn render_in_pool(
     options: &RenderOptions,
     region: Option<Region>,
     progress: &(dyn Fn(u32) + Sync),
+    cancel: &AtomicBool,
 ) -> Result<Rendered, RenderError> {
     let Picture {
         net,
@@ -630,6 +647,9 @@ fn render_in_pool(
         .zip(region.y..region.y + region.height)
         .map(|(out, j)| {
             let mut stats = TraceStats::default();
+            if cancel.load(Ordering::Relaxed) {
+                return (RowStats::default(), stats);
+            }
             let row = job.row(j, columns.clone(), out, &mut stats);
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(n);
@@ -639,6 +659,9 @@ fn render_in_pool(
             || (RowStats::default(), TraceStats::default()),
             |(fa, sa), (fb, sb)| (fa.merge(fb), sa.merge(sb)),
         );
+    if cancel.load(Ordering::Relaxed) {
+        return Err(RenderError::Cancelled);
+    }
     let stats = RenderStats {
         rays: traced.rays,
         cut_trees: traced.cut_trees,
