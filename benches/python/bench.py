@@ -26,8 +26,8 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 SCENES = [
-    ("scenes/thesis-appendix-a.hsc", "600x600"),
-    ("scenes/honeycomb-4-3-5.hsc", "300x300"),
+    ("scenes/thesis-appendix-a.hsc", "1200x1200"),
+    ("scenes/honeycomb-4-3-5.hsc", "400x400"),
 ]
 
 PY_CHILD = r"""

@@ -246,9 +246,10 @@ pub fn render_region(
 
 /// [`render_region`], stopped early when `cancel` becomes true (set from
 /// another thread: the Python binding sets it on Ctrl-C, since a process
-/// that embeds the renderer cannot simply exit as the CLI does). Rows not
-/// yet begun are skipped, so a render stops within about one row's time;
-/// the result is then [`RenderError::Cancelled`], never a partial image.
+/// that embeds the renderer cannot simply exit as the CLI does). Each
+/// worker looks at it before every pixel, so a render stops within about
+/// one pixel's time; the result is then [`RenderError::Cancelled`], never
+/// a partial image.
 pub fn render_region_cancellable(
     scene: &Scene,
     options: &RenderOptions,
@@ -285,6 +286,9 @@ struct RenderJob<'a> {
     background: Rgb,
     /// Depth of field: each sample starts on the lens (`hscene_ir::Lens`).
     lens: Option<hscene_ir::Lens>,
+    /// Set to stop the render: looked at before each pixel, since one row
+    /// of a heavy picture can take seconds.
+    cancel: &'a AtomicBool,
 }
 
 impl RenderJob<'_> {
@@ -326,6 +330,9 @@ impl RenderJob<'_> {
         let mut nodes = NodeCache::default();
         let mut row = RowStats::default();
         for (i, pixel) in columns.zip(out) {
+            if self.cancel.load(Ordering::Relaxed) {
+                break;
+            }
             let mut sum = Rgb::default();
             let mut failed = false;
             let mut noise = PixelNoise::default();
@@ -625,6 +632,7 @@ fn render_in_pool(
             &prepared,
         ),
         background: prepared.background,
+        cancel,
     };
 
     let done = std::sync::atomic::AtomicU32::new(0);

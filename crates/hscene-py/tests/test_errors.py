@@ -30,7 +30,7 @@ def test_errors_raise_scene_error_with_the_located_report(hscene_bin, tmp_path):
     assert r.returncode != 0
     # The same report, but for the file name each was given.
     assert message == r.stdout.replace(str(path), "broken.hsc").rstrip()
-    assert "broken.hsc:3" in message or "broken.hsc:3:" in message or "[broken.hsc:3:" in message
+    assert "[broken.hsc:3:30]" in message
     (first, *_) = caught.value.diagnostics
     assert first.severity == "error"
     assert first.line == 3 and first.column > 1
@@ -42,7 +42,8 @@ def test_warnings_go_through_warnings_warn():
     text = """Globals { resolution = (16, 16); }
 Points { (0.1, 0.1, 0.1); }
 Lights { (0.1, 0.2, -0.1), (1, 1, 1), (0.5, 0.5, 0.5); }
-Objects { Sphere (0, 0, 0.4), 0.1; }
+BRDFs { red: diffuse = (0.9, 0.2, 0.15); }
+Objects { Sphere (0, 0, 0.4), 0.1, #red; }
 """
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")

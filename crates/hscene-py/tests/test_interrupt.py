@@ -9,7 +9,7 @@ CHILD = r"""
 import sys, time
 import hscene
 scene = hscene.Scene.from_str('''
-Globals { resolution = (2000, 2000); samples = 64; to = (0, 0, 0.3); recursion_depth = 8; }
+Globals { resolution = (2000, 2000); samples = 64; to = (0, 0, 0.3); fov = 90; recursion_depth = 8; }
 BRDFs { glass: diffuse = (0.1, 0.2, 0.3), trans = 0.8, refraction = 1.4; }
 Lights { (0.1, 0.2, -0.1), (1, 1, 1), (0.5, 0.5, 0.5); }
 Objects { Sphere (0, 0, 0.4), 0.3, #glass; Sphere (0.2, 0, 0.5), 0.2, #glass; }
