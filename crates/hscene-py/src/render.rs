@@ -8,7 +8,7 @@
 //! the GIL released; the calling thread waits in slices of
 //! [`POLL`], taking the GIL between them to ask `check_signals`. On an
 //! interrupt it sets the render's cancel flag (`hrender::
-//! render_region_cancellable`), waits for the workers to finish the rows
+//! render_region_cancellable`), waits for the workers to finish the pixels
 //! they are on, and raises the `KeyboardInterrupt`.
 
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -192,7 +192,7 @@ fn interruptible<T: Send + 'static>(
             Err(RecvTimeoutError::Timeout) => {
                 if let Err(interrupt) = py.check_signals() {
                     cancel.store(true, Ordering::Relaxed);
-                    // The workers stop after their current rows: waiting
+                    // The workers stop after their current pixels: waiting
                     // for them keeps the cores free for what comes next.
                     let _ = py.detach(|| wait(None));
                     return Err(interrupt);
