@@ -114,9 +114,9 @@ pub fn warn(py: Python<'_>, name: &str, source: &str, compiled: &Compiled) -> Py
             continue;
         }
         let line = hscene_lang::report::short_line(name, &index, d);
-        let message = std::ffi::CString::new(line.trim_end().replace('\0', " "))
-            .unwrap_or_default();
-        PyErr::warn(py, &category, &message, 2)?;
+        let message =
+            std::ffi::CString::new(line.trim_end().replace('\0', " ")).unwrap_or_default();
+        PyErr::warn(py, &category, &message, 1)?;
     }
     Ok(())
 }

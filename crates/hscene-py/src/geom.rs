@@ -180,7 +180,13 @@ impl Isometry {
         // that onto the line.
         let to_line = line.0.to_line();
         let along = HPoint::at_distance_from_origin(DVec3::Z, distance.abs())
-            .map(|p| if distance < 0.0 { HPoint::from_coords(-p.coords()) } else { Ok(p) })
+            .map(|p| {
+                if distance < 0.0 {
+                    HPoint::from_coords(-p.coords())
+                } else {
+                    Ok(p)
+                }
+            })
             .and_then(|p| p)
             .map_err(geom_error)?;
         let t = HIsometry::transvection_from_origin(along);
@@ -230,7 +236,11 @@ impl Isometry {
 
     /// The image of a point; or of N points, an N × 3 array of ball
     /// coordinates, as an N × 3 array.
-    fn apply<'py>(&self, py: Python<'py>, points: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    fn apply<'py>(
+        &self,
+        py: Python<'py>,
+        points: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
         if let Ok(p) = points.cast::<Point>() {
             let image = self.0.checked_apply(&p.get().0).map_err(geom_error)?;
             return Ok(Bound::new(py, Point(image))?.into_any());
@@ -253,7 +263,11 @@ impl Isometry {
     }
 
     /// `f @ g` is `f` after `g`; `f @ p` is `f` applied to the point `p`.
-    fn __matmul__<'py>(&self, py: Python<'py>, other: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    fn __matmul__<'py>(
+        &self,
+        py: Python<'py>,
+        other: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
         if let Ok(g) = other.cast::<Isometry>() {
             return Ok(Bound::new(py, Isometry(self.0.compose(&g.get().0)))?.into_any());
         }
@@ -261,11 +275,19 @@ impl Isometry {
     }
 
     /// As `@`.
-    fn __mul__<'py>(&self, py: Python<'py>, other: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    fn __mul__<'py>(
+        &self,
+        py: Python<'py>,
+        other: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
         self.__matmul__(py, other)
     }
 
-    fn __call__<'py>(&self, py: Python<'py>, points: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    fn __call__<'py>(
+        &self,
+        py: Python<'py>,
+        points: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
         self.apply(py, points)
     }
 
@@ -295,7 +317,10 @@ impl Line {
 
     /// The line through `point` with the ball direction `direction` there.
     #[staticmethod]
-    fn from_point_direction(point: &Bound<'_, PyAny>, direction: &Bound<'_, PyAny>) -> PyResult<Line> {
+    fn from_point_direction(
+        point: &Bound<'_, PyAny>,
+        direction: &Bound<'_, PyAny>,
+    ) -> PyResult<Line> {
         let p = point_arg(point, "point")?;
         let d = arrays::vec3(direction, "direction")?;
         HLine::from_point_direction(&p, d)
@@ -415,7 +440,11 @@ fn ball_rows(value: &Bound<'_, PyAny>, what: &str) -> PyResult<(usize, Vec<f64>)
 /// GIL). A row that is not finite or not inside the ball is a ValueError
 /// naming it.
 #[pyfunction]
-fn distance<'py>(py: Python<'py>, a: &Bound<'py, PyAny>, b: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+fn distance<'py>(
+    py: Python<'py>,
+    a: &Bound<'py, PyAny>,
+    b: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyAny>> {
     if let (Ok(p), Ok(q)) = (a.cast::<Point>(), b.cast::<Point>()) {
         return Ok(p.get().0.distance(q.get().0).into_pyobject(py)?.into_any());
     }
@@ -493,8 +522,7 @@ impl Honeycomb {
     /// hyperbolic ones is a ValueError saying what it is.
     #[new]
     fn new(p: u32, q: u32, r: u32) -> PyResult<Honeycomb> {
-        let symbol =
-            Schlafli::new(p, q, r).map_err(|e| PyValueError::new_err(e.to_string()))?;
+        let symbol = Schlafli::new(p, q, r).map_err(|e| PyValueError::new_err(e.to_string()))?;
         Ok(Honeycomb {
             symbol,
             simplex: hgeom::CoxeterSimplex::new(symbol),
@@ -591,24 +619,28 @@ impl Honeycomb {
                     .any(|z| (to_ball(*z) - to_ball(y)).length() < 1e-9)
                 {
                     if found.len() == MAX_CELL_VERTICES {
-                        return Err(PyValueError::new_err("too many vertices: not a finite cell"));
+                        return Err(PyValueError::new_err(
+                            "too many vertices: not a finite cell",
+                        ));
                     }
                     found.push(y);
                 }
             }
             k += 1;
         }
-        let data: Vec<f64> = found
-            .iter()
-            .flat_map(|x| to_ball(*x).to_array())
-            .collect();
+        let data: Vec<f64> = found.iter().flat_map(|x| to_ball(*x).to_array()).collect();
         Array2::from_shape_vec((found.len(), 3), data)
             .map(|a| a.into_pyarray(py))
             .map_err(|e| PyValueError::new_err(e.to_string()))
     }
 
     fn __repr__(&self) -> String {
-        format!("Honeycomb({}, {}, {})", self.symbol.p(), self.symbol.q(), self.symbol.r())
+        format!(
+            "Honeycomb({}, {}, {})",
+            self.symbol.p(),
+            self.symbol.q(),
+            self.symbol.r()
+        )
     }
 }
 

@@ -121,8 +121,8 @@ pub fn write(
 /// The picture as PNG bytes, for Jupyter: written through hrender's
 /// encoder to a temporary file (the one encoder `hscene render` uses).
 pub fn png_bytes<'py>(py: Python<'py>, image: &Image) -> PyResult<Bound<'py, PyBytes>> {
-    let dir = tempfile::tempdir()
-        .map_err(|e| pyo3::exceptions::PyOSError::new_err(e.to_string()))?;
+    let dir =
+        tempfile::tempdir().map_err(|e| pyo3::exceptions::PyOSError::new_err(e.to_string()))?;
     let path = dir.path().join("picture.png");
     write(py, image, None, path.clone(), Some(8), 1)?;
     let bytes =
@@ -183,8 +183,21 @@ impl Picture {
     /// render` does, atomically; `depth` 8, 16 or 32 bits (default: the
     /// format's own).
     #[pyo3(signature = (path, depth=None, png_level=3))]
-    fn save(&self, py: Python<'_>, path: PathBuf, depth: Option<u32>, png_level: u8) -> PyResult<()> {
-        write(py, &self.image, self.layers.as_ref(), path, depth, png_level)
+    fn save(
+        &self,
+        py: Python<'_>,
+        path: PathBuf,
+        depth: Option<u32>,
+        png_level: u8,
+    ) -> PyResult<()> {
+        write(
+            py,
+            &self.image,
+            self.layers.as_ref(),
+            path,
+            depth,
+            png_level,
+        )
     }
 
     fn _repr_png_<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyBytes>> {

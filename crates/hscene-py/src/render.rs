@@ -91,20 +91,18 @@ impl Overrides {
                 ))
             })?),
         };
-        let net = match self.net {
-            None => None,
-            Some(n) => Some(
-                u64::try_from(n)
-                    .ok()
-                    .and_then(Net::from_index)
-                    .ok_or_else(|| {
+        let net =
+            match self.net {
+                None => None,
+                Some(n) => Some(u64::try_from(n).ok().and_then(Net::from_index).ok_or_else(
+                    || {
                         PyValueError::new_err(format!(
                             "net must be from 0 to {}, not {n}",
                             Net::ALL.len() - 1
                         ))
-                    })?,
-            ),
-        };
+                    },
+                )?),
+            };
         let exposure = match &self.exposure {
             None => Exposure::Stops(0.0),
             Some(ExposureArg::Stops(ev)) => Exposure::Stops(*ev),

@@ -74,7 +74,8 @@ impl Scene {
         space: Option<Arc<[DMat4]>>,
         frame: u32,
     ) -> PyResult<Scene> {
-        let (compiled, scene) = compile(py, &source, &name, base_dir.clone(), space.clone(), frame)?;
+        let (compiled, scene) =
+            compile(py, &source, &name, base_dir.clone(), space.clone(), frame)?;
         let diagnostics = diagnostics::list(&source, &compiled);
         Ok(Scene {
             scene: Arc::new(scene),
@@ -183,8 +184,8 @@ impl Scene {
         space: Option<PyRef<'_, Space>>,
         frame: u32,
     ) -> PyResult<Scene> {
-        let bytes = hscene_ir::bounded_read::read_regular_file(&path, MAX_SCENE_BYTES)
-            .map_err(|e| {
+        let bytes =
+            hscene_ir::bounded_read::read_regular_file(&path, MAX_SCENE_BYTES).map_err(|e| {
                 let why = match e {
                     BoundedReadError::NotAFile => "not a regular file".to_string(),
                     BoundedReadError::TooLarge(_) => {
@@ -198,7 +199,14 @@ impl Scene {
             .map_err(|e| PyValueError::new_err(format!("cannot read {}: {e}", path.display())))?;
         let base_dir = path.parent().map(Path::to_path_buf);
         let name = path.display().to_string();
-        Scene::new(py, source, name, base_dir, space.map(|s| s.pairings()), frame)
+        Scene::new(
+            py,
+            source,
+            name,
+            base_dir,
+            space.map(|s| s.pairings()),
+            frame,
+        )
     }
 
     /// The scene in `text`; `name` is the file name its messages give,
@@ -274,7 +282,9 @@ impl Scene {
         threads: Option<i64>,
     ) -> PyResult<Bound<'py, PyAny>> {
         let want_layers = aov.is_some();
-        let o = overrides(resolution, samples, integrator, net, exposure, seed, threads);
+        let o = overrides(
+            resolution, samples, integrator, net, exposure, seed, threads,
+        );
         let p = self.picture_with(py, o, frame, aov)?;
         let pixels = if display {
             picture::display_array(py, &p.image)?.into_any()
@@ -309,7 +319,9 @@ impl Scene {
         aov: Option<Vec<String>>,
         threads: Option<i64>,
     ) -> PyResult<Picture> {
-        let o = overrides(resolution, samples, integrator, net, exposure, seed, threads);
+        let o = overrides(
+            resolution, samples, integrator, net, exposure, seed, threads,
+        );
         self.picture_with(py, o, frame, aov)
     }
 
@@ -337,7 +349,9 @@ impl Scene {
     ) -> PyResult<()> {
         // A bad output is refused before the render, as the CLI does.
         picture::sample_depth(depth, &path)?;
-        let o = overrides(resolution, samples, integrator, net, exposure, seed, threads);
+        let o = overrides(
+            resolution, samples, integrator, net, exposure, seed, threads,
+        );
         let p = self.picture_with(py, o, frame, aov)?;
         picture::write(py, &p.image, p.layers.as_ref(), path, depth, png_level)
     }

@@ -57,7 +57,7 @@ impl Space {
                      the pairings are not those of that manifold, or not accurate enough"
                 ))
                 .unwrap_or_default();
-                PyErr::warn(py, &py.get_type::<SceneWarning>(), &message, 2)?;
+                PyErr::warn(py, &py.get_type::<SceneWarning>(), &message, 1)?;
             }
         }
         Ok(Space {
@@ -148,12 +148,15 @@ impl Space {
             }
         }
         let Some(domain) = domain else {
-            return Err(last_error.unwrap_or_else(|| {
-                PyValueError::new_err("SnapPy built no Dirichlet domain")
-            }));
+            return Err(last_error
+                .unwrap_or_else(|| PyValueError::new_err("SnapPy built no Dirichlet domain")));
         };
         let mut text = String::from("{\"pairings\": [");
-        for (k, g) in domain.call_method0("pairing_matrices")?.try_iter()?.enumerate() {
+        for (k, g) in domain
+            .call_method0("pairing_matrices")?
+            .try_iter()?
+            .enumerate()
+        {
             if k > 0 {
                 text.push(',');
             }
@@ -239,7 +242,10 @@ impl Space {
 
     fn __repr__(&self) -> String {
         match self.space.volume() {
-            Some(v) => format!("<hscene.Space {} faces, volume {v:.6}>", self.pairings.len()),
+            Some(v) => format!(
+                "<hscene.Space {} faces, volume {v:.6}>",
+                self.pairings.len()
+            ),
             None => format!("<hscene.Space {} faces>", self.pairings.len()),
         }
     }

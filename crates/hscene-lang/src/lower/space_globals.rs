@@ -409,7 +409,6 @@ impl Lowerer<'_> {
     }
 }
 
-
 /// What to try after a refusal: where the error is one of precision
 /// (a test missed by a measured error), more digits help; a gluing that is
 /// wrong is not helped by them.
