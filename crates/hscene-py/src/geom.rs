@@ -127,7 +127,7 @@ impl Point {
 
 /// An orientation-preserving or -reversing isometry of H³.
 #[pyclass(module = "hscene.geom", frozen)]
-#[derive(Clone, Copy)]
+#[derive(Clone)]
 pub struct Isometry(HIsometry);
 
 #[pymethods]
