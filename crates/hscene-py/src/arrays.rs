@@ -12,12 +12,19 @@ use pyo3::prelude::*;
 pub fn floats(value: &Bound<'_, PyAny>, what: &str) -> PyResult<(Vec<usize>, Vec<f64>)> {
     let py = value.py();
     let np = py.import("numpy")?;
+    // C order, so the numbers are one slice: copied at memory speed (an
+    // element-wise walk of a dynamic-rank view cost more than the
+    // distances computed from it).
     let array = np
-        .call_method1("asarray", (value, "float64"))
+        .call_method1("ascontiguousarray", (value, "float64"))
         .map_err(|e| PyValueError::new_err(format!("{what}: not an array of numbers ({e})")))?;
     let array: PyReadonlyArrayDyn<'_, f64> = array.extract()?;
-    let shape = array.as_array().shape().to_vec();
-    let data: Vec<f64> = array.as_array().iter().copied().collect();
+    let view = array.as_array();
+    let shape = view.shape().to_vec();
+    let data: Vec<f64> = match view.as_slice() {
+        Some(slice) => slice.to_vec(),
+        None => view.iter().copied().collect(),
+    };
     Ok((shape, data))
 }
 
