@@ -20,7 +20,7 @@ def hscene_bin():
     target/debug/hscene (build one with `cargo build --release`)."""
     given = os.environ.get("HSCENE_BIN")
     if given:
-        return given
+        return os.path.abspath(given)
     built = [ROOT / "target" / p / "hscene" for p in ("release", "debug")]
     built = [b for b in built if b.exists()]
     if not built:
