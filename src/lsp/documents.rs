@@ -64,6 +64,7 @@ impl Documents {
                 base_dir: file_path(&uri).and_then(|p| p.parent().map(PathBuf::from)),
                 frame: 0,
                 files: files.clone(),
+                space: None,
             };
             (
                 hscene_lang::compile_with(&text, &options),

@@ -144,4 +144,7 @@ pub enum RenderError {
         /// Frames ffprobe counts in the file.
         counted: u64,
     },
+    /// The caller asked the render to stop (Ctrl-C in Python): no image.
+    #[error("the render was cancelled")]
+    Cancelled,
 }

@@ -55,6 +55,7 @@ mod unfinished;
 mod video;
 
 use std::collections::HashMap;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use hgeom::{Isometry, Ray};
 use hscene_ir::view::{CanonicalFrame, FovError};
@@ -245,6 +246,22 @@ pub fn render_region(
     region: Option<Region>,
     progress: &(dyn Fn(u32) + Sync),
 ) -> Result<Rendered, RenderError> {
+    render_region_cancellable(scene, options, region, progress, &AtomicBool::new(false))
+}
+
+/// [`render_region`], stopped early when `cancel` becomes true (set from
+/// another thread: the Python binding sets it on Ctrl-C, since a process
+/// that embeds the renderer cannot simply exit as the CLI does). Each
+/// worker looks at it before every pixel, so a render stops within about
+/// one pixel's time; the result is then [`RenderError::Cancelled`], never
+/// a partial image.
+pub fn render_region_cancellable(
+    scene: &Scene,
+    options: &RenderOptions,
+    region: Option<Region>,
+    progress: &(dyn Fn(u32) + Sync),
+    cancel: &AtomicBool,
+) -> Result<Rendered, RenderError> {
     options.validate()?;
     let pool = {
         let mut b = rayon::ThreadPoolBuilder::new();
@@ -253,7 +270,7 @@ pub fn render_region(
         }
         b.build().map_err(|e| RenderError::Threads(e.to_string()))?
     };
-    pool.install(|| render_in_pool(scene, options, region, progress))
+    pool.install(|| render_in_pool(scene, options, region, progress, cancel))
 }
 
 /// One render: everything a row of pixels needs, shared by all rows.
@@ -274,6 +291,9 @@ struct RenderJob<'a> {
     background: Rgb,
     /// Depth of field: each sample starts on the lens (`hscene_ir::Lens`).
     lens: Option<hscene_ir::Lens>,
+    /// Set to stop the render: looked at before each pixel, since one row
+    /// of a heavy picture can take seconds.
+    cancel: &'a AtomicBool,
 }
 
 impl RenderJob<'_> {
@@ -315,6 +335,9 @@ impl RenderJob<'_> {
         let mut nodes = NodeCache::default();
         let mut row = RowStats::default();
         for (i, pixel) in columns.zip(out) {
+            if self.cancel.load(Ordering::Relaxed) {
+                break;
+            }
             let mut sum = Rgb::default();
             let mut failed = false;
             let mut noise = PixelNoise::default();
@@ -556,6 +579,7 @@ fn render_in_pool(
     options: &RenderOptions,
     region: Option<Region>,
     progress: &(dyn Fn(u32) + Sync),
+    cancel: &AtomicBool,
 ) -> Result<Rendered, RenderError> {
     let picture = picture(scene, options)?;
     render_picture(scene, &picture, options, region, progress)
@@ -670,6 +694,7 @@ fn render_picture(
             prepared,
         ),
         background: prepared.background,
+        cancel,
     };
 
     let done = std::sync::atomic::AtomicU32::new(0);
@@ -692,6 +717,9 @@ fn render_picture(
         .zip(region.y..region.y + region.height)
         .map(|(out, j)| {
             let mut stats = TraceStats::default();
+            if cancel.load(Ordering::Relaxed) {
+                return (RowStats::default(), stats);
+            }
             let row = job.row(j, columns.clone(), out, &mut stats);
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(n);
@@ -701,6 +729,9 @@ fn render_picture(
             || (RowStats::default(), TraceStats::default()),
             |(fa, sa), (fb, sb)| (fa.merge(fb), sa.merge(sb)),
         );
+    if cancel.load(Ordering::Relaxed) {
+        return Err(RenderError::Cancelled);
+    }
     let stats = RenderStats {
         rays: traced.rays,
         cut_trees: traced.cut_trees,

@@ -27,6 +27,7 @@ pub mod mesh_file;
 mod numbers;
 mod options;
 mod parser;
+pub mod report;
 pub mod source;
 pub mod space_file;
 pub mod symbols;

@@ -173,6 +173,9 @@ pub(crate) fn lower(
         integrator_span: None,
         material_ref_failed: file.incomplete,
     };
+    if let Some(pairings) = &options.space {
+        lw.space.give(std::sync::Arc::clone(pairings));
+    }
     lw.check_section_names(file, source);
     for name in SECTIONS {
         // A misspelt section is lowered as the one it was meant to be, so its

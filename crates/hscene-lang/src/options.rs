@@ -14,4 +14,11 @@ pub struct Options {
     /// The meshes and images read, shared with earlier compiles of the same
     /// scene (see [`FileCache`]); the default is a fresh one.
     pub files: crate::file_cache::FileCache,
+    /// The scene's space given by the caller instead of by `space = ...`
+    /// in the text (the Python binding's `Scene.from_str(text,
+    /// space=...)`): the face pairings of a Dirichlet domain, Lorentz
+    /// matrices with the time coordinate last, already checked as a gluing
+    /// by [`hgeom::QuotientSpace::from_pairings`]. A text that names a
+    /// space as well is refused (HSC0403 at its `space`).
+    pub space: Option<std::sync::Arc<[hgeom::glam::DMat4]>>,
 }

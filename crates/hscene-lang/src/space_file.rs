@@ -90,6 +90,11 @@ impl<'de> Deserialize<'de> for Entry {
     }
 }
 
+/// How far (relative) the domain's volume may be from the file's
+/// `"volume"` before a warning: SnapPy's high-precision domains agree to
+/// 1e-13.
+pub const VOLUME_TOLERANCE: f64 = 1e-9;
+
 /// The longest decimal string an entry may be (ManifoldHP's have 66).
 pub const MAX_DIGITS: usize = 1024;
 

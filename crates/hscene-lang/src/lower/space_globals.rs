@@ -16,7 +16,7 @@ use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::{
     DEFAULT_LIGHT_REACH, DomainEdges, MAX_LIGHT_REACH, MAX_SPACE_LIGHTS, MaterialId, Space,
 };
-use crate::space_file::{self, SpaceFileError};
+use crate::space_file::{self, SpaceFileError, VOLUME_TOLERANCE};
 use crate::syntax::Value;
 
 /// The space keys as given, settled once every object and light is known.
@@ -31,6 +31,19 @@ pub(super) struct SpaceParts {
     /// manifold, an unknown name): `domain` and `light_reach` are then not
     /// "without space", and no HSC1007 says they are.
     refused: bool,
+    /// The space came from the caller (`Options::space`), not the text.
+    given: bool,
+}
+
+impl SpaceParts {
+    /// The caller's space ([`crate::Options::space`]): a domain of
+    /// pairings, placed at the start of the file for the few messages
+    /// that point at the space.
+    pub(super) fn give(&mut self, pairings: Arc<[DMat4]>) {
+        self.pairings = Some(pairings);
+        self.kind = Some((SpaceKind::Pairings, Span::new(0, 0)));
+        self.given = true;
+    }
 }
 
 /// The space keys.
@@ -125,6 +138,17 @@ impl Lowerer<'_> {
     }
 
     fn space_name(&mut self, value: &Value) {
+        if self.space.given {
+            self.report(
+                Diagnostic::new(
+                    Code::InvalidValue,
+                    value.span(),
+                    "this scene's space is given by its caller, and so cannot be named here too",
+                )
+                .with_help("remove `space = ...`, or give no space to Scene.from_str"),
+            );
+            return;
+        }
         // Cleared below once the space is known.
         self.space.refused = true;
         let kind = match value {
@@ -384,11 +408,6 @@ impl Lowerer<'_> {
         Some(data.pairings.into())
     }
 }
-
-/// How far (relative) the domain's volume may be from the file's
-/// `"volume"` before a warning: SnapPy's high-precision domains agree to
-/// 1e-13.
-const VOLUME_TOLERANCE: f64 = 1e-9;
 
 /// What to try after a refusal: where the error is one of precision
 /// (a test missed by a measured error), more digits help; a gluing that is
