@@ -582,7 +582,7 @@ fn render_in_pool(
     cancel: &AtomicBool,
 ) -> Result<Rendered, RenderError> {
     let picture = picture(scene, options)?;
-    render_picture(scene, &picture, options, region, progress)
+    render_picture(scene, &picture, options, region, progress, cancel)
 }
 
 /// A picture's set-up (its net, window and the scene prepared for its
@@ -627,7 +627,10 @@ pub fn render_prepared(
     progress: &(dyn Fn(u32) + Sync),
 ) -> Result<Rendered, RenderError> {
     options.validate()?;
-    render_picture(scene, &prepared.picture, options, region, progress)
+    // Not cancellable: a viewer's pass is short, and the next one is
+    // started by the same thread that would cancel it.
+    let never = AtomicBool::new(false);
+    render_picture(scene, &prepared.picture, options, region, progress, &never)
 }
 
 fn render_picture(
@@ -636,6 +639,7 @@ fn render_picture(
     options: &RenderOptions,
     region: Option<Region>,
     progress: &(dyn Fn(u32) + Sync),
+    cancel: &AtomicBool,
 ) -> Result<Rendered, RenderError> {
     let Picture {
         net,

@@ -111,25 +111,3 @@ pub fn time_first(time: &str) -> PyResult<bool> {
         ))),
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Time first (SnapPy) and time last (hgeom) are the same matrix with
-    /// its rows and columns turned, both ways.
-    #[test]
-    fn time_first_rows_round_trip() {
-        let rows: Vec<f64> = (0..16).map(f64::from).collect();
-        for time_first in [true, false] {
-            let m = mat4_from_rows(&rows, "m", time_first).expect("finite");
-            let back: Vec<f64> = mat4_rows(&m, time_first).concat();
-            assert_eq!(back, rows);
-        }
-        let m = mat4_from_rows(&rows, "m", true).expect("finite");
-        // Row 0, column 0 of the time-first matrix is time-time: w, w.
-        assert_eq!(m.w_axis.w, 0.0);
-        assert_eq!(m.x_axis.x, 5.0);
-        assert!(mat4_from_rows(&[f64::NAN; 16], "m", false).is_err());
-    }
-}
