@@ -17,15 +17,6 @@ use crate::scene::T_MIN;
 use crate::spherical_triangle::SphericalTriangle;
 use crate::trace_stats::TraceStats;
 
-/// The unit normal `m` of the h-plane through a geodesic triangle (`<x, m>
-/// = 0` on it), or `None` for a degenerate one. Formed from the edge
-/// differences, which keeps the cross product well conditioned.
-pub(super) fn plane_normal(v: [DVec4; 3]) -> Option<DVec4> {
-    let m = lorentz::orthogonal_complement(v[0], v[1] - v[0], v[2] - v[0]);
-    let len = lorentz::norm(m);
-    (len > 0.0 && len.is_finite()).then(|| m / len)
-}
-
 /// The arc length at which the geodesic from `p` with unit tangent `wi`
 /// meets the h-plane of unit normal `m`: on `cosh t p + sinh t wi`,
 /// `<x, m> = 0` gives `tanh t = -<p, m> / <wi, m>` exactly. With it, a

@@ -26,7 +26,6 @@ use hgeom::{HSphere, Ray};
 use hscene_ir::Rgb;
 
 use super::Integrator;
-use super::next_event::plane_normal;
 use crate::absorption::{absorbed, sheet_filter};
 use crate::bsdf::Bsdf;
 use crate::light_select::{LightSelector, LightUnit};
@@ -422,4 +421,13 @@ impl PathTracer<'_> {
             None => beta,
         }
     }
+}
+
+/// The unit normal `m` of the h-plane through a geodesic triangle (`<x, m>
+/// = 0` on it), or `None` for a degenerate one. Formed from the edge
+/// differences, which keeps the cross product well conditioned.
+pub(super) fn plane_normal(v: [DVec4; 3]) -> Option<DVec4> {
+    let m = lorentz::orthogonal_complement(v[0], v[1] - v[0], v[2] - v[0]);
+    let len = lorentz::norm(m);
+    (len > 0.0 && len.is_finite()).then(|| m / len)
 }
