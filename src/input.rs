@@ -78,6 +78,9 @@ fn read_bounded(input: impl Read) -> Result<String, InputError> {
     if bytes.len() as u64 > MAX_SCENE_BYTES {
         return Err(InputError::TooLarge);
     }
+    // The text is kept for the whole run (messages quote it); reading grew
+    // the buffer by doubling, up to twice its length.
+    bytes.shrink_to_fit();
     hscene_lang::source::decode(bytes).map_err(InputError::NotUtf8)
 }
 

@@ -31,6 +31,7 @@ use exit::{EXIT_USAGE_OR_IO, print_bytes};
 static ALLOCATOR: allocator::Allocator = allocator::Allocator;
 
 fn main() -> ExitCode {
+    allocator::share_one_arena();
     ignore_file_size_signal();
     // An interrupted command leaves no temporary file behind.
     signals::clean_up_on_signals();

@@ -566,10 +566,12 @@ fn running_out_of_memory_ends_cleanly() {
         out.stderr
     );
     assert_eq!(fs::read(dir.path().join("out.tif")).unwrap(), b"earlier");
-    // A 16 MiB scene whose syntax tree needs about 1.4 GB.
+    // A 16 MiB scene whose syntax tree needs about 400 MB, under a limit of
+    // 256 MiB of address space.
     let big = format!("Points {{ {} }}", "p = (1,1,1); ".repeat((16 << 20) / 14));
     fs::write(dir.path().join("big.hsc"), big).unwrap();
-    let out = run_with_limits(dir.path(), &["check", "big.hsc"], limit);
+    let small_limit = Some((libc::RLIMIT_AS, 256u64 << 20));
+    let out = run_with_limits(dir.path(), &["check", "big.hsc"], small_limit);
     assert_eq!(out.code, 2, "{}", out.stderr);
     assert!(out.stderr.contains("out of memory"), "{}", out.stderr);
     assert!(hidden(dir.path()).is_empty(), "{:?}", hidden(dir.path()));

@@ -370,7 +370,7 @@ pub fn hit_errors(scene: &Scene, probe: &Probe) -> HitErrors {
         let part = match &scene.objects[index].shape {
             Shape::Sphere(s) => Part::Sphere(stages.iter().fold(*s, |s, iso| s.transformed(iso))),
             Shape::Cylinder(c) => {
-                Part::Cylinder(stages.iter().fold(*c, |c, iso| c.transformed(iso)))
+                Part::Cylinder(stages.iter().fold(**c, |c, iso| c.transformed(iso)))
             }
             Shape::Rod(rod) => Part::Rod(Box::new(move_rod(rod))),
             Shape::Wireframe(rods) => {

@@ -127,7 +127,7 @@ fn names(doc: &Document, sigil: RefSigil) -> Vec<CompletionItem> {
         .filter(|d| d.kind.sigil() == sigil)
         .flat_map(|d| {
             let detail = format!("{} {}", d.kind.as_str(), d.label());
-            let name = d.name.as_ref().map(|n| n.text.clone());
+            let name = d.name.as_ref().map(|n| n.text.to_string());
             let number = d.number.map(|k| k.to_string());
             name.into_iter()
                 .chain(number)

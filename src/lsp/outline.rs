@@ -45,7 +45,7 @@ pub fn document_symbols(
                 .collect();
             #[allow(deprecated)]
             DocumentSymbol {
-                name: section.name.text.clone(),
+                name: section.name.text.to_string(),
                 detail: None,
                 kind: SymbolKind::NAMESPACE,
                 tags: None,

@@ -748,7 +748,7 @@ mod tests {
         let bare = HPlane::from_normal(placed.normal()).unwrap();
         let back = far.inverse();
         let traceable = |plane: &HPlane| {
-            PreparedObject::surfaces_of(&ir::Shape::Plane(*plane), &[back], None)
+            PreparedObject::surfaces_of(&ir::Shape::Plane(Box::new(*plane)), &[back], None)
                 .iter()
                 .all(|s| s.is_traceable())
         };
@@ -890,9 +890,9 @@ mod tests {
             .unwrap()
             .transformed(&Isometry::transvection_from_origin(p(0.0, 0.0, 0.5)));
         let shapes = [
-            ir::Shape::Rod(rod.clone()),
-            ir::Shape::Polygon(poly),
-            ir::Shape::Polygon(ideal),
+            ir::Shape::Rod(Box::new(rod.clone())),
+            ir::Shape::Polygon(Box::new(poly)),
+            ir::Shape::Polygon(Box::new(ideal)),
             ir::Shape::Polyhedron(dodeca),
             ir::Shape::Wireframe(vec![rod].into()),
             ir::Shape::Sphere(hgeom::HSphere::new(p(0.1, 0.0, 0.6), 0.3).unwrap()),

@@ -261,10 +261,12 @@ fn domain_edges(q: &QuotientSpace, d: DomainEdges) -> Result<Vec<Object>, Render
             // A finite edge is a rod (bounded, so the hierarchy culls it);
             // one that runs into a cusp the tube about its whole line.
             if matches!((a, b), (Vertex::Interior(_), Vertex::Interior(_))) {
-                return Ok(object(ir::Shape::Rod(Rod::new(a, b, d.width)?)));
+                return Ok(object(ir::Shape::Rod(Box::new(Rod::new(a, b, d.width)?))));
             }
             let line = HLine::through(&a, &b)?;
-            Ok(object(ir::Shape::Cylinder(HCylinder::new(line, d.width)?)))
+            Ok(object(ir::Shape::Cylinder(Box::new(HCylinder::new(
+                line, d.width,
+            )?))))
         })
         .collect::<Result<Vec<_>, GeomError>>()
         .map_err(invalid)

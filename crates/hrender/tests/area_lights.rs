@@ -26,7 +26,7 @@ fn grey() -> Material {
 /// eye casts the sphere's shadow on the plane.
 fn shadow_scene(light: Light, blocker: bool) -> Scene {
     let plane = HPlane::orthogonal_at(&at(DVec3::Z, 1.5), &at(DVec3::Z, 1.6)).expect("plane");
-    let mut objects = vec![obj(Shape::Plane(plane), 0)];
+    let mut objects = vec![obj(Shape::Plane(Box::new(plane)), 0)];
     if blocker {
         objects.push(obj(sphere(at(DVec3::new(0.0, 0.25, 1.0), 1.0), 0.12), 1));
     }
@@ -125,7 +125,7 @@ fn an_area_light_gives_a_facing_surface_the_point_lights_irradiance() {
             camera,
             vec![white],
             vec![area_light(at(DVec3::Z, light_at), 1.0, radius, 1024)],
-            vec![obj(Shape::Plane(plane), 0)],
+            vec![obj(Shape::Plane(Box::new(plane)), 0)],
         );
         let img = draw(&s);
         let r = plane_at - light_at;

@@ -209,7 +209,7 @@ fn attenuation_is_one_over_the_area_of_the_hyperbolic_sphere() {
             default_camera(0.1),
             vec![white],
             vec![light(at(DVec3::Z, light_at), 1.0)],
-            vec![obj(hscene_ir::Shape::Plane(plane), 0)],
+            vec![obj(hscene_ir::Shape::Plane(Box::new(plane)), 0)],
         );
         let img = draw(&s);
         let r = plane_at - light_at;
@@ -239,7 +239,7 @@ fn shadows_follow_transmission() {
     };
     let centre_pixel = |blocker_trans: Option<f64>| {
         let mut materials = vec![white.clone()];
-        let mut objects = vec![obj(hscene_ir::Shape::Plane(plane), 0)];
+        let mut objects = vec![obj(hscene_ir::Shape::Plane(Box::new(plane)), 0)];
         if let Some(t) = blocker_trans {
             materials.push(Material {
                 transmission: t,

@@ -60,9 +60,12 @@ fn every_kind() -> Vec<(&'static str, Shape)> {
     let horo = Horosphere::new(ideal(DVec3::new(0.1, 0.0, 1.0)), &p(0.0, 0.0, 0.5)).unwrap();
     vec![
         ("sphere", sphere(p(0.0, 0.0, 0.5), 0.2)),
-        ("polygon with an ideal vertex", Shape::Polygon(with_ideal)),
+        (
+            "polygon with an ideal vertex",
+            Shape::Polygon(Box::new(with_ideal)),
+        ),
         ("polyhedron", Shape::Polyhedron(dodeca)),
-        ("plane", Shape::Plane(plane)),
+        ("plane", Shape::Plane(Box::new(plane))),
         ("rod", rod(p(-0.2, -0.1, 0.45), p(0.2, 0.1, 0.5), 0.05)),
         (
             "cylinder",
@@ -164,7 +167,7 @@ fn hard_configurations_give_finite_pixels() {
                 light(at(DVec3::Z, 0.5), 5.0),
             ],
             vec![
-                obj(Shape::Plane(plane), 0),
+                obj(Shape::Plane(Box::new(plane)), 0),
                 obj(sphere(Point::ORIGIN, 0.2), 1),
                 obj(sphere(p(0.0, 0.3, 0.5), 0.05), 0),
                 obj(
@@ -201,14 +204,14 @@ fn hard_configurations_give_finite_pixels() {
                 ),
                 obj(cylinder(p(-0.3, 0.0, 0.0), p(0.3, 0.0, 0.0), 0.1), 1),
                 obj(
-                    Shape::Rod(
+                    Shape::Rod(Box::new(
                         Rod::new(
                             p(0.0, -0.2, 0.4).into(),
                             Vertex::Ideal(ideal(DVec3::new(0.2, -0.2, 1.0))),
                             0.03,
                         )
                         .unwrap(),
-                    ),
+                    )),
                     0,
                 ),
             ],
@@ -348,7 +351,7 @@ fn anti_aliasing_is_deterministic_and_averages() {
         default_camera(0.1),
         vec![flat(0.25, 0.5, 0.75)],
         vec![],
-        vec![obj(Shape::Plane(plane), 0)],
+        vec![obj(Shape::Plane(Box::new(plane)), 0)],
     );
     flat_scene.settings.ambient = Rgb::new(1.0, 1.0, 1.0);
     let img = run(&flat_scene, &opts(9, 1, 2)).image;

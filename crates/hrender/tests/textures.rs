@@ -40,7 +40,7 @@ fn checker_scene(size: u32) -> Scene {
         ],
         vec![
             obj_in(sphere(centre, 0.3), 0, frame),
-            obj(Shape::Plane(plane), 1),
+            obj(Shape::Plane(Box::new(plane)), 1),
         ],
     );
     s.settings.recursion_depth = 2;

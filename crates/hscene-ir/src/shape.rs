@@ -84,23 +84,26 @@ pub fn mesh_budget_cost(triangles: u64) -> u64 {
 }
 
 /// The geometry of a scene object.
-// Rods carry their tube's Lorentz frame and two caps; boxing them would
-// save memory only in scenes of a few objects, and the IR is built once.
-#[allow(clippy::large_enum_variant)]
+///
+/// The kinds larger than a sphere are boxed, so an object entry is about
+/// 220 bytes instead of 700 (a rod's tube frame and caps are 568): a scene
+/// of many objects is mostly spheres, and the IR is built once and read by
+/// the renderer's own prepared surfaces, not traced (docs/performance.md,
+/// "Memory of scenes of many objects").
 #[derive(Clone, Debug, PartialEq)]
 pub enum Shape {
     /// An h-sphere.
     Sphere(HSphere),
     /// A convex planar h-polygon.
-    Polygon(ConvexPolygon),
+    Polygon(Box<ConvexPolygon>),
     /// A polyhedral surface (faces oriented outward).
     Polyhedron(Polyhedron),
     /// A whole h-plane (its normal side is the outside).
-    Plane(HPlane),
+    Plane(Box<HPlane>),
     /// The points within a distance of an h-segment.
-    Rod(Rod),
+    Rod(Box<Rod>),
     /// The points at a distance from a whole h-line.
-    Cylinder(HCylinder),
+    Cylinder(Box<HCylinder>),
     /// A horosphere (the outside is away from its ideal centre).
     Horosphere(Horosphere),
     /// A wireframe: the edges of a polygon or polyhedron as rods (shared:
@@ -108,7 +111,7 @@ pub enum Shape {
     /// place when the camera needs no move).
     Wireframe(Arc<Vec<Rod>>),
     /// A triangle mesh (from an OBJ or PLY file).
-    Mesh(TriangleMesh),
+    Mesh(Box<TriangleMesh>),
     /// A regular honeycomb, walked ray by ray (boxed: its walk tables are
     /// large, and a scene has few of them).
     Honeycomb(Box<Honeycomb>),
@@ -173,13 +176,13 @@ impl Shape {
     pub fn transformed(&self, iso: &Isometry) -> Shape {
         match self {
             Shape::Sphere(s) => Shape::Sphere(s.transformed(iso)),
-            Shape::Polygon(p) => Shape::Polygon(p.transformed(iso)),
+            Shape::Polygon(p) => Shape::Polygon(Box::new(p.transformed(iso))),
             Shape::Polyhedron(p) => Shape::Polyhedron(p.transformed(iso)),
-            Shape::Plane(p) => Shape::Plane(p.transformed(iso)),
-            Shape::Rod(r) => Shape::Rod(r.transformed(iso)),
-            Shape::Cylinder(c) => Shape::Cylinder(c.transformed(iso)),
+            Shape::Plane(p) => Shape::Plane(Box::new(p.transformed(iso))),
+            Shape::Rod(r) => Shape::Rod(Box::new(r.transformed(iso))),
+            Shape::Cylinder(c) => Shape::Cylinder(Box::new(c.transformed(iso))),
             Shape::Horosphere(h) => Shape::Horosphere(h.transformed(iso)),
-            Shape::Mesh(m) => Shape::Mesh(m.transformed(iso)),
+            Shape::Mesh(m) => Shape::Mesh(Box::new(m.transformed(iso))),
             Shape::Wireframe(rods) => {
                 Shape::Wireframe(Arc::new(rods.iter().map(|r| r.transformed(iso)).collect()))
             }
@@ -207,14 +210,14 @@ impl Shape {
     fn all(&self, test: &dyn Fn(&dyn Surface) -> bool) -> bool {
         match self {
             Shape::Sphere(s) => test(s),
-            Shape::Polygon(p) => test(p),
+            Shape::Polygon(p) => test(&**p),
             Shape::Polyhedron(p) => test(p),
-            Shape::Plane(p) => test(p),
-            Shape::Rod(r) => test(r),
-            Shape::Cylinder(c) => test(c),
+            Shape::Plane(p) => test(&**p),
+            Shape::Rod(r) => test(&**r),
+            Shape::Cylinder(c) => test(&**c),
             Shape::Horosphere(h) => test(h),
             Shape::Wireframe(rods) => rods.iter().all(|r| test(r)),
-            Shape::Mesh(m) => test(m),
+            Shape::Mesh(m) => test(&**m),
             Shape::Honeycomb(h) => test(&h.surface),
         }
     }
@@ -282,14 +285,14 @@ impl Shape {
     pub fn into_surfaces(self) -> Surfaces {
         match self {
             Shape::Sphere(s) => Surfaces::Single(boxed(s)),
-            Shape::Polygon(p) => Surfaces::Single(boxed(p)),
+            Shape::Polygon(p) => Surfaces::Single(p),
             Shape::Polyhedron(p) => Surfaces::Faces(p.into_faces()),
-            Shape::Plane(p) => Surfaces::Single(boxed(p)),
-            Shape::Rod(r) => Surfaces::Single(boxed(r)),
-            Shape::Cylinder(c) => Surfaces::Single(boxed(c)),
+            Shape::Plane(p) => Surfaces::Single(p),
+            Shape::Rod(r) => Surfaces::Single(r),
+            Shape::Cylinder(c) => Surfaces::Single(c),
             Shape::Horosphere(h) => Surfaces::Single(boxed(h)),
             Shape::Wireframe(rods) => Surfaces::Rods(rods),
-            Shape::Mesh(m) => Surfaces::Single(boxed(m)),
+            Shape::Mesh(m) => Surfaces::Single(m),
             Shape::Honeycomb(h) => Surfaces::Single(boxed(h.surface)),
         }
     }

@@ -125,16 +125,20 @@ struct Lowerer<'d> {
 /// Lower a parsed file. Returns the scene only if no error was reported
 /// (by the parser or here).
 ///
+/// The file is consumed: each section's syntax is dropped as soon as it is
+/// lowered, so the tree of a large scene's materials is gone before its
+/// objects are built (peak memory, docs/performance.md).
+///
 /// `source` is the text `file` was parsed from; it is used only to turn
 /// offsets into line and column numbers in messages.
 pub(crate) fn lower(
-    file: &SourceFile,
+    file: SourceFile,
     source: &str,
     options: &crate::options::Options,
     diags: &mut DiagnosticList,
     inputs: &mut Vec<std::path::PathBuf>,
 ) -> Option<Scene> {
-    let frames = declared_frames(file);
+    let frames = declared_frames(&file);
     let frame = options.frame.min(frames - 1);
     let mut lw = Lowerer {
         base_dir: options.base_dir.as_deref(),
@@ -155,7 +159,7 @@ pub(crate) fn lower(
             .iter()
             .filter(|s| matches!(s.name.text.as_str(), "Objects" | "Lights"))
             .flat_map(|s| &s.statements)
-            .filter_map(|st| st.label.as_ref().map(|l| l.text.clone()))
+            .filter_map(|st| st.label.as_ref().map(|l| l.text.to_string()))
             .collect(),
         moves: Vec::new(),
         settings: globals::default_settings(),
@@ -176,30 +180,41 @@ pub(crate) fn lower(
     if let Some(pairings) = &options.space {
         lw.space.give(std::sync::Arc::clone(pairings));
     }
-    lw.check_section_names(file, source);
+    lw.check_section_names(&file, source);
+    let mut sections: Vec<Option<Section>> = file.sections.into_iter().map(Some).collect();
     for name in SECTIONS {
         // A misspelt section is lowered as the one it was meant to be, so its
         // declarations do not go missing and cascade into undefined references.
-        let meant = |s: &&Section| {
+        let meant = |s: &Section| {
             s.name.text == name
                 || (!SECTIONS.contains(&s.name.text.as_str())
                     && suggest::meant(&s.name.text, &SECTIONS) == Some(name))
         };
-        for section in file.sections.iter().filter(meant) {
+        for slot in sections
+            .iter_mut()
+            .filter(|s| s.as_ref().is_some_and(meant))
+        {
+            let Some(section) = slot.take() else { continue };
             if section.name.text != name {
                 // Already an error; don't add lints about what it declares.
                 lw.point_ref_failed = true;
                 lw.material_ref_failed = true;
             }
             match name {
-                "Points" => lw.points_section(section),
-                "BRDFs" => lw.brdfs_section(section),
-                "Transformations" => lw.transformations_section(section),
-                "Lights" => lw.lights_section(section),
-                "Objects" => lw.objects_section(section),
-                _ => lw.globals_section(section),
+                "Points" => lw.points_section(&section),
+                "BRDFs" => lw.brdfs_section(&section),
+                "Transformations" => lw.transformations_section(&section),
+                "Lights" => lw.lights_section(&section),
+                "Objects" => lw.objects_section(&section),
+                _ => lw.globals_section(&section),
             }
+            lw.mark_failed_references(&section);
         }
+    }
+    // Sections under no known name were not lowered; what they refer to
+    // still counts as meant.
+    for section in sections.into_iter().flatten() {
+        lw.mark_failed_references(&section);
     }
     let mut camera = lw.camera();
     lw.apply_moves(&mut camera);
@@ -213,7 +228,6 @@ pub(crate) fn lower(
         lw.lint_squeezed_disk(camera);
         lw.lint_up_roll(camera);
     }
-    lw.mark_failed_references(file);
     lw.lint_unused();
     lw.lint_still_animation();
     lw.lint_ambient_under_path();
@@ -228,9 +242,9 @@ pub(crate) fn lower(
     Some(Scene {
         settings: lw.settings,
         camera,
-        materials: lw.materials.into_values().collect(),
+        materials: exact(lw.materials.into_values().collect()),
         lights: lw.lights.into_iter().map(|(l, _)| l).collect(),
-        objects: lw.objects.into_iter().map(|(o, _)| o).collect(),
+        objects: exact(lw.objects.into_iter().map(|(o, _)| o).collect()),
         points: lw
             .points
             .into_values()
@@ -246,6 +260,13 @@ pub(crate) fn lower(
         frame: lw.frame,
         animation: lw.animation,
     })
+}
+
+/// `list` in an allocation of its own length: a list collected in place
+/// from one of larger items keeps the larger allocation.
+fn exact<T>(mut list: Vec<T>) -> Vec<T> {
+    list.shrink_to_fit();
+    list
 }
 
 /// The frame count a file declares (`frames = N` in `Globals`), read before

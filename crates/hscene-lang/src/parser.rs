@@ -424,7 +424,7 @@ Transformations { hline (%1,%5); %1->Rotate(%2,-0.7); %2->Translate(%1); }
                 let prefix = label.as_ref().map(|l| format!("{l}: ")).unwrap_or_default();
                 let src = format!("S {{ {prefix}({}); }}", items.join(", "));
                 let st = only_statement(&src);
-                prop_assert_eq!(st.label.map(|l| l.text), label);
+                prop_assert_eq!(st.label.map(|l| l.text.to_string()), label);
                 let Clause::Value(v) = &st.clauses[0] else { panic!() };
                 prop_assert_eq!(numbers(v), xs);
             }

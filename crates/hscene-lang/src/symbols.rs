@@ -286,7 +286,7 @@ impl SymbolIndex {
             kinds.contains(&d.kind)
                 && match &reference.target {
                     RefTarget::Index(k) => d.number.is_some_and(|n| n as u64 == *k),
-                    RefTarget::Name(name) => d.name.as_ref().is_some_and(|i| &i.text == name),
+                    RefTarget::Name(name) => d.name.as_ref().is_some_and(|i| i.text == name),
                 }
         })
     }
@@ -343,7 +343,7 @@ fn declared_name(kind: SymbolKind, s: &Statement) -> Option<Ident> {
     if let Some(label) = &s.label {
         return Some(label.clone());
     }
-    match (kind, s.clauses.as_slice()) {
+    match (kind, &s.clauses[..]) {
         (SymbolKind::Point, [Clause::Assign { key, .. }, ..]) => Some(key.clone()),
         _ => None,
     }

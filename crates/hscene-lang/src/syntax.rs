@@ -22,6 +22,7 @@
 //! All spans are byte offsets into the source given to [`crate::parse`].
 
 use crate::diagnostic::Span;
+pub use smol_str::SmolStr;
 
 /// A whole scene file: its sections in source order.
 #[derive(Clone, Debug, PartialEq, Default)]
@@ -53,8 +54,10 @@ pub struct Section {
 /// An identifier: ASCII letter or `_`, then letters, digits and `_`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Ident {
-    /// The identifier text.
-    pub text: String,
+    /// The identifier text, stored inline up to 23 bytes: a scene of many
+    /// statements has several names per statement, and a heap block each
+    /// was a tenth of its syntax tree.
+    pub text: SmolStr,
     /// Where it is.
     pub span: Span,
 }
@@ -71,8 +74,9 @@ impl Ident {
 pub struct Statement {
     /// The optional `name:` prefix (e.g. a material's name).
     pub label: Option<Ident>,
-    /// At least one clause.
-    pub clauses: Vec<Clause>,
+    /// At least one clause (a boxed slice: no spare capacity, which in a
+    /// scene of many statements was a third of the syntax tree).
+    pub clauses: Box<[Clause]>,
     /// The whole statement, label and `;` included.
     pub span: Span,
 }
@@ -106,7 +110,7 @@ pub enum Clause {
     /// `hline (%1,%2)`, `%1->Rotate(%2,-0.7)`, a bare `Cube`.
     Apply {
         /// The reference before `->`, if any.
-        target: Option<Reference>,
+        target: Option<Box<Reference>>,
         /// The keyword.
         name: Ident,
         /// The single argument (a tuple when there are several), if any.
@@ -143,8 +147,8 @@ pub enum Value {
     Reference(Reference),
     /// `(a, b, ...)`, at least one item.
     Tuple {
-        /// The items.
-        items: Vec<Value>,
+        /// The items (a boxed slice, without spare capacity).
+        items: Box<[Value]>,
         /// From `(` to `)`.
         span: Span,
     },
@@ -161,7 +165,7 @@ pub enum Value {
     /// [`Value::Number`]; the lowering checks they are whole).
     Symbol {
         /// The entries.
-        entries: Vec<Value>,
+        entries: Box<[Value]>,
         /// From `{` to `}`.
         span: Span,
     },
@@ -284,7 +288,7 @@ mod tests {
         }
         assert_eq!(num(1.0, 2, 3).describe(), "a number");
         let t = Value::Tuple {
-            items: vec![num(1.0, 1, 2)],
+            items: Box::new([num(1.0, 1, 2)]),
             span: Span::new(0, 3),
         };
         assert_eq!(t.describe(), "a tuple");

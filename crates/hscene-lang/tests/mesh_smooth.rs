@@ -46,7 +46,7 @@ fn mesh(dir: &Path, file: &str, text: &str, options: &str) -> Result<TriangleMes
         return Err(format!("{:?}", compiled.diagnostics));
     }
     match &compiled.scene.unwrap().objects[0].shape {
-        Shape::Mesh(m) => Ok(m.clone()),
+        Shape::Mesh(m) => Ok((**m).clone()),
         other => panic!("not a mesh: {other:?}"),
     }
 }

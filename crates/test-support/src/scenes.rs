@@ -231,7 +231,10 @@ pub fn sphere(c: Point, r: f64) -> Shape {
 /// A rod of hyperbolic radius `r` from `a` to `b`.
 pub fn rod(a: Point, b: Point, r: f64) -> Shape {
     // Cannot fail: callers pass distinct literal end points and a positive radius.
-    Shape::Rod(crate::fixture(Rod::new(a.into(), b.into(), r), "test rod"))
+    Shape::Rod(Box::new(crate::fixture(
+        Rod::new(a.into(), b.into(), r),
+        "test rod",
+    )))
 }
 
 /// The h-cylinder of hyperbolic radius `r` about the h-line through `a` and
@@ -240,13 +243,19 @@ pub fn cylinder(a: Point, b: Point, r: f64) -> Shape {
     // Cannot fail: callers pass two distinct literal points.
     let line = crate::fixture(HLine::through(&a.into(), &b.into()), "test line");
     // Cannot fail: callers pass a positive literal radius.
-    Shape::Cylinder(crate::fixture(HCylinder::new(line, r), "test cylinder"))
+    Shape::Cylinder(Box::new(crate::fixture(
+        HCylinder::new(line, r),
+        "test cylinder",
+    )))
 }
 
 /// The convex polygon with vertices `vs`, in order.
 pub fn polygon(vs: Vec<Vertex>) -> Shape {
     // Cannot fail: callers pass literal convex polygons.
-    Shape::Polygon(crate::fixture(ConvexPolygon::new(vs), "test polygon"))
+    Shape::Polygon(Box::new(crate::fixture(
+        ConvexPolygon::new(vs),
+        "test polygon",
+    )))
 }
 
 /// The mixed scene of the invariance tests: spheres, a polygon, a rod and a
@@ -342,7 +351,7 @@ pub fn many_rods_scene(n: usize, size: u32) -> Scene {
         // Cannot fail: the two ends are drawn 0.05 to 0.25 from a point, in random directions: distinct to rounding far above f64's.
         let r = crate::fixture(Rod::new(a.into(), b.into(), 0.008), "random rod");
         if i < n {
-            objects.push(obj(Shape::Rod(r), 0));
+            objects.push(obj(Shape::Rod(Box::new(r)), 0));
         } else {
             wire.push(r);
         }
@@ -355,7 +364,7 @@ pub fn many_rods_scene(n: usize, size: u32) -> Scene {
         HPlane::orthogonal_at(&at(DVec3::Z, 2.3), &at(DVec3::Z, 2.4)),
         "wall",
     );
-    objects.push(obj(Shape::Plane(wall), 2));
+    objects.push(obj(Shape::Plane(Box::new(wall)), 2));
     let lights = vec![
         light(at(DVec3::new(0.3, 1.0, 0.2), 0.8), 40.0),
         light(at(DVec3::new(-0.5, 0.2, 0.3), 0.5), 10.0),

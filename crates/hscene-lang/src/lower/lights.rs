@@ -160,7 +160,7 @@ impl Lowerer<'_> {
                 position,
                 diffuse,
                 specular,
-                name: st.label.as_ref().map(|l| l.text.clone()),
+                name: st.label.as_ref().map(|l| l.text.to_string()),
                 radius,
                 samples,
                 near,

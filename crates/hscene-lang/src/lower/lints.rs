@@ -8,7 +8,7 @@ use super::seen_from::SeenFrom;
 use super::text::numbered;
 use crate::diagnostic::{Code, Diagnostic, Span};
 use crate::ir::{Camera, IntegratorKind};
-use crate::syntax::{Clause, RefSigil, Reference, SourceFile, Value};
+use crate::syntax::{Clause, RefSigil, Reference, Section, Value};
 
 /// Calls `f` on every reference in `value`.
 fn each_reference<'a>(value: &'a Value, f: &mut impl FnMut(&'a Reference)) {
@@ -76,7 +76,11 @@ impl Lowerer<'_> {
     /// they resolve all their references: mark what they refer to as used,
     /// so that one error does not also make its points and materials look
     /// unused.
-    pub(super) fn mark_failed_references(&mut self, file: &SourceFile) {
+    ///
+    /// Called for each section right after it is lowered, so that its
+    /// syntax can be dropped then: an error found later (the checks against
+    /// the camera) is at a statement that had resolved its references.
+    pub(super) fn mark_failed_references(&mut self, section: &Section) {
         let mut error_starts: Vec<usize> = self
             .diags
             .iter()
@@ -92,22 +96,18 @@ impl Lowerer<'_> {
             error_starts.get(i).is_some_and(|&s| s < span.end)
         };
         let mut refs: Vec<&Reference> = Vec::new();
-        for section in &file.sections {
-            refs.extend(section.broken.iter().flat_map(|b| &b.references));
-            for st in section.statements.iter().filter(|st| has_error(st.span)) {
-                for clause in &st.clauses {
-                    match clause {
-                        Clause::Assign { value, .. } => {
-                            each_reference(value, &mut |r| refs.push(r))
+        refs.extend(section.broken.iter().flat_map(|b| &b.references));
+        for st in section.statements.iter().filter(|st| has_error(st.span)) {
+            for clause in &st.clauses {
+                match clause {
+                    Clause::Assign { value, .. } => each_reference(value, &mut |r| refs.push(r)),
+                    Clause::Apply { target, arg, .. } => {
+                        refs.extend(target.as_deref());
+                        if let Some(v) = arg {
+                            each_reference(v, &mut |r| refs.push(r));
                         }
-                        Clause::Apply { target, arg, .. } => {
-                            refs.extend(target);
-                            if let Some(v) = arg {
-                                each_reference(v, &mut |r| refs.push(r));
-                            }
-                        }
-                        Clause::Value(v) => each_reference(v, &mut |r| refs.push(r)),
                     }
+                    Clause::Value(v) => each_reference(v, &mut |r| refs.push(r)),
                 }
             }
         }

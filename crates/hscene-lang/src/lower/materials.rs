@@ -81,7 +81,7 @@ impl Lowerer<'_> {
             .name
             .as_ref()
             .filter(|_| b.labelled)
-            .map(|n| n.text.clone());
+            .map(|n| n.text.to_string());
         let index = self
             .materials
             .push(default_material(name.clone()), b.span, true);
@@ -91,12 +91,14 @@ impl Lowerer<'_> {
     }
 
     pub(super) fn brdfs_section(&mut self, section: &Section) {
+        self.materials
+            .reserve(section.statements.len() + section.broken.len());
         let mut broken = section.broken.iter().peekable();
         for st in &section.statements {
             while let Some(b) = broken.next_if(|b| b.span.start < st.span.start) {
                 self.broken_material(b);
             }
-            let mut m = default_material(st.label.as_ref().map(|l| l.text.clone()));
+            let mut m = default_material(st.label.as_ref().map(|l| l.text.to_string()));
             let mut seen = SeenKeys::default();
             let mut checker = CheckerFields::default();
             for clause in &st.clauses {

@@ -46,6 +46,13 @@ impl<T> Table<T> {
         self.entries.len()
     }
 
+    /// Room for `additional` more entries, reserved exactly: a section's
+    /// statement count is known before it is lowered, and growth by
+    /// doubling left up to half of a large table unused.
+    pub(super) fn reserve(&mut self, additional: usize) {
+        self.entries.reserve_exact(additional);
+    }
+
     /// Adds an entry; returns its index.
     pub(super) fn push(&mut self, value: T, span: Span, used: bool) -> usize {
         self.entries.push(Entry { value, span, used });
@@ -201,7 +208,7 @@ mod tests {
 
     fn ident(text: &str) -> Ident {
         Ident {
-            text: text.to_string(),
+            text: text.into(),
             span: Span::default(),
         }
     }

@@ -31,6 +31,9 @@ use keywords::{OBJECT_KEYWORDS, ObjectKeyword, keyword};
 
 impl Lowerer<'_> {
     pub(super) fn objects_section(&mut self, section: &Section) {
+        // Most statements give one object: reserved exactly, a large scene's
+        // list is not left up to half empty by growth by doubling.
+        self.objects.reserve_exact(section.statements.len());
         for st in &section.statements {
             let indices = self.object_statement(st);
             if let Some(label) = &st.label {

@@ -37,7 +37,7 @@ impl Lowerer<'_> {
             }
             // `..., distance = d` after the coordinates: by direction and
             // distance.
-            let (clauses, distance) = match st.clauses.as_slice() {
+            let (clauses, distance) = match &st.clauses[..] {
                 [first, Clause::Assign { key, value, .. }] if key.text == "distance" => {
                     (std::slice::from_ref(first), Some(value))
                 }
@@ -71,7 +71,7 @@ impl Lowerer<'_> {
                 Some(d) => self.point_by_distance(value, d),
             };
             let point = DeclaredPoint {
-                name: name.as_ref().map(|n| n.text.clone()),
+                name: name.as_ref().map(|n| n.text.to_string()),
                 position,
             };
             let declared = self.points.push_declared(point, st.span, name.as_ref());
@@ -85,7 +85,7 @@ impl Lowerer<'_> {
     /// A point statement that did not parse (already reported) still takes
     /// its number and name, so later references do not cascade into errors.
     fn broken_point(&mut self, b: &BrokenStatement) {
-        let name = b.name.as_ref().map(|n| n.text.clone());
+        let name = b.name.as_ref().map(|n| n.text.to_string());
         let point = DeclaredPoint {
             name: name.clone(),
             position: None,

@@ -80,7 +80,7 @@ mod tests {
         let horo = Horosphere::new(IdealPoint::from_direction(DVec3::Z).unwrap(), &centre).unwrap();
         let shapes = [
             Shape::Sphere(ball.transformed(&far)),
-            Shape::Rod(rod.transformed(&far)),
+            Shape::Rod(Box::new(rod.transformed(&far))),
             Shape::Horosphere(horo.transformed(&far)),
         ];
         let eye = SeenFrom::new(far.apply(&Point::ORIGIN));

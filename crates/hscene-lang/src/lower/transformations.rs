@@ -47,7 +47,7 @@ fn keyword(name: &str) -> Option<Transformation> {
 impl Lowerer<'_> {
     pub(super) fn transformations_section(&mut self, section: &Section) {
         for st in &section.statements {
-            let (first, animate) = match st.clauses.as_slice() {
+            let (first, animate) = match &st.clauses[..] {
                 [first] => (Some(first), None),
                 [
                     first,
@@ -103,7 +103,7 @@ impl Lowerer<'_> {
                     RefSigil::At => {
                         let motion = self.transformation(kind, name, arg.as_ref(), *span, animate);
                         self.moves.push(PendingMove {
-                            target: target.clone(),
+                            target: (**target).clone(),
                             motion,
                         });
                     }

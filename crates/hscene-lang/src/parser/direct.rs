@@ -19,6 +19,7 @@
 use super::Scanner;
 use crate::diagnostic::Span;
 use crate::syntax::{Clause, Ident, RefSigil, RefTarget, Reference, Statement, Value};
+use smallvec::SmallVec;
 
 /// A position in one statement's text; spans are shifted by `off` into the
 /// file.
@@ -109,7 +110,8 @@ impl Cursor<'_> {
                 self.pos = from;
             }
         }
-        let mut clauses = vec![self.clause()?];
+        let mut clauses: SmallVec<[Clause; 8]> = SmallVec::new();
+        clauses.push(self.clause()?);
         loop {
             self.skip();
             if self.eat(b';') {
@@ -123,7 +125,7 @@ impl Cursor<'_> {
         }
         Some(Statement {
             label,
-            clauses,
+            clauses: clauses.into_iter().collect(),
             span: self.span(from),
         })
     }
@@ -165,7 +167,7 @@ impl Cursor<'_> {
                 self.skip();
                 let arg = self.value();
                 return Some(Clause::Apply {
-                    target: Some(target),
+                    target: Some(Box::new(target)),
                     name,
                     arg,
                     span: self.span(from),
@@ -200,7 +202,7 @@ impl Cursor<'_> {
             self.pos += 1;
         }
         Some(Ident {
-            text: self.str_from(from).to_owned(),
+            text: self.str_from(from).into(),
             span: self.span(from),
         })
     }
@@ -270,7 +272,7 @@ impl Cursor<'_> {
         let target = if self.digits() > 0 {
             RefTarget::Index(self.str_from(digits_from).parse().ok()?)
         } else {
-            RefTarget::Name(self.ident()?.text)
+            RefTarget::Name(self.ident()?.text.to_string())
         };
         Some(Reference {
             sigil,
@@ -283,7 +285,7 @@ impl Cursor<'_> {
     fn tuple(&mut self) -> Option<Value> {
         let from = self.pos;
         self.eat(b'(').then_some(())?;
-        let mut items = Vec::new();
+        let mut items: SmallVec<[Value; 4]> = SmallVec::new();
         loop {
             self.skip();
             let item = match self.value() {
@@ -298,7 +300,7 @@ impl Cursor<'_> {
             self.eat(b',').then_some(())?;
         }
         Some(Value::Tuple {
-            items,
+            items: items.into_iter().collect(),
             span: self.span(from),
         })
     }
@@ -336,7 +338,7 @@ impl Cursor<'_> {
             self.eat(b',').then_some(())?;
         }
         (entries.len() >= 2).then_some(Value::Symbol {
-            entries,
+            entries: entries.into_boxed_slice(),
             span: self.span(from),
         })
     }

@@ -186,6 +186,8 @@ impl Scanner<'_> {
                 _ => stmt.push(tok),
             }
         };
+        // Grown by doubling; the whole tree is alive until lowering starts.
+        statements.statements.shrink_to_fit();
         let section = name.map(|name| Section {
             span: name.span.to(Span::new(close_end, close_end)),
             name,

@@ -27,7 +27,7 @@ impl Scanner<'_> {
         }
         Some(Statement {
             label,
-            clauses,
+            clauses: clauses.into_boxed_slice(),
             span,
         })
     }
@@ -66,7 +66,7 @@ impl Scanner<'_> {
                     }
                 }
                 Some(Clause::Apply {
-                    target,
+                    target: target.map(Box::new),
                     name: name?,
                     arg,
                     span,
@@ -115,7 +115,10 @@ impl Scanner<'_> {
                         items.push(self.value(p, off)?);
                     }
                 }
-                Some(Value::Tuple { items, span })
+                Some(Value::Tuple {
+                    items: items.into_boxed_slice(),
+                    span,
+                })
             }
             Rule::symbol => {
                 let mut entries = Vec::new();
@@ -124,7 +127,10 @@ impl Scanner<'_> {
                         entries.push(self.value(p, off)?);
                     }
                 }
-                Some(Value::Symbol { entries, span })
+                Some(Value::Symbol {
+                    entries: entries.into_boxed_slice(),
+                    span,
+                })
             }
             Rule::ident => Some(Value::Ident(pair_ident(pair, off))),
             Rule::string => Some(Value::Str {
@@ -181,7 +187,7 @@ fn offset(span: pest::Span<'_>, off: usize) -> Span {
 
 fn pair_ident(pair: Pair<'_, Rule>, off: usize) -> Ident {
     Ident {
-        text: pair.as_str().to_string(),
+        text: pair.as_str().into(),
         span: offset(pair.as_span(), off),
     }
 }
@@ -244,7 +250,8 @@ mod tests {
         let st = only_statement("S { %p -> Reflect; }");
         assert!(matches!(
             &st.clauses[0],
-            Clause::Apply { target: Some(Reference { target: RefTarget::Name(n), .. }), arg: None, .. } if n == "p"
+            Clause::Apply { target: Some(r), arg: None, .. }
+                if matches!(&**r, Reference { target: RefTarget::Name(n), .. } if n == "p")
         ));
 
         // Bare identifiers inside tuples, nested tuples.

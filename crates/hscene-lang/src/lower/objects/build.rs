@@ -51,14 +51,14 @@ impl Lowerer<'_> {
                     return None;
                 };
                 self.convex_polygon(vs.clone(), items, *span)
-                    .map(|p| vec![Shape::Polygon(p)])
+                    .map(|p| vec![Shape::Polygon(Box::new(p))])
             }
             ObjectKeyword::Rod => {
                 let [Arg::Vertex(a), Arg::Vertex(b), Arg::Number(r)] = args else {
                     return None;
                 };
                 match Rod::new(*a, *b, *r) {
-                    Ok(rod) => Some(vec![Shape::Rod(rod)]),
+                    Ok(rod) => Some(vec![Shape::Rod(Box::new(rod))]),
                     Err(e) => {
                         self.line_failure(values[0].span(), values[1].span(), "rod", &e);
                         None
@@ -70,7 +70,7 @@ impl Lowerer<'_> {
                     return None;
                 };
                 match HLine::through(a, b).and_then(|l| HCylinder::new(l, *r)) {
-                    Ok(c) => Some(vec![Shape::Cylinder(c)]),
+                    Ok(c) => Some(vec![Shape::Cylinder(Box::new(c))]),
                     Err(e) => {
                         self.line_failure(values[0].span(), values[1].span(), "cylinder", &e);
                         None
@@ -84,7 +84,7 @@ impl Lowerer<'_> {
                 // A triangle's plane is oriented by the right-hand rule on its
                 // vertex order, the rule polygons follow too.
                 match ConvexPolygon::new(vec![*a, *b, *c]) {
-                    Ok(t) => Some(vec![Shape::Plane(t.plane())]),
+                    Ok(t) => Some(vec![Shape::Plane(Box::new(t.plane()))]),
                     Err(_) => {
                         self.report(
                             Diagnostic::new(
@@ -115,7 +115,7 @@ impl Lowerer<'_> {
                     return None;
                 };
                 self.mesh(file, *size, values, opts.smooth)
-                    .map(|m| vec![Shape::Mesh(m)])
+                    .map(|m| vec![Shape::Mesh(Box::new(m))])
             }
             ObjectKeyword::Platonic(k) => {
                 let [Arg::Number(size)] = args else {

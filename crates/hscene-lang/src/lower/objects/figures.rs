@@ -64,7 +64,7 @@ pub(super) fn build(f: Figure, args: &[Arg]) -> Result<Built, FigureError> {
         .map(Arg::number)
         .collect::<Option<_>>()
         .ok_or(FigureError::Arguments)?;
-    let polygon = |p| Ok(Built::Shapes(vec![Shape::Polygon(p)]));
+    let polygon = |p| Ok(Built::Shapes(vec![Shape::Polygon(Box::new(p))]));
     let solid = |p| Ok(Built::Shapes(vec![Shape::Polyhedron(p)]));
     // Counts were checked against their range, so they convert exactly.
     match (f, numbers.as_slice()) {

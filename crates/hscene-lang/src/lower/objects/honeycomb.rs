@@ -44,7 +44,7 @@ impl Lowerer<'_> {
             );
             return None;
         };
-        let [p, q, r] = entries.as_slice() else {
+        let [p, q, r] = &entries[..] else {
             let what = match entries.len() {
                 2 => "a regular polyhedron or a regular tiling of a plane",
                 _ => "a regular polytope or honeycomb of another dimension",
@@ -93,7 +93,7 @@ impl Lowerer<'_> {
     pub(super) fn ring_nodes(&mut self, value: &Value) -> Option<Rings> {
         const HELP: &str = "write the ringed nodes of the diagram [p,q,r], each 0 to 3: `rings = (0)` is {p,q,r} itself, `(0, 1)` its truncation, `(1)` its rectification, `(0, 3)` its runcination, `(3)` the dual {r,q,p}";
         let items = match value {
-            Value::Tuple { items, .. } => items.as_slice(),
+            Value::Tuple { items, .. } => &items[..],
             Value::Number { .. } => std::slice::from_ref(value),
             other => {
                 self.report(

@@ -362,7 +362,7 @@ impl Lowerer<'_> {
         opts: ObjectOptions,
         st: &Statement,
     ) -> Vec<usize> {
-        let name = st.label.as_ref().map(|l| l.text.clone());
+        let name = st.label.as_ref().map(|l| l.text.to_string());
         let mut shapes = match (built, opts.wireframe) {
             // Edges alone, where the copies stay: their vertices are all
             // that is needed, so no face of any copy is built.
