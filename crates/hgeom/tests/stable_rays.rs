@@ -80,8 +80,9 @@ const ANGLES: [f64; 9] = [0.0, 1e-3, 0.1, 0.5, 1.0, 1.4, 1.5, 1.57, 1.5706];
 
 /// Chords of a sphere of radius 14 from a point on it, through the centre
 /// and at every angle down to grazing: the hit is at the law of cosines'
-/// chord `2 atanh(tanh 14 cos θ)` (320 bits) to 1e-9 (measured 3e-13; it
-/// was 1.1e-4 through the centre, 28.0001 for 28, the rounding of
+/// chord `2 atanh(tanh 14 cos θ)` (320 bits) to 1e-9 (measured 3.2e-10,
+/// at 1e-3 from the normal; through the centre exactly 28, which was
+/// 28.0001, 1.1e-4 off: the rounding of
 /// `-<X+V,C> = e^-14` from `X`, `V` of size `cosh 14`), and at the 320-bit
 /// far root for the rounded input to that plus twice the law's own
 /// distance from it (the input point is off the sphere by its rounding).
