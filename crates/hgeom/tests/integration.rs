@@ -17,4 +17,5 @@ mod reference;
 mod serde;
 mod snappy_census;
 mod spaces;
+mod stable_rays;
 mod surfaces;
