@@ -3,7 +3,8 @@
 //! window, cut to the window): the window shows the scene, changes after a
 //! move, converges to what `hscene render` makes of the camera it prints,
 //! and follows edits of the scene file (keeping the last good scene on an
-//! error).
+//! error); `P` shows a full render's progress in the title, and `Esc`
+//! during it closes the viewer at once, leaving no file behind.
 //!
 //! Needs `Xvfb`, `xdotool` and `import` (Debian: xvfb, xdotool,
 //! imagemagick, libxkbcommon-x11-0). Without them the test says so and
@@ -53,9 +54,11 @@ struct Display {
 }
 
 impl Display {
-    fn start() -> Display {
+    /// A new display; tests running side by side give different `seed`s
+    /// so they do not try the same display numbers at once.
+    fn start(seed: usize) -> Display {
         for n in 0..20 {
-            let number = 90 + (std::process::id() as usize + n * 7) % 400;
+            let number = 90 + (std::process::id() as usize + seed * 53 + n * 7) % 400;
             let name = format!(":{number}");
             if Path::new(&format!("/tmp/.X11-unix/X{number}")).exists() {
                 continue;
@@ -201,8 +204,9 @@ fn difference(a: &image::RgbImage, b: &image::RgbImage) -> f64 {
     total as f64 / a.as_raw().len() as f64
 }
 
-#[test]
-fn the_window_flies_converges_to_the_render_and_follows_edits() {
+/// True if the X tools are here; without them the test is skipped (and
+/// fails if `HSCENE_REQUIRE_X11` is set).
+fn x11_tools() -> bool {
     let required = std::env::var_os("HSCENE_REQUIRE_X11").is_some();
     let missing: Vec<&str> = ["Xvfb", "xdotool", "import"]
         .into_iter()
@@ -214,9 +218,17 @@ fn the_window_flies_converges_to_the_render_and_follows_edits() {
             "HSCENE_REQUIRE_X11 is set but {missing:?} are missing"
         );
         eprintln!("skipped: {missing:?} not installed (set HSCENE_REQUIRE_X11 to require them)");
+        return false;
+    }
+    true
+}
+
+#[test]
+fn the_window_flies_converges_to_the_render_and_follows_edits() {
+    if !x11_tools() {
         return;
     }
-    let display = Display::start();
+    let display = Display::start(0);
     let dir = tempfile::tempdir().unwrap();
     let scene: PathBuf = dir.path().join("live.hsc");
     std::fs::write(&scene, scene_text(START_CAMERA, "(0.9, 0.2, 0.1)")).unwrap();
@@ -330,4 +342,81 @@ fn the_window_flies_converges_to_the_render_and_follows_edits() {
         d < 0.5,
         "the printed camera renders {d} levels away from the view"
     );
+}
+
+/// `P` at once shows in the title that a full render started, and its
+/// progress as rows finish; `Esc` in the middle of it closes the viewer
+/// within 500 ms (the window's own answer is milliseconds: the margin
+/// covers xdotool and the process's exit on a busy machine), and the
+/// cancelled render leaves no file, finished or temporary.
+#[test]
+fn p_shows_progress_in_the_title_and_escape_cancels_it() {
+    if !x11_tools() {
+        return;
+    }
+    let display = Display::start(1);
+    let dir = tempfile::tempdir().unwrap();
+    let scene: PathBuf = dir.path().join("long.hsc");
+    std::fs::write(&scene, scene_text(START_CAMERA, "(0.9, 0.2, 0.1)")).unwrap();
+    // So many samples that the full render takes far longer than the test.
+    let child = Command::new(env!("CARGO_BIN_EXE_hscene"))
+        .args(["view", scene.to_str().unwrap(), "--samples", "1024"])
+        .args(["--resolution", "320x240"])
+        .current_dir(dir.path())
+        .env("DISPLAY", &display.name)
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut viewer = Killed(child);
+    let id = display.window();
+    display.wait_title(&id, "spp");
+    display.keys(&id, &["p"]);
+    display.wait_title(&id, "rendering full picture");
+    // Progress: some percent above 0 shows while the render goes on.
+    let deadline = Instant::now() + Duration::from_secs(60);
+    loop {
+        let title = display.title(&id);
+        let percent = title
+            .split("rendering full picture… ")
+            .nth(1)
+            .and_then(|rest| rest.split(' ').next())
+            .and_then(|n| n.parse::<u32>().ok());
+        match percent {
+            Some(p) if (1..100).contains(&p) => break,
+            Some(100) => panic!("the full render ended before Escape: `{title}`"),
+            _ => {}
+        }
+        assert!(Instant::now() < deadline, "no progress in `{title}`");
+        sleep(Duration::from_millis(50));
+    }
+    display.run("xdotool", &["windowfocus", "--sync", &id]);
+    let pressed = Instant::now();
+    display.run("xdotool", &["key", "Escape"]);
+    while viewer.0.try_wait().unwrap().is_none() {
+        // 500 ms, not the window's 100: the key goes through xdotool and
+        // the X server, and the process must exit, on a shared machine.
+        assert!(
+            pressed.elapsed() < Duration::from_millis(500),
+            "Escape did not close the viewer during the full render"
+        );
+        sleep(Duration::from_millis(5));
+    }
+    let closed = pressed.elapsed();
+    eprintln!("Escape to exit during a full render: {closed:?}");
+    let mut err = String::new();
+    viewer
+        .0
+        .stderr
+        .take()
+        .unwrap()
+        .read_to_string(&mut err)
+        .unwrap();
+    assert!(err.contains("cancelled"), "{err}");
+    let left: Vec<String> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n != "long.hsc")
+        .collect();
+    assert!(left.is_empty(), "files left behind: {left:?}");
 }

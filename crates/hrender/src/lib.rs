@@ -414,9 +414,22 @@ pub fn render_prepared(
     region: Option<Region>,
     progress: &(dyn Fn(u32) + Sync),
 ) -> Result<Rendered, RenderError> {
-    options.validate()?;
-    // Not cancellable: a viewer's pass is short, and the next one is
-    // started by the same thread that would cancel it.
     let never = AtomicBool::new(false);
-    render_picture(scene, &prepared.picture, options, region, progress, &never)
+    render_prepared_cancellable(scene, prepared, options, region, progress, &never)
+}
+
+/// [`render_prepared`], stopped early when `cancel` becomes true, as
+/// [`render_region_cancellable`] is: a viewer renders its passes on a
+/// worker and cancels the one in flight when the camera moves or the
+/// window closes, so the window never waits out a pass.
+pub fn render_prepared_cancellable(
+    scene: &Scene,
+    prepared: &PreparedPicture,
+    options: &RenderOptions,
+    region: Option<Region>,
+    progress: &(dyn Fn(u32) + Sync),
+    cancel: &AtomicBool,
+) -> Result<Rendered, RenderError> {
+    options.validate()?;
+    render_picture(scene, &prepared.picture, options, region, progress, cancel)
 }

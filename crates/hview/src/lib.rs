@@ -3,8 +3,9 @@
 //! (`progressive`: a coarse frame, then full-resolution passes that average
 //! to what `hscene render --samples N` gives), shown through winit and
 //! softbuffer (`window`), or driven by a recorded path without a window
-//! (`headless`). The scene comes from the caller, which recompiles it when
-//! its file changes (`SceneSource`).
+//! (`headless`). The window renders on worker threads (`worker`), so it
+//! answers keys at once whatever renders. The scene comes from the caller,
+//! which recompiles it when its file changes (`SceneSource`).
 
 /// `eprint!` that never panics: a message that cannot be written (stderr
 /// closed, on a full disk) is dropped and the viewer goes on.
@@ -27,6 +28,7 @@ mod keys;
 mod pose;
 mod progressive;
 mod window;
+mod worker;
 
 pub use headless::{
     FlightError, FlightPath, HeadlessReport, MAX_FLIGHT_FILE_BYTES, MAX_FLIGHT_MOVES, run_headless,

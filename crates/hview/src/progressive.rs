@@ -7,6 +7,7 @@
 //! average: within one 8-bit level).
 
 use std::sync::Arc;
+use std::sync::atomic::AtomicBool;
 
 use hrender::{DisplayTransform, Exposure, Levels8, PreparedPicture, RenderError, RenderOptions};
 use hscene_ir::{IntegratorKind, Net, Resolution, Scene};
@@ -130,6 +131,11 @@ impl Progressive {
         self.passes
     }
 
+    /// True if the next stage is the coarse frame (a move's first look).
+    pub fn next_is_coarse(&self) -> bool {
+        !self.coarse_shown && self.options.coarse > 1
+    }
+
     /// True once every pass is in: nothing more to render until a change.
     pub fn is_converged(&self) -> bool {
         self.passes >= self.options.samples
@@ -154,62 +160,27 @@ impl Progressive {
     /// average of the passes so far. After convergence it returns the
     /// converged picture again without rendering.
     pub fn step(&mut self, scene: &Scene) -> Result<Frame, RenderError> {
-        let (w, h) = (
-            self.options.resolution.width(),
-            self.options.resolution.height(),
-        );
+        self.step_cancellable(scene, &AtomicBool::new(false))
+    }
+
+    /// [`Progressive::step`], stopped early when `cancel` becomes true
+    /// (from another thread: the window renders on a worker): the result
+    /// is then [`RenderError::Cancelled`] and the view is where it was
+    /// before the step, the cancelled stage still to do.
+    pub fn step_cancellable(
+        &mut self,
+        scene: &Scene,
+        cancel: &AtomicBool,
+    ) -> Result<Frame, RenderError> {
         let pool = self.pool()?;
-        if !self.coarse_shown && self.options.coarse > 1 {
-            self.coarse_shown = true;
-            let c = self.options.coarse;
-            let small =
-                Resolution::new(w.div_ceil(c), h.div_ceil(c)).unwrap_or(self.options.resolution);
-            let options = self.render_options(small, 0);
-            let image = pool
-                .install(|| {
-                    let prepared = hrender::prepare_picture(scene, &options)?;
-                    hrender::render_prepared(scene, &prepared, &options, None, &|_| {})
-                })?
-                .image;
-            let colours = self.display(&pool, image.pixels());
-            // Each coarse pixel covers a c x c block.
-            let sw = small.width();
-            let pixels = (0..h)
-                .flat_map(|y| (0..w).map(move |x| (x / c, y / c)))
-                .map(|(x, y)| colours[(y * sw + x) as usize])
-                .collect();
-            return Ok(Frame {
-                width: w,
-                height: h,
-                pixels,
-                samples: 0,
-            });
+        if self.next_is_coarse() {
+            return self.coarse(&pool, scene, cancel);
         }
         if let Some(still) = &self.still {
             return Ok(still.clone());
         }
         if !self.is_converged() {
-            let options = self.render_options(self.options.resolution, self.passes);
-            let prepared = match &self.prepared {
-                Some(p) => p.clone(),
-                None => {
-                    let p = Arc::new(pool.install(|| hrender::prepare_picture(scene, &options))?);
-                    self.prepared = Some(p.clone());
-                    p
-                }
-            };
-            let image = pool
-                .install(|| hrender::render_prepared(scene, &prepared, &options, None, &|_| {}))?
-                .image;
-            if self.sum.len() != image.pixels().len() {
-                self.sum = vec![[0.0; 3]; image.pixels().len()];
-            }
-            for (s, p) in self.sum.iter_mut().zip(image.pixels()) {
-                for c in 0..3 {
-                    s[c] += f64::from(p[c]);
-                }
-            }
-            self.passes += 1;
+            self.pass(&pool, scene, cancel)?;
         }
         let n = f64::from(self.passes.max(1));
         let mean: Vec<[f32; 3]> = self.sum.iter().map(|s| s.map(|c| (c / n) as f32)).collect();
@@ -220,8 +191,8 @@ impl Progressive {
             mean
         };
         let frame = Frame {
-            width: w,
-            height: h,
+            width: self.options.resolution.width(),
+            height: self.options.resolution.height(),
             pixels: self.display(&pool, &shown),
             samples: self.passes,
         };
@@ -229,6 +200,93 @@ impl Progressive {
             self.still = Some(frame.clone());
         }
         Ok(frame)
+    }
+
+    /// The coarse frame: one sample per pixel at `1/coarse` of the
+    /// resolution, each pixel shown as a block.
+    fn coarse(
+        &mut self,
+        pool: &rayon::ThreadPool,
+        scene: &Scene,
+        cancel: &AtomicBool,
+    ) -> Result<Frame, RenderError> {
+        let (w, h) = (
+            self.options.resolution.width(),
+            self.options.resolution.height(),
+        );
+        let c = self.options.coarse;
+        let small =
+            Resolution::new(w.div_ceil(c), h.div_ceil(c)).unwrap_or(self.options.resolution);
+        let options = self.render_options(small, 0);
+        let image = pool
+            .install(|| {
+                let prepared = hrender::prepare_picture(scene, &options)?;
+                hrender::render_prepared_cancellable(
+                    scene,
+                    &prepared,
+                    &options,
+                    None,
+                    &|_| {},
+                    cancel,
+                )
+            })?
+            .image;
+        // Marked shown only once rendered: a cancelled coarse frame is
+        // still due.
+        self.coarse_shown = true;
+        let colours = self.display(pool, image.pixels());
+        let sw = small.width();
+        let pixels = (0..h)
+            .flat_map(|y| (0..w).map(move |x| (x / c, y / c)))
+            .map(|(x, y)| colours[(y * sw + x) as usize])
+            .collect();
+        Ok(Frame {
+            width: w,
+            height: h,
+            pixels,
+            samples: 0,
+        })
+    }
+
+    /// The next full-resolution pass, added to the sum (a cancelled pass
+    /// adds nothing and is still to do).
+    fn pass(
+        &mut self,
+        pool: &rayon::ThreadPool,
+        scene: &Scene,
+        cancel: &AtomicBool,
+    ) -> Result<(), RenderError> {
+        let options = self.render_options(self.options.resolution, self.passes);
+        let prepared = match &self.prepared {
+            Some(p) => p.clone(),
+            None => {
+                let p = Arc::new(pool.install(|| hrender::prepare_picture(scene, &options))?);
+                self.prepared = Some(p.clone());
+                p
+            }
+        };
+        let image = pool
+            .install(|| {
+                hrender::render_prepared_cancellable(
+                    scene,
+                    &prepared,
+                    &options,
+                    None,
+                    &|_| {},
+                    cancel,
+                )
+            })?
+            .image;
+        if self.sum.len() != image.pixels().len() {
+            self.sum = vec![[0.0; 3]; image.pixels().len()];
+        }
+        for (s, p) in self.sum.iter_mut().zip(image.pixels()) {
+            for c in 0..3 {
+                s[c] += f64::from(p[c]);
+            }
+        }
+        self.passes += 1;
+        Ok(())
     }
 
     /// The still picture `mean` denoised, or `None` where the library is

@@ -1,13 +1,19 @@
 //! The window: winit for events, softbuffer for pixels (pure Rust on X11,
 //! Wayland, macOS and Windows). Each turn of the event loop applies the
-//! moves that arrived, then renders one stage (a coarse frame after a move,
-//! else the next full-resolution pass) and shows it; when the view has
-//! converged the loop sleeps, waking every quarter second to look for
-//! changes to the scene file.
+//! moves that arrived and hands the next stage (a coarse frame after a
+//! move, else the next full-resolution pass) to the pass worker
+//! (`worker`), which wakes the loop when it is done; the loop shows it.
+//! A change of view cancels the stage in flight. Rendering never runs on
+//! the loop's thread, so keys are answered at once: `Esc` closes the
+//! window within milliseconds whatever renders, and `P`'s full render
+//! shows its progress in the title. When the view has converged the loop
+//! sleeps, waking every quarter second to look for changes to the scene
+//! file.
 
 use std::num::NonZeroU32;
 use std::path::PathBuf;
 use std::rc::Rc;
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use hscene_ir::Scene;
@@ -23,6 +29,7 @@ use crate::SceneSource;
 use crate::keys::{Action, action_for_key};
 use crate::pose::{Axis, Move, Pose, camera_lines};
 use crate::progressive::{Frame, Progressive, ViewOptions};
+use crate::worker::{FullRender, PassDone, PassPoll, PassWorker, Wake};
 
 /// How often a still view looks for a changed scene file.
 const WATCH_INTERVAL: Duration = Duration::from_millis(250);
@@ -33,6 +40,17 @@ const DRAG_TURN: f64 = 0.004;
 /// Frames per second an animation plays at.
 const ANIMATION_FPS: f64 = 10.0;
 
+/// How often the title shows a full render's progress.
+const PROGRESS_INTERVAL: Duration = Duration::from_millis(100);
+
+/// How long the title says where a full render was saved.
+const NOTICE_TIME: Duration = Duration::from_secs(5);
+
+/// How long closing waits for a cancelled full render's thread (after the
+/// window is gone): a cancelled render stops within a pixel's time, and a
+/// file being written is let finish rather than left half written.
+const SAVE_GRACE: Duration = Duration::from_secs(2);
+
 /// Why the window could not run.
 #[derive(Debug, Error)]
 pub enum ViewError {
@@ -42,6 +60,9 @@ pub enum ViewError {
     /// The scene could not be loaded at the start.
     #[error("{0}")]
     Scene(String),
+    /// The thread that renders the view could not start or stopped.
+    #[error("the viewer's render worker {0}")]
+    Worker(String),
 }
 
 impl ViewError {
@@ -67,10 +88,27 @@ struct App<'s> {
     source: &'s mut dyn SceneSource,
     /// The scene as compiled (all frames); `scene` is the one shown.
     base: Scene,
-    scene: Scene,
+    /// Shared with the stage in flight (changed copy-on-write).
+    scene: Arc<Scene>,
     pose: Pose,
     flown: bool,
-    view: Progressive,
+    /// The view's refinement; `None` while its next stage is on the worker.
+    view: Option<Box<Progressive>>,
+    options: ViewOptions,
+    /// Bumped by every change of view: a stage rendered for an older
+    /// one is thrown away.
+    generation: u64,
+    /// Samples per pixel of the picture shown (0 after a change).
+    samples: u32,
+    passes: PassWorker,
+    /// The `P` render in progress.
+    saving: Option<FullRender>,
+    /// Wakes the event loop from a worker.
+    wake: Wake,
+    /// Words the title shows for a while ("saved x.png").
+    notice: Option<(String, Instant)>,
+    /// The title last set: set again only when it changes.
+    shown_title: String,
     step: f64,
     save_dir: PathBuf,
     live: Option<Live>,
@@ -88,6 +126,8 @@ struct App<'s> {
     failure: Option<ViewError>,
     /// A render failed: nothing more is tried until something changes.
     stalled: bool,
+    /// `Esc` or the window's close: nothing more is started.
+    closing: bool,
 }
 
 impl App<'_> {
@@ -101,8 +141,8 @@ impl App<'_> {
         let mut t = format!(
             "hscene view — {} — {fps} fps — {}/{} spp",
             self.source.name(),
-            self.view.samples(),
-            self.view.options().samples
+            self.samples,
+            self.options.samples
         );
         if self.base.settings.frames > 1 {
             t += &format!(" — frame {}", self.frame_index);
@@ -110,7 +150,39 @@ impl App<'_> {
         if self.error.is_some() {
             t += " — error: see the terminal";
         }
+        if let Some(r) = &self.saving {
+            t += &format!(" — rendering full picture… {} %", r.percent());
+        } else if let Some((words, at)) = &self.notice
+            && now.duration_since(*at) < NOTICE_TIME
+        {
+            t += &format!(" — {words}");
+        }
         t
+    }
+
+    /// Sets the title if it changed (the loop wakes often; the window
+    /// system need not hear the same title each time).
+    fn refresh_title(&mut self) {
+        let title = self.title();
+        if title != self.shown_title
+            && let Some(live) = &self.live
+        {
+            live.window.set_title(&title);
+            self.shown_title = title;
+        }
+    }
+
+    /// The view changed: the stage in flight is cancelled (it comes back
+    /// from an older generation and is thrown away) and refinement
+    /// starts over.
+    fn restart_view(&mut self) {
+        self.generation += 1;
+        self.passes.cancel();
+        if let Some(view) = &mut self.view {
+            view.restart();
+        }
+        self.samples = 0;
+        self.stalled = false;
     }
 
     fn reset(&mut self) {
@@ -118,8 +190,7 @@ impl App<'_> {
             self.pose = p;
         }
         self.flown = false;
-        self.stalled = false;
-        self.view.restart();
+        self.restart_view();
     }
 
     fn apply_moves(&mut self) {
@@ -141,23 +212,29 @@ impl App<'_> {
             }
         }
         self.flown = true;
-        self.stalled = false;
-        self.view.restart();
+        self.restart_view();
+    }
+
+    /// The scene with the camera where the eye is now.
+    fn sync_camera(&mut self) {
+        if let Some(camera) = self.pose.camera()
+            && self.scene.camera != camera
+        {
+            Arc::make_mut(&mut self.scene).camera = camera;
+        }
     }
 
     fn show_frame(&mut self, k: u32) {
         match self.base.frame(k) {
-            Ok(s) => {
-                let camera = self.scene.camera;
-                self.scene = s;
+            Ok(mut s) => {
                 if self.flown {
-                    self.scene.camera = camera;
-                } else if let Some(p) = Pose::of(&self.scene.camera) {
+                    s.camera = self.scene.camera;
+                } else if let Some(p) = Pose::of(&s.camera) {
                     self.pose = p;
                 }
+                self.scene = Arc::new(s);
                 self.frame_index = k;
-                self.stalled = false;
-                self.view.restart();
+                self.restart_view();
             }
             Err(e) => diagln!("hscene view: frame {k}: {e}"),
         }
@@ -184,13 +261,16 @@ impl App<'_> {
         }
         // The picture may not change (an error keeps the last good scene):
         // the title says what happened now.
-        let title = self.title();
-        if let Some(live) = &self.live {
-            live.window.set_title(&title);
-        }
+        self.refresh_title();
     }
 
+    /// Starts the full render `P` asks for, on its own thread; the title
+    /// shows its progress from now on.
     fn save(&mut self) {
+        if self.saving.is_some() {
+            diagln!("hscene view: a full render is already running");
+            return;
+        }
         let name = self.source.name();
         let stem = std::path::Path::new(&name)
             .file_stem()
@@ -203,7 +283,7 @@ impl App<'_> {
             diagln!("hscene view: no free file name to save to");
             return;
         };
-        let o = self.view.options();
+        let o = self.options;
         let options = hrender::RenderOptions {
             net: o.net,
             resolution: Some(o.resolution),
@@ -213,11 +293,57 @@ impl App<'_> {
             integrator: o.integrator,
             ..hrender::RenderOptions::default()
         };
-        let saved = hrender::render(&self.scene, &options, &|_| {})
-            .and_then(|r| hrender::write_image(&r.image, &path, hrender::SampleDepth::Eight));
-        match saved {
-            Ok(()) => diagln!("hscene view: saved {}", path.display()),
-            Err(e) => diagln!("hscene view: cannot save: {e}"),
+        // Moves made just before `P` are part of the view it means.
+        self.sync_camera();
+        let scene = Scene::clone(&self.scene);
+        match FullRender::start(scene, options, path, self.wake.clone()) {
+            Ok(render) => {
+                diagln!("hscene view: rendering {}", render.path.display());
+                self.saving = Some(render);
+            }
+            Err(e) => diagln!("hscene view: cannot start the full render: {e}"),
+        }
+        self.refresh_title();
+    }
+
+    /// Collects a full render that has ended.
+    fn finish_save(&mut self) {
+        if !self.saving.as_ref().is_some_and(FullRender::is_finished) {
+            return;
+        }
+        let Some(render) = self.saving.take() else {
+            return;
+        };
+        let words = match render.finish() {
+            Ok(path) => {
+                diagln!("hscene view: saved {}", path.display());
+                let file = path.file_name().unwrap_or(path.as_os_str());
+                format!("saved {}", file.to_string_lossy())
+            }
+            Err(e) => {
+                diagln!("hscene view: cannot save: {e}");
+                "not saved: see the terminal".to_string()
+            }
+        };
+        self.notice = Some((words, Instant::now()));
+    }
+
+    /// Closes at once: the window goes first, then whatever renders is
+    /// cancelled (a full render is given [`SAVE_GRACE`] to stop, so no
+    /// file is left half written; the pass worker is left to stop alone,
+    /// as it writes nothing).
+    fn quit(&mut self, event_loop: &ActiveEventLoop) {
+        self.closing = true;
+        self.passes.cancel();
+        self.live = None;
+        event_loop.exit();
+        if let Some(render) = self.saving.take() {
+            let path = render.path.clone();
+            match render.cancel_and_wait(SAVE_GRACE) {
+                Some(Ok(_)) => diagln!("hscene view: saved {}", path.display()),
+                Some(Err(_)) => diagln!("hscene view: full render cancelled"),
+                None => diagln!("hscene view: the full render did not stop in time"),
+            }
         }
     }
 
@@ -250,9 +376,69 @@ impl App<'_> {
         self.presented.push(Instant::now());
         let cutoff = Instant::now() - Duration::from_secs(2);
         self.presented.retain(|t| *t > cutoff);
-        let title = self.title();
-        if let Some(live) = &self.live {
-            live.window.set_title(&title);
+        self.refresh_title();
+    }
+
+    /// Takes back a stage the worker finished and shows it.
+    fn collect_pass(&mut self, event_loop: &ActiveEventLoop) {
+        match self.passes.poll() {
+            PassPoll::Idle | PassPoll::Busy => {}
+            PassPoll::Done(done) => {
+                let PassDone {
+                    mut view,
+                    result,
+                    generation,
+                } = *done;
+                if generation != self.generation {
+                    // Rendered (or cancelled) for a view since left.
+                    view.restart();
+                    self.view = Some(view);
+                    return;
+                }
+                self.view = Some(view);
+                match result {
+                    Ok(frame) => {
+                        self.samples = frame.samples;
+                        self.last_frame = Some(frame);
+                        self.present();
+                    }
+                    // Only a close cancels a current stage; nothing to show.
+                    Err(hrender::RenderError::Cancelled) => {}
+                    Err(e) => {
+                        diagln!("hscene view: {e}");
+                        self.error = Some(e.to_string());
+                        self.stalled = true;
+                    }
+                }
+            }
+            PassPoll::Gone => {
+                self.failure = Some(ViewError::Worker("stopped".into()));
+                self.quit(event_loop);
+            }
+        }
+    }
+
+    /// Hands the next stage to the worker if the view wants one.
+    fn start_pass(&mut self, animated: bool) {
+        let Some(view) = &self.view else {
+            return;
+        };
+        // While an animation plays, one full pass a frame is enough.
+        let wanted = !(self.stalled || view.is_converged() || animated && view.samples() >= 1);
+        // A full render has the cores: after a move the coarse frame still
+        // shows at once, and the passes wait for it to end.
+        let deferred = self.saving.is_some() && !view.next_is_coarse();
+        if !wanted || deferred || self.passes.is_busy() {
+            return;
+        }
+        if let Some(view) = self.view.take()
+            && let Err(view) = self
+                .passes
+                .submit(view, self.scene.clone(), self.generation)
+        {
+            self.view = Some(view);
+            diagln!("hscene view: the render worker stopped");
+            self.stalled = true;
         }
     }
 
@@ -274,17 +460,18 @@ impl App<'_> {
             },
             Action::Save => self.save(),
             Action::TogglePlay => self.playing = !self.playing,
-            Action::Quit => event_loop.exit(),
+            Action::Quit => self.quit(event_loop),
         }
     }
 }
 
 impl ApplicationHandler for App<'_> {
     fn resumed(&mut self, event_loop: &ActiveEventLoop) {
-        if self.live.is_some() {
+        // A closing viewer has dropped its window on purpose.
+        if self.live.is_some() || self.closing {
             return;
         }
-        let o = self.view.options();
+        let o = self.options;
         let attributes = Window::default_attributes()
             .with_title(self.title())
             .with_inner_size(PhysicalSize::new(
@@ -314,7 +501,7 @@ impl ApplicationHandler for App<'_> {
 
     fn window_event(&mut self, event_loop: &ActiveEventLoop, _: WindowId, event: WindowEvent) {
         match event {
-            WindowEvent::CloseRequested => event_loop.exit(),
+            WindowEvent::CloseRequested => self.quit(event_loop),
             WindowEvent::ModifiersChanged(m) => self.modifiers = m.state(),
             WindowEvent::KeyboardInput { event, .. } if event.state == ElementState::Pressed => {
                 if let PhysicalKey::Code(code) = event.physical_key
@@ -350,6 +537,9 @@ impl ApplicationHandler for App<'_> {
     }
 
     fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
+        if self.closing {
+            return;
+        }
         let now = Instant::now();
         if now.duration_since(self.last_watch) >= WATCH_INTERVAL {
             self.last_watch = now;
@@ -358,41 +548,34 @@ impl ApplicationHandler for App<'_> {
             }
         }
         let animated = self.base.settings.frames > 1 && self.playing;
-        if animated && now.duration_since(self.last_tick).as_secs_f64() >= 1.0 / ANIMATION_FPS {
+        // The next frame waits for the stage in flight: advancing would
+        // cancel it, and a slow scene would then never show a frame.
+        let due = now.duration_since(self.last_tick).as_secs_f64() >= 1.0 / ANIMATION_FPS;
+        if animated && due && !self.passes.is_busy() {
             self.last_tick = now;
             let next = (self.frame_index + 1) % self.base.settings.frames;
             self.show_frame(next);
         }
         self.apply_moves();
-        if let Some(camera) = self.pose.camera() {
-            self.scene.camera = camera;
+        self.sync_camera();
+        self.collect_pass(event_loop);
+        self.finish_save();
+        if self.closing {
+            return;
         }
-        // While an animation plays, one full pass a frame is enough.
-        let busy =
-            !(self.stalled || self.view.is_converged() || animated && self.view.samples() >= 1);
-        if busy {
-            match self.view.step(&self.scene) {
-                Ok(frame) => {
-                    self.last_frame = Some(frame);
-                    self.present();
-                }
-                Err(e) => {
-                    diagln!("hscene view: {e}");
-                    self.error = Some(e.to_string());
-                    self.stalled = true;
-                    event_loop.set_control_flow(ControlFlow::WaitUntil(now + WATCH_INTERVAL));
-                    return;
-                }
-            }
-            event_loop.set_control_flow(ControlFlow::Poll);
+        self.start_pass(animated);
+        self.refresh_title();
+        // A finished stage wakes the loop itself (the worker's user
+        // event); the timer is for the title's progress, the animation
+        // and the scene file.
+        let wake = if self.saving.is_some() {
+            PROGRESS_INTERVAL
+        } else if animated {
+            Duration::from_secs_f64(1.0 / ANIMATION_FPS)
         } else {
-            let wake = if animated {
-                Duration::from_secs_f64(1.0 / ANIMATION_FPS)
-            } else {
-                WATCH_INTERVAL
-            };
-            event_loop.set_control_flow(ControlFlow::WaitUntil(now + wake));
-        }
+            WATCH_INTERVAL
+        };
+        event_loop.set_control_flow(ControlFlow::WaitUntil(now + wake));
     }
 }
 
@@ -410,14 +593,30 @@ pub fn run_window(
     let pose = Pose::of(&scene.camera)
         .ok_or_else(|| ViewError::Scene("the scene's camera is degenerate".into()))?;
     let event_loop = EventLoop::new().map_err(|e| ViewError::display(&e.to_string()))?;
+    // Workers wake the loop through its proxy; once the loop is gone the
+    // wake is lost, which is what a closed window wants.
+    let proxy = event_loop.create_proxy();
+    let wake: Wake = Arc::new(move || {
+        let _ = proxy.send_event(());
+    });
+    let passes = PassWorker::start(wake.clone())
+        .map_err(|e| ViewError::Worker(format!("cannot start: {e}")))?;
     let now = Instant::now();
     let mut app = App {
         source,
         base,
-        scene,
+        scene: Arc::new(scene),
         pose,
         flown: false,
-        view: Progressive::new(options),
+        view: Some(Box::new(Progressive::new(options))),
+        options,
+        generation: 0,
+        samples: 0,
+        passes,
+        saving: None,
+        wake,
+        notice: None,
+        shown_title: String::new(),
         step,
         save_dir,
         live: None,
@@ -434,6 +633,7 @@ pub fn run_window(
         last_tick: now,
         failure: None,
         stalled: false,
+        closing: false,
     };
     event_loop
         .run_app(&mut app)
