@@ -218,19 +218,8 @@ impl Progressive {
         let small =
             Resolution::new(w.div_ceil(c), h.div_ceil(c)).unwrap_or(self.options.resolution);
         let options = self.render_options(small, 0);
-        let image = pool
-            .install(|| {
-                let prepared = hrender::prepare_picture(scene, &options)?;
-                hrender::render_prepared_cancellable(
-                    scene,
-                    &prepared,
-                    &options,
-                    None,
-                    &|_| {},
-                    cancel,
-                )
-            })?
-            .image;
+        let prepared = pool.install(|| hrender::prepare_picture(scene, &options))?;
+        let image = render_on(pool, scene, &prepared, &options, cancel)?;
         // Marked shown only once rendered: a cancelled coarse frame is
         // still due.
         self.coarse_shown = true;
@@ -265,18 +254,7 @@ impl Progressive {
                 p
             }
         };
-        let image = pool
-            .install(|| {
-                hrender::render_prepared_cancellable(
-                    scene,
-                    &prepared,
-                    &options,
-                    None,
-                    &|_| {},
-                    cancel,
-                )
-            })?
-            .image;
+        let image = render_on(pool, scene, &prepared, &options, cancel)?;
         if self.sum.len() != image.pixels().len() {
             self.sum = vec![[0.0; 3]; image.pixels().len()];
         }
@@ -323,4 +301,19 @@ fn pack(rgb: &[u8]) -> Vec<u32> {
     rgb.chunks_exact(3)
         .map(|p| (u32::from(p[0]) << 16) | (u32::from(p[1]) << 8) | u32::from(p[2]))
         .collect()
+}
+
+/// The whole picture of `prepared`, rendered on `pool`, stopped early when
+/// `cancel` is set (then [`RenderError::Cancelled`]).
+fn render_on(
+    pool: &rayon::ThreadPool,
+    scene: &Scene,
+    prepared: &PreparedPicture,
+    options: &RenderOptions,
+    cancel: &AtomicBool,
+) -> Result<hrender::Image, RenderError> {
+    pool.install(|| {
+        hrender::render_prepared_cancellable(scene, prepared, options, None, &|_| {}, cancel)
+    })
+    .map(|rendered| rendered.image)
 }
