@@ -18,6 +18,7 @@ mod honeycomb;
 mod hostile;
 mod hostile_files;
 mod hostile_round4;
+mod limited_run;
 mod lsp;
 mod render_cli;
 mod tiles;

@@ -8,11 +8,11 @@
 #![cfg(unix)]
 
 use std::fs;
-use std::io::Read;
-use std::os::unix::process::CommandExt;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+use crate::limited_run::run_hscene;
 
 /// Address space of a hostile run: a few times what an honest check or a
 /// small render needs.
@@ -35,68 +35,15 @@ fn corpus() -> PathBuf {
 /// Runs `hscene args` in `dir` under the limits; panics if it is killed,
 /// crashes or panics.
 fn run_in(dir: &Path, args: &[&str]) -> Outcome {
-    let mut cmd = Command::new(env!("CARGO_BIN_EXE_hscene"));
-    cmd.args(args)
-        .current_dir(dir)
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped());
-    // SAFETY: setrlimit is async-signal-safe and touches only the child.
-    unsafe {
-        cmd.pre_exec(|| {
-            let limit = |resource, value: u64| {
-                let r = libc::rlimit {
-                    rlim_cur: value as libc::rlim_t,
-                    rlim_max: value as libc::rlim_t,
-                };
-                if libc::setrlimit(resource, &r) == 0 {
-                    Ok(())
-                } else {
-                    Err(std::io::Error::last_os_error())
-                }
-            };
-            limit(libc::RLIMIT_AS, MEMORY_LIMIT)?;
-            limit(libc::RLIMIT_CPU, CPU_LIMIT)
-        });
-    }
-    let mut child = cmd.spawn().expect("the binary starts");
-    let (mut out, mut err) = (child.stdout.take().unwrap(), child.stderr.take().unwrap());
-    let readers = (
-        std::thread::spawn(move || {
-            let mut s = Vec::new();
-            let _ = out.read_to_end(&mut s);
-            s
-        }),
-        std::thread::spawn(move || {
-            let mut s = Vec::new();
-            let _ = err.read_to_end(&mut s);
-            s
-        }),
-    );
-    let started = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        if started.elapsed() > WALL_LIMIT {
-            let _ = child.kill();
-            panic!("hscene {args:?} blocked past the wall-clock limit");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    let stdout = String::from_utf8_lossy(&readers.0.join().unwrap()).into_owned();
-    let stderr = String::from_utf8_lossy(&readers.1.join().unwrap()).into_owned();
-    let code = status.code().unwrap_or_else(|| {
-        panic!("hscene {args:?} was killed ({status}) under the limits; stderr:\n{stderr}")
-    });
-    assert!(
-        matches!(code, 0..=2) && !stderr.contains("panicked"),
-        "hscene {args:?} exited {code}; stderr:\n{stderr}"
-    );
+    let limits = [
+        (libc::RLIMIT_AS, MEMORY_LIMIT),
+        (libc::RLIMIT_CPU, CPU_LIMIT),
+    ];
+    let done = run_hscene(dir, args, &limits, WALL_LIMIT);
     Outcome {
-        code,
-        stdout,
-        stderr,
+        code: done.code,
+        stdout: done.stdout,
+        stderr: done.stderr,
     }
 }
 

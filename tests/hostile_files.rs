@@ -8,12 +8,13 @@
 #![cfg(unix)]
 
 use std::fs;
-use std::io::Read;
 use std::os::unix::fs::PermissionsExt;
 use std::os::unix::process::CommandExt;
 use std::path::Path;
 use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+use crate::limited_run::{Limit, run_hscene};
 
 const WALL_LIMIT: Duration = Duration::from_secs(60);
 
@@ -33,68 +34,13 @@ fn run_limited(dir: &Path, args: &[&str], file_size_blocks: Option<u64>) -> Outc
 }
 
 /// Runs `hscene args` in `dir` under one resource limit (`setrlimit`).
-fn run_with_limits(
-    dir: &Path,
-    args: &[&str],
-    limit: Option<(libc::__rlimit_resource_t, u64)>,
-) -> Outcome {
-    let mut cmd = Command::new(env!("CARGO_BIN_EXE_hscene"));
-    cmd.args(args)
-        .current_dir(dir)
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped());
-    if let Some((resource, value)) = limit {
-        // SAFETY: setrlimit is async-signal-safe and touches only the child.
-        unsafe {
-            cmd.pre_exec(move || {
-                let r = libc::rlimit {
-                    rlim_cur: value as libc::rlim_t,
-                    rlim_max: value as libc::rlim_t,
-                };
-                if libc::setrlimit(resource, &r) == 0 {
-                    Ok(())
-                } else {
-                    Err(std::io::Error::last_os_error())
-                }
-            });
-        }
-    }
-    let mut child = cmd.spawn().expect("the binary starts");
-    let mut err = child.stderr.take().unwrap();
-    let mut out = child.stdout.take().unwrap();
-    let reader = std::thread::spawn(move || {
-        let mut s = Vec::new();
-        let _ = err.read_to_end(&mut s);
-        s
-    });
-    let out_reader = std::thread::spawn(move || {
-        let mut s = Vec::new();
-        let _ = out.read_to_end(&mut s);
-        s
-    });
-    let started = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        if started.elapsed() > WALL_LIMIT {
-            let _ = child.kill();
-            panic!("hscene {args:?} blocked past the wall-clock limit");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
+fn run_with_limits(dir: &Path, args: &[&str], limit: Option<Limit>) -> Outcome {
+    let done = run_hscene(dir, args, limit.as_slice(), WALL_LIMIT);
     // What it said, on either stream (`check` reports on stdout).
-    let stderr = String::from_utf8_lossy(&reader.join().unwrap()).into_owned()
-        + &String::from_utf8_lossy(&out_reader.join().unwrap());
-    let code = status
-        .code()
-        .unwrap_or_else(|| panic!("hscene {args:?} was killed ({status}); stderr:\n{stderr}"));
-    assert!(
-        matches!(code, 0..=2) && !stderr.contains("panicked"),
-        "hscene {args:?} exited {code}; stderr:\n{stderr}"
-    );
-    Outcome { code, stderr }
+    Outcome {
+        code: done.code,
+        stderr: done.stderr + &done.stdout,
+    }
 }
 
 fn run(dir: &Path, args: &[&str]) -> Outcome {

@@ -19,6 +19,7 @@ mod image_textures;
 mod light_strength;
 mod many_lights;
 mod mesh_smooth;
+mod one_pixel;
 mod optics;
 mod path_tracer;
 mod robustness;

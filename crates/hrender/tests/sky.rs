@@ -3,30 +3,18 @@
 
 use hgeom::glam::DVec3;
 use hgeom::{HLine, Point};
-use hrender::RenderOptions;
 use hscene_ir::{Rgb, Scene, Sky};
+
+use crate::one_pixel::{self, pixel};
 
 const ZENITH: (f64, f64, f64) = (0.2, 0.4, 0.9);
 const HORIZON: (f64, f64, f64) = (0.9, 0.8, 0.7);
 
 fn compile(camera: &str, extra: &str, integrator: &str) -> Scene {
-    let source = format!(
+    one_pixel::compile(&format!(
         "Globals {{ resolution = (1, 1); {camera} sky = ((0.2, 0.4, 0.9), (0.9, 0.8, 0.7)); \
          recursion_depth = 4; integrator = {integrator}; }}\n{extra}"
-    );
-    let out = hscene_lang::compile(&source);
-    out.scene.unwrap_or_else(|| panic!("{:?}", out.diagnostics))
-}
-
-fn pixel(scene: &Scene) -> [f32; 3] {
-    let options = RenderOptions {
-        samples: Some(1),
-        ..RenderOptions::default()
-    };
-    hrender::render(scene, &options, &|_| {})
-        .unwrap()
-        .image
-        .get(0, 0)
+    ))
 }
 
 fn expected(u: DVec3) -> Rgb {

@@ -2,24 +2,7 @@
 //! their sphere emits (`PreparedLight::radiance`: Φ / (4π sinh² a)), under
 //! both integrators; point lights have no surface to see.
 
-use hrender::RenderOptions;
-use hscene_ir::Scene;
-
-fn compile(source: &str) -> Scene {
-    let out = hscene_lang::compile(source);
-    out.scene.unwrap_or_else(|| panic!("{:?}", out.diagnostics))
-}
-
-fn pixel(scene: &Scene) -> [f32; 3] {
-    let options = RenderOptions {
-        samples: Some(1),
-        ..RenderOptions::default()
-    };
-    hrender::render(scene, &options, &|_| {})
-        .unwrap()
-        .image
-        .get(0, 0)
-}
+use crate::one_pixel::{compile, pixel};
 
 fn radiance(phi: f64, a: f64) -> f64 {
     phi / (4.0 * std::f64::consts::PI * a.sinh().powi(2))
