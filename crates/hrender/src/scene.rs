@@ -499,6 +499,16 @@ impl PreparedScene {
         Some(sky.radiance(to_world.apply_ideal(&end).coords()))
     }
 
+    /// What a ray that leaves the scene brings, under either integrator:
+    /// the fog colour in fog, else the sky's radiance where the ray ends,
+    /// else the background.
+    pub(crate) fn leaving(&self, ray: &Ray) -> Rgb {
+        match &self.fog {
+            Some(fog) => fog.color,
+            None => self.sky_radiance(ray).unwrap_or(self.background),
+        }
+    }
+
     /// The nearest hit beyond `t_min` along the geodesic of `ray` in H³
     /// (in a quotient space, the nearest within the domain's tiles near
     /// the domain: [`PreparedScene::trace`] follows rays across faces).

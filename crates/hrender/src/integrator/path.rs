@@ -233,18 +233,6 @@ impl<'s> PathTracer<'s> {
         best
     }
 
-    /// Radiance brought by a ray that leaves the scene: the fog colour in
-    /// fog, else the sky where the ray ends, else the background.
-    fn leaving(&self, ray: &Ray) -> Rgb {
-        match &self.scene.fog {
-            Some(fog) => fog.color,
-            None => self
-                .scene
-                .sky_radiance(ray)
-                .unwrap_or(self.scene.background),
-        }
-    }
-
     /// The emitter that is object `index`, if it is one.
     fn emitter_of(&self, index: usize) -> Option<usize> {
         self.emitters.iter().position(|e| e.object == Some(index))
@@ -300,7 +288,7 @@ impl Integrator for PathTracer<'_> {
                 break;
             }
             let Some((hit, index)) = found else {
-                radiance += beta.tint(self.leaving(&ray));
+                radiance += beta.tint(self.scene.leaving(&ray));
                 break;
             };
             beta = self.fogged(&mut radiance, beta, travelled + hit.t);
@@ -323,7 +311,7 @@ impl Integrator for PathTracer<'_> {
             // arrives through the share of the way left open
             // (`horizon_fill.rs`).
             if let Some(open) = object.open_beyond(&hit) {
-                radiance += beta.tint(open.tint(self.leaving(&ray)));
+                radiance += beta.tint(open.tint(self.scene.leaving(&ray)));
                 break;
             }
             let entering = lorentz::dot(d, hit.normal) < 0.0;

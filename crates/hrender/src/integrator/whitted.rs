@@ -117,7 +117,7 @@ impl<'s> Whitted<'s> {
             }
         }
         let (hit, index) = match found {
-            Nearest::Miss => return self.leaving(ray),
+            Nearest::Miss => return self.scene.leaving(ray),
             Nearest::Failure => {
                 stats.failures += 1;
                 return self.scene.background;
@@ -163,7 +163,7 @@ impl<'s> Whitted<'s> {
         // Beyond a honeycomb's horizon what lies behind it arrives through
         // the share of the way left open (`horizon_fill.rs`).
         if let Some(open) = object.open_beyond(&hit) {
-            color += open.tint(self.leaving(ray));
+            color += open.tint(self.scene.leaving(ray));
         }
         let view = -d;
         // A material without diffuse and specular terms ignores the lights:
@@ -248,18 +248,6 @@ impl<'s> Whitted<'s> {
         match &self.scene.fog {
             Some(fog) => through_fog(fog, color, travelled + hit.t),
             None => color,
-        }
-    }
-
-    /// What a ray that leaves the scene brings: the fog colour in fog,
-    /// else the sky's radiance where the ray ends, else the background.
-    fn leaving(&self, ray: &Ray) -> Rgb {
-        match &self.scene.fog {
-            Some(fog) => fog.color,
-            None => self
-                .scene
-                .sky_radiance(ray)
-                .unwrap_or(self.scene.background),
         }
     }
 
