@@ -25,7 +25,7 @@ use hgeom::ray::{reflect, refract};
 use hscene_ir::{Material, Rgb};
 
 use crate::light_sampling::tangent_basis;
-use crate::tangent::renormalize;
+use crate::tangent::{mirrored, reflected, renormalize};
 
 /// The lobes of a material at a shading point.
 #[derive(Clone, Copy, Debug)]
@@ -171,7 +171,7 @@ impl Bsdf {
             let wi = if pick < p_diffuse {
                 cosine_direction(p, n, u[1], u[2])
             } else {
-                let r = renormalize(p, reflect(-wo, n));
+                let r = reflected(p, -wo, n);
                 phong_direction(p, r, self.exponent, u[1], u[2])
             };
             let cos = lorentz::dot(n, wi);
@@ -197,10 +197,7 @@ impl Bsdf {
         // is smooth glass, not cut crystal), unless it sends the ray to the
         // wrong side of the true surface; on every other surface the two
         // normals are the same.
-        let mut mirrored = renormalize(p, reflect(d, n));
-        if !(lorentz::dot(mirrored, g) > 0.0) {
-            mirrored = renormalize(p, reflect(d, g));
-        }
+        let mirrored = mirrored(p, d, n, g);
         if pick < p_diffuse + p_glossy + p_mirror {
             let w = self.mirror / p_mirror;
             return Some(Scatter {

@@ -10,7 +10,7 @@ use hgeom::HSphere;
 use hgeom::Ray;
 use hgeom::glam::DVec4;
 use hgeom::lorentz::{self, Separation};
-use hgeom::ray::{reflect, refract};
+use hgeom::ray::refract;
 
 use crate::absorption::{absorbed, sheet_filter};
 use hscene_ir::{Material, Rgb};
@@ -22,7 +22,7 @@ use crate::material::{Shading, reflectances};
 use crate::ray_budget::RayBudget;
 use crate::sampling::SampleStream;
 use crate::scene::{Nearest, PreparedLight, PreparedScene, T_MIN};
-use crate::tangent::{is_unit, renormalize};
+use crate::tangent::{is_unit, mirrored, renormalize};
 use crate::trace_stats::TraceStats;
 use hgeom::on_hyperboloid;
 
@@ -202,10 +202,7 @@ impl<'s> Whitted<'s> {
             } else {
                 lit_normal
             };
-            let mut mirrored = renormalize(p, reflect(d, bend));
-            if !(lorentz::dot(mirrored, n) > 0.0) {
-                mirrored = renormalize(p, reflect(d, n));
-            }
+            let mirrored = mirrored(p, d, bend, n);
             let reflected = Ray {
                 origin: p,
                 dir: mirrored,
