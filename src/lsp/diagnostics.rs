@@ -200,6 +200,22 @@ mod tests {
         "\"𝕏\"",
     ];
 
+    /// A lone CR ends a line for `check` (files are decoded so); the
+    /// server analyses an editor's buffer the same way (proptest found a
+    /// string cut by a lone CR reported once by the server, twice by
+    /// `check`).
+    #[test]
+    fn a_lone_cr_is_a_line_end_for_the_server_as_for_check() {
+        let text = "{\"\u{1d54f}\"\r\"\u{1d54f}\"".to_string();
+        let uri = lsp_types::Uri::from_str("untitled:cr").unwrap();
+        let mut docs = Documents::default();
+        docs.open(uri.clone(), text.clone(), 1);
+        let served = docs.get(&uri).unwrap().compiled.diagnostics.clone();
+        let decoded = hscene_lang::source::decode(text.into_bytes()).unwrap();
+        let checked = hscene_lang::compile(&decoded).diagnostics;
+        assert_eq!(served, checked);
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(64))]
 

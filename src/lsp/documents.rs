@@ -66,9 +66,12 @@ impl Documents {
                 files: files.clone(),
                 space: None,
             };
+            // Analysed as `check` reads the same file (a lone CR is a line
+            // end there; the offsets are the same).
+            let analysed = hscene_lang::source::lone_crs_as_lf(&text);
             (
-                hscene_lang::compile_with(&text, &options),
-                SymbolIndex::new(&hscene_lang::parse(&text).file),
+                hscene_lang::compile_with(&analysed, &options),
+                SymbolIndex::new(&hscene_lang::parse(&analysed).file),
             )
         };
         let lines = LineIndex::new(&text);

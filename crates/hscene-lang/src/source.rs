@@ -42,6 +42,17 @@ pub fn decode(bytes: Vec<u8>) -> Result<String, InvalidUtf8> {
     })
 }
 
+/// `text` with each lone CR turned into LF (CRLF stays as it is), as
+/// [`decode`] reads files: for text that arrives already decoded (an
+/// editor's buffer in the language server), so that it is analysed as
+/// `check` analyses the same file. Byte offsets do not move.
+pub fn lone_crs_as_lf(text: &str) -> String {
+    let mut bytes = text.as_bytes().to_vec();
+    normalize_line_ends(&mut bytes);
+    // CR and LF are ASCII: the bytes are still the UTF-8 they were.
+    String::from_utf8(bytes).unwrap_or_else(|_| text.to_owned())
+}
+
 /// Replaces every CR not followed by LF with LF, in place. CR and LF are
 /// ASCII, so this never breaks UTF-8 and never moves a byte.
 fn normalize_line_ends(bytes: &mut [u8]) {
