@@ -49,6 +49,10 @@
 //! as itself through the rest, `R = ρ (O L̄ + (1 - O) R)`, so
 //! `R = ρ O L̄ / (1 - ρ (1 - O))`, with `O` a whole line's openness
 //! (docs/rendering.md, "Beyond a honeycomb's horizon").
+//!
+//! The averaging ([`average_appearance`], [`seen_along`]) takes the sample
+//! lines' walk as a function: a quotient space's fill (`space_fill.rs`)
+//! walks the same lines across the domain's faces.
 
 use hgeom::glam::DVec3;
 use hgeom::{DEFAULT_HORIZON, HoneycombPart, Isometry, Ray, decode_honeycomb_part};
