@@ -57,13 +57,25 @@ fn a_space_beyond_its_horizon_shows_its_average_not_the_background() {
     let scene = compile(CAMERA, globals, "");
     let camera = hrender::canonical_frame(&scene.camera).expect("a camera");
     let prepared = PreparedScene::for_camera(&scene, &camera).expect("it prepares");
-    let traced = prepared.trace(
-        &hgeom::Ray::from_origin(hgeom::glam::DVec3::Z).unwrap(),
-        1e-9,
-    );
-    if matches!(traced.nearest, hrender::Nearest::Miss) {
-        assert!(traced.gave_up.is_some(), "a miss in a closed space gave up");
+    // Rays in many directions: those that meet nothing gave up, at the
+    // horizon (12 without a picture's pixels) or where their crossings ran
+    // out, and say where.
+    let mut misses = 0;
+    for k in 0..400 {
+        let (z, phi) = (1.0 - (2 * k + 1) as f64 / 400.0, 2.399963 * k as f64);
+        let r = (1.0 - z * z).sqrt();
+        let dir = hgeom::glam::DVec3::new(r * phi.cos(), r * phi.sin(), z);
+        let traced = prepared.trace(
+            &hgeom::Ray::from_origin(dir).expect("a unit direction"),
+            1e-9,
+        );
+        if let hrender::Nearest::Miss = traced.nearest {
+            misses += 1;
+            let at = traced.gave_up.expect("a miss in a closed space gave up");
+            assert!(at > 0.0 && at <= 12.0 + 1e-9, "{at}");
+        }
     }
+    assert!(misses > 0, "no ray reached the horizon");
     for integrator in ["whitted", "path"] {
         let scene = compile(CAMERA, &format!("{globals} integrator = {integrator};"), "");
         let pixels = render(&scene, 64);
