@@ -554,7 +554,8 @@ fn the_viewer_folds_the_eye_in_a_closed_space() {
 /// space: every frame renders (the camera is carried home whole,
 /// `space_prepare.rs`), none with a failed pixel, each showing the space's
 /// edges and ball (at least a tenth of the pixels; beyond the horizon the
-/// background shows, as at the origin).
+/// space's average appearance shows, as at the origin, not the
+/// background: `space_fill.rs`).
 #[test]
 fn a_camera_flown_far_through_a_closed_space_renders_every_frame() {
     let dir = tempfile::tempdir().unwrap();

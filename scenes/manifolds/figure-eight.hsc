@@ -3,7 +3,8 @@
 // The space has one cusp: the domain's five ideal vertices are all the
 // same end of the space, where the edges run together into stars that
 // never close (each star is the cusp seen down its throat). Rays that
-// run into a cusp stop at the horizon and take the background.
+// run into a cusp run out of face crossings and take the space's average
+// appearance beyond (docs/manifolds.md, "The horizon").
 //   hscene render scenes/manifolds/figure-eight.hsc -o figure-eight.png
 Globals {
     resolution = (480, 480);

@@ -25,6 +25,12 @@ pub struct HorizonFill {
 pub fn bucket_of(hit: &Hit, buckets: usize) -> usize {
     // w = cosh of the distance from the eye (the frame's origin).
     let from_eye = hit.point.w.max(1.0).acosh();
-    let rest = (DEFAULT_HORIZON - from_eye).max(0.0);
-    ((rest / STEP).round() as usize).min(buckets.saturating_sub(1))
+    bucket_for_rest(DEFAULT_HORIZON - from_eye, buckets)
+}
+
+/// The index, among `buckets` fills for `Δ = 0, STEP, ...`, of the one
+/// for the remaining length `rest` (a space's walk gives up at an arc
+/// length, not a point: `space_fill.rs`).
+pub fn bucket_for_rest(rest: f64, buckets: usize) -> usize {
+    ((rest.max(0.0) / STEP).round() as usize).min(buckets.saturating_sub(1))
 }

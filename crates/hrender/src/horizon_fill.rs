@@ -49,6 +49,10 @@
 //! as itself through the rest, `R = ρ (O L̄ + (1 - O) R)`, so
 //! `R = ρ O L̄ / (1 - ρ (1 - O))`, with `O` a whole line's openness
 //! (docs/rendering.md, "Beyond a honeycomb's horizon").
+//!
+//! The averaging ([`average_appearance`], [`seen_along`]) takes the sample
+//! lines' walk as a function: a quotient space's fill (`space_fill.rs`)
+//! walks the same lines across the domain's faces.
 
 use hgeom::glam::DVec3;
 use hgeom::{DEFAULT_HORIZON, HoneycombPart, Isometry, Ray, decode_honeycomb_part};
@@ -59,6 +63,7 @@ use crate::horizon_bucket::{HorizonFill, STEP};
 use crate::integrator::MAX_PATH_LENGTH;
 use crate::material::reflectances;
 use crate::scene::{PreparedObject, PreparedScene, T_MIN};
+use rayon::prelude::*;
 
 /// How many sample lines make a honeycomb's average appearance.
 const SAMPLES: usize = 1024;
@@ -71,13 +76,7 @@ pub const SAMPLE_START: f64 = 3.0;
 /// every remaining length (module docs), the materials appended to the
 /// scene's.
 pub fn fill_horizons(prepared: &mut PreparedScene, scene: &Scene, stages: &[Isometry]) {
-    // The path tracer lights surfaces by the sky, and its paths pass as
-    // many faces as they have bounces; Whitted lights by the ambient term
-    // and stops at the recursion depth.
-    let (depth, surround) = match scene.settings.integrator {
-        IntegratorKind::Path => (MAX_PATH_LENGTH, Some(mean_surround(scene))),
-        IntegratorKind::Whitted => (scene.settings.recursion_depth, None),
-    };
+    let (depth, surround) = depth_and_surround(scene);
     for (o, source) in prepared.objects.iter_mut().zip(&scene.objects) {
         if o.parts.is_none() {
             continue;
@@ -95,24 +94,83 @@ pub fn fill_horizons(prepared: &mut PreparedScene, scene: &Scene, stages: &[Isom
             horizon: Vec::new(),
             mapping: None,
         };
-        let beyond = average_appearance(&sampler, &prepared.materials, depth, surround);
-        let first = prepared.materials.len();
-        o.horizon = (beyond.iter().enumerate())
-            .map(|(k, (_, open))| HorizonFill {
-                material: first + k,
-                open: *open,
-            })
-            .collect();
-        prepared
-            .materials
-            .extend(beyond.into_iter().map(|(m, _)| m));
+        let materials = &prepared.materials;
+        let walk = |from_eye: &Ray| honeycomb_line(&sampler, materials, from_eye, depth);
+        let beyond = average_appearance(
+            walk,
+            &materials[sampler.material],
+            "the honeycomb beyond its horizon",
+            surround,
+        );
+        o.horizon = append_fills(&mut prepared.materials, beyond);
     }
+}
+
+/// How deep the sample lines look through transparent parts, and the
+/// mean radiance from beyond that lights the parts (the path tracer's
+/// only): the path tracer lights surfaces by the sky, and its paths pass
+/// as many faces as they have bounces; Whitted lights by the ambient term
+/// and stops at the recursion depth.
+pub(crate) fn depth_and_surround(scene: &Scene) -> (u32, Option<Rgb>) {
+    match scene.settings.integrator {
+        IntegratorKind::Path => (MAX_PATH_LENGTH, Some(mean_surround(scene))),
+        IntegratorKind::Whitted => (scene.settings.recursion_depth, None),
+    }
+}
+
+/// The fills of `beyond` (one per remaining length), their materials
+/// appended to `materials`.
+pub(crate) fn append_fills(
+    materials: &mut Vec<Material>,
+    beyond: Vec<(Material, Rgb)>,
+) -> Vec<HorizonFill> {
+    let first = materials.len();
+    let fills = (beyond.iter().enumerate())
+        .map(|(k, (_, open))| HorizonFill {
+            material: first + k,
+            open: *open,
+        })
+        .collect();
+    materials.extend(beyond.into_iter().map(|(m, _)| m));
+    fills
+}
+
+/// What the sample line along `from_eye` meets in the honeycomb
+/// `sampler` from [`SAMPLE_START`] on.
+fn honeycomb_line(
+    sampler: &PreparedObject,
+    materials: &[Material],
+    from_eye: &Ray,
+    max_depth: u32,
+) -> Vec<Met> {
+    let line = Ray {
+        origin: from_eye.at(SAMPLE_START),
+        dir: from_eye.tangent_at(SAMPLE_START),
+    };
+    let mut t_min = T_MIN;
+    let next = || {
+        let hit = sampler
+            .intersect(&line, t_min, f64::INFINITY)
+            .filter(|h| decode_honeycomb_part(h.part).0 != HoneycombPart::Horizon)?;
+        t_min = hit.t + T_MIN;
+        let m = &materials[sampler.material_of(&hit)];
+        let (ambient, diffuse) = reflectances(sampler, m, &hit);
+        let cos = hgeom::lorentz::dot(line.tangent_at(hit.t), hit.normal);
+        Some(Seen {
+            s: hit.t,
+            material: m,
+            ambient,
+            diffuse,
+            filter: sheet_filter(m, cos),
+        })
+    };
+    seen_along(next, max_depth)
 }
 
 /// The radiance arriving from beyond every honeycomb, averaged over all
 /// directions: the fog colour in fog, else the sky's mean over the sphere,
 /// else the background.
-fn mean_surround(scene: &Scene) -> Rgb {
+pub(crate) fn mean_surround(scene: &Scene) -> Rgb {
     let settings = &scene.settings;
     if let Some(fog) = &settings.fog {
         return fog.color;
@@ -138,16 +196,18 @@ struct Tally {
     diffuse: Vec<(usize, Rgb, Rgb)>,
 }
 
-/// The average appearance of the honeycomb `sampler` (the scene's
-/// honeycomb walked to distance 12 from the eye, with its part
-/// materials) along the rest of the way to 12, and how open that rest is:
-/// one material and one openness for each `Δ = k STEP`,
-/// `k = 0..=12/STEP` (module docs). With `surround` (the path tracer's
-/// mean radiance from beyond), the parts glow as lit by it.
-pub fn average_appearance(
-    sampler: &PreparedObject,
-    materials: &[Material],
-    max_depth: u32,
+/// The average appearance, along the rest of the way to distance 12, of
+/// what the sample lines meet, and how open that rest is: one material
+/// (`base` with only ambient and emission terms, called `name`) and one
+/// openness for each `Δ = k STEP`, `k = 0..=12/STEP` (module docs).
+/// `walk` gives what the line along a direction from the eye meets from
+/// [`SAMPLE_START`] on (a honeycomb's parts, or a space's objects and
+/// rods across its faces: `space_fill.rs`). With `surround` (the path
+/// tracer's mean radiance from beyond), the parts glow as lit by it.
+pub(crate) fn average_appearance(
+    walk: impl Fn(&Ray) -> Vec<Met> + Sync,
+    base: &Material,
+    name: &str,
     surround: Option<Rgb>,
 ) -> Vec<(Material, Rgb)> {
     let buckets = (DEFAULT_HORIZON / STEP).round() as usize + 1;
@@ -158,22 +218,21 @@ pub fn average_appearance(
         open: vec![Rgb::new(1.0, 1.0, 1.0) * SAMPLES as f64; buckets],
         diffuse: Vec::new(),
     };
-    for k in 0..SAMPLES {
-        let from_eye = Ray::from_origin_unchecked(fibonacci_direction(k, SAMPLES));
-        let line = Ray {
-            origin: from_eye.at(SAMPLE_START),
-            dir: from_eye.tangent_at(SAMPLE_START),
-        };
-        for met in seen_along(sampler, materials, &line, max_depth) {
-            // A part met at arc length s counts for every Δ > s.
-            let first = ((met.s / STEP).floor() as usize + 1).min(buckets);
-            for b in first..buckets {
-                t.ambient[b] += met.ambient;
-                t.emission[b] += met.emission;
-                t.open[b] += met.stopped * -1.0;
-            }
-            t.diffuse.push((first, met.diffuse, met.weight));
+    // The lines are walked in parallel and summed in order: the sums do
+    // not depend on the threads.
+    let lines: Vec<Vec<Met>> = (0..SAMPLES)
+        .into_par_iter()
+        .map(|k| walk(&Ray::from_origin_unchecked(fibonacci_direction(k, SAMPLES))))
+        .collect();
+    for met in lines.into_iter().flatten() {
+        // A part met at arc length s counts for every Δ > s.
+        let first = ((met.s / STEP).floor() as usize + 1).min(buckets);
+        for b in first..buckets {
+            t.ambient[b] += met.ambient;
+            t.emission[b] += met.emission;
+            t.open[b] += met.stopped * -1.0;
         }
+        t.diffuse.push((first, met.diffuse, met.weight));
     }
     let share = 1.0 / SAMPLES as f64;
     // The lines are 12 - SAMPLE_START long: what lies beyond that length
@@ -197,7 +256,7 @@ pub fn average_appearance(
     (0..buckets)
         .map(|b| {
             let material = Material {
-                name: Some("the honeycomb beyond its horizon".to_owned()),
+                name: Some(name.to_owned()),
                 ambient: t.ambient[b] * share,
                 diffuse: Rgb::BLACK,
                 specular: Rgb::BLACK,
@@ -206,7 +265,7 @@ pub fn average_appearance(
                 emission: t.emission[b] * share,
                 absorption: Rgb::BLACK,
                 texture: None,
-                ..materials[sampler.material].clone()
+                ..base.clone()
             };
             (material, clamp_unit(t.open[b] * share))
         })
@@ -244,7 +303,7 @@ fn clamp_unit(c: Rgb) -> Rgb {
 /// A part a sample line met: where, what it adds (already weighted by
 /// the transparent parts before it) and how much of the line's light
 /// from beyond it stops (the weight before it less the weight after).
-struct Met {
+pub(crate) struct Met {
     s: f64,
     ambient: Rgb,
     emission: Rgb,
@@ -255,48 +314,54 @@ struct Met {
     weight: Rgb,
 }
 
-/// The parts a line meets in the honeycomb, through transparent ones, up
-/// to the recursion depth, until an opaque one or the walk's end. The
-/// line's light from beyond is stopped by opaque parts, filtered by
-/// transparent ones, and stopped where the recursion ends (Whitted traces
-/// no ray on from a hit at the last depth).
-fn seen_along(
-    object: &PreparedObject,
-    materials: &[Material],
-    line: &Ray,
+/// A part a sample line reaches, as its walk finds it.
+pub(crate) struct Seen<'m> {
+    /// The arc length from the line's start.
+    pub s: f64,
+    /// The part's material.
+    pub material: &'m Material,
+    /// Its ambient and diffuse reflectances there (textures applied).
+    pub ambient: Rgb,
+    pub diffuse: Rgb,
+    /// What is left of light that passes this crossing, besides the
+    /// material's transmission: a tinted sheet's filter, or a solid's
+    /// absorption over the way inside when the line leaves it.
+    pub filter: Rgb,
+}
+
+/// The parts a line meets, `next` giving each in turn, through
+/// transparent ones, up to the recursion depth, until an opaque one or
+/// the walk's end. The line's light from beyond is stopped by opaque
+/// parts, filtered by transparent ones, and stopped where the recursion
+/// ends (Whitted traces no ray on from a hit at the last depth).
+pub(crate) fn seen_along<'m>(
+    mut next: impl FnMut() -> Option<Seen<'m>>,
     max_depth: u32,
 ) -> Vec<Met> {
     let mut met = Vec::new();
     let mut weight = Rgb::new(1.0, 1.0, 1.0);
-    let mut t_min = T_MIN;
     for depth in 0..=max_depth {
-        let Some(hit) = object
-            .intersect(line, t_min, f64::INFINITY)
-            .filter(|h| decode_honeycomb_part(h.part).0 != HoneycombPart::Horizon)
-        else {
+        let Some(hit) = next() else {
             break;
         };
-        let m = &materials[object.material_of(&hit)];
-        let (a, d) = reflectances(object, m, &hit);
-        let cos = hgeom::lorentz::dot(line.tangent_at(hit.t), hit.normal);
+        let m = hit.material;
         let after = if depth == max_depth {
             Rgb::BLACK
         } else {
-            weight.tint(sheet_filter(m, cos)) * m.transmission
+            weight.tint(hit.filter) * m.transmission
         };
         met.push(Met {
-            s: hit.t,
-            ambient: a.tint(weight),
+            s: hit.s,
+            ambient: hit.ambient.tint(weight),
             emission: m.emission.tint(weight),
             stopped: weight + after * -1.0,
-            diffuse: d,
+            diffuse: hit.diffuse,
             weight,
         });
         weight = after;
         if weight.is_black() {
             break;
         }
-        t_min = hit.t + T_MIN;
     }
     met
 }

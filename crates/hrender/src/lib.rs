@@ -46,6 +46,7 @@ mod render_loop;
 mod sampling;
 mod scene;
 mod space_domain;
+mod space_fill;
 mod space_prepare;
 mod space_walk;
 mod spherical_triangle;

@@ -1,6 +1,7 @@
 //! Preparing a scene for tracing: everything moved into the canonical
 //! frame and the hierarchy built (`scene.rs`), then each honeycomb's
-//! average appearance beyond its horizon (`horizon_fill.rs`).
+//! average appearance beyond its horizon (`horizon_fill.rs`), and a
+//! quotient space's beyond its walk's (`space_fill.rs`).
 
 use hgeom::Isometry;
 use hscene_ir::Scene;
@@ -9,6 +10,7 @@ use hscene_ir::view::{CanonicalFrame, PixelFootprint};
 use crate::error::RenderError;
 use crate::horizon_fill::fill_horizons;
 use crate::scene::PreparedScene;
+use crate::space_fill::fill_space;
 use crate::space_prepare::unfold;
 
 impl PreparedScene {
@@ -54,10 +56,12 @@ fn prepared(
     if let Some(space) = &scene.settings.space {
         // In a quotient space the picture-wide horizon is the walk's own
         // (`space_prepare.rs`); honeycombs there are the domain's edges,
-        // walked piece by piece, with nothing beyond to fill.
+        // walked piece by piece. Beyond the walk's horizon the space's
+        // average fills in (`space_fill.rs`).
         let unfolded = unfold(scene, space, stages, footprint)?;
         let mut prepared = PreparedScene::staged(&unfolded.scene, &unfolded.stages, None)?;
         prepared.space = Some(unfolded.space);
+        fill_space(&mut prepared, &unfolded.scene);
         return Ok(prepared);
     }
     let mut prepared = PreparedScene::staged(scene, stages, footprint)?;

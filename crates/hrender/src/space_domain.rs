@@ -12,6 +12,8 @@ use hgeom::{QuotientSpace, Ray};
 
 use hscene_ir::MAX_SPACE_CROSSINGS;
 
+use crate::horizon_bucket::HorizonFill;
+
 /// The space a prepared scene is in.
 #[derive(Clone, Debug)]
 pub struct PreparedSpace {
@@ -26,6 +28,9 @@ pub struct PreparedSpace {
     /// images share it; the domain's rods (`domain = w, #M`) are one more
     /// than the last object.
     pub numbers: Vec<usize>,
+    /// What a walk that gives up draws, by the rest of the way to
+    /// distance 12 (`space_fill.rs`; empty until it is measured).
+    pub fill: Vec<HorizonFill>,
 }
 
 impl PreparedSpace {

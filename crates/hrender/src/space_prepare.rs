@@ -131,6 +131,7 @@ pub(crate) fn unfold(
             space: q.transformed(&to_canonical),
             horizon,
             numbers,
+            fill: Vec::new(),
         },
     })
 }

@@ -19,6 +19,11 @@ pub struct Traced {
     pub travelled: f64,
     /// How many faces the ray crossed (0 in H³).
     pub crossings: u32,
+    /// For a miss in a quotient space, the arc length along the whole
+    /// path where the walk gave up (at the horizon or the crossing cap):
+    /// the rest of the way to distance 12 is drawn in the space's average
+    /// appearance (`space_fill.rs`). `None` in H³ and for a hit.
+    pub gave_up: Option<f64>,
 }
 
 impl PreparedScene {
@@ -30,7 +35,8 @@ impl PreparedScene {
     /// The nearest hit beyond `t_min` along `ray`; in a quotient space the
     /// ray is carried across the faces it leaves the domain by until it
     /// meets something, reaches the horizon or has crossed
-    /// [`MAX_SPACE_CROSSINGS`] faces (both a miss: `docs/manifolds.md`).
+    /// [`MAX_SPACE_CROSSINGS`] faces (both a miss that reports where the
+    /// walk gave up, [`Traced::gave_up`]: `docs/manifolds.md`).
     pub fn trace(&self, ray: &Ray, t_min: f64) -> Traced {
         self.trace_recording(ray, t_min, |_| {})
     }
@@ -38,20 +44,36 @@ impl PreparedScene {
     /// [`PreparedScene::trace`], calling `crossed(face)` for each face the
     /// ray leaves the domain by, in order (the word of the group element
     /// that takes the tile it meets onto the domain: `docs/manifolds.md`).
-    pub fn trace_recording(&self, ray: &Ray, t_min: f64, mut crossed: impl FnMut(usize)) -> Traced {
+    pub fn trace_recording(&self, ray: &Ray, t_min: f64, crossed: impl FnMut(usize)) -> Traced {
+        let horizon = self.space.as_ref().map_or(0.0, |s| s.horizon);
+        self.walk(ray, t_min, horizon, crossed)
+    }
+
+    /// [`PreparedScene::trace_recording`] with the walk stopped at arc
+    /// length `horizon` (the space's own, or distance 12 for the sample
+    /// lines of its average appearance, `space_fill.rs`).
+    pub(crate) fn walk(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        horizon: f64,
+        mut crossed: impl FnMut(usize),
+    ) -> Traced {
         let Some(space) = &self.space else {
             return Traced {
                 nearest: self.nearest(ray, t_min),
                 ray: *ray,
                 travelled: 0.0,
                 crossings: 0,
+                gave_up: None,
             };
         };
-        let miss = |ray: Ray, travelled: f64, crossings: u32| Traced {
+        let miss = |ray: Ray, travelled: f64, crossings: u32, at: f64| Traced {
             nearest: Nearest::Miss,
             ray,
             travelled,
             crossings,
+            gave_up: Some(at),
         };
         if !(ray.origin.is_finite() && ray.dir.is_finite()) {
             return Traced {
@@ -59,14 +81,15 @@ impl PreparedScene {
                 ray: *ray,
                 travelled: 0.0,
                 crossings: 0,
+                gave_up: None,
             };
         }
         let (mut ray, mut travelled, mut lo) = (*ray, 0.0, t_min);
         let mut crossings = 0;
         for _ in 0..=MAX_SPACE_CROSSINGS {
-            let left = space.horizon - travelled;
+            let left = horizon - travelled;
             if !(left > lo) {
-                break;
+                return miss(ray, travelled, crossings, horizon);
             }
             let exit = space.space.exit(&ray).filter(|c| c.t < left);
             let hi = exit.map_or(left, |c| c.t);
@@ -81,11 +104,13 @@ impl PreparedScene {
                         ray,
                         travelled,
                         crossings,
+                        gave_up: None,
                     };
                 }
             }
+            // No face before the horizon: the walk ends there.
             let Some(c) = exit else {
-                break;
+                return miss(ray, travelled, crossings, horizon);
             };
             crossed(c.face);
             crossings += 1;
@@ -93,6 +118,8 @@ impl PreparedScene {
             travelled += c.t;
             lo = (lo - c.t).max(0.0);
         }
-        miss(ray, travelled, crossings)
+        // The crossings ran out (a ray down a cusp crosses ever smaller
+        // tiles): the walk gives up where it is.
+        miss(ray, travelled, crossings, travelled)
     }
 }

@@ -24,6 +24,7 @@ mod optics;
 mod path_tracer;
 mod robustness;
 mod sky;
+mod space_fill;
 mod spaces;
 mod textures;
 mod view_and_fog;

@@ -58,8 +58,8 @@ fn is_black(p: &[f32; 3]) -> bool {
 
 /// From inside, `domain = w, #M` with no objects draws what
 /// `Honeycomb {p,q,r}, #M, edges = w` draws: every pixel that both draw
-/// is the same, and where one draws an edge the other does too (but at
-/// the honeycomb's horizon, which it fills with its average appearance).
+/// is the same, and where one draws an edge the other does too (each
+/// fills beyond its horizon with its own average appearance).
 #[test]
 fn the_domain_draws_the_honeycombs_edges() {
     for (space, symbol, camera) in [

@@ -287,6 +287,14 @@ impl Integrator for PathTracer<'_> {
                     beta_fogged.tint(self.emitters[k].radiance) * self.emission_weight(k, last);
                 break;
             }
+            // Where a walk in a space gave up, the space's average for the
+            // rest of the way: its parts' glow under the surround, and what
+            // lies beyond through its openness (`space_fill.rs`).
+            if let Some((m, open, at)) = self.scene.beyond_space(&traced) {
+                let beta_fogged = self.fogged(&mut radiance, beta, at);
+                radiance += beta_fogged.tint(m.emission + open.tint(self.scene.leaving(&ray)));
+                break;
+            }
             let Some((hit, index)) = found else {
                 radiance += beta.tint(self.scene.leaving(&ray));
                 break;

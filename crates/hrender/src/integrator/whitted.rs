@@ -22,6 +22,7 @@ use crate::material::{Shading, reflectances};
 use crate::ray_budget::RayBudget;
 use crate::sampling::SampleStream;
 use crate::scene::{Nearest, PreparedLight, PreparedScene, T_MIN};
+use crate::space_walk::Traced;
 use crate::tangent::{is_unit, mirrored, renormalize};
 use crate::trace_stats::TraceStats;
 use hgeom::on_hyperboloid;
@@ -117,7 +118,13 @@ impl<'s> Whitted<'s> {
             }
         }
         let (hit, index) = match found {
-            Nearest::Miss => return self.scene.leaving(ray),
+            // Where a walk in a space gave up, the space's average
+            // appearance for the rest of the way (`space_fill.rs`).
+            Nearest::Miss => {
+                return self
+                    .beyond_space(&traced)
+                    .unwrap_or_else(|| self.scene.leaving(ray));
+            }
             Nearest::Failure => {
                 stats.failures += 1;
                 return self.scene.background;
@@ -246,6 +253,21 @@ impl<'s> Whitted<'s> {
             Some(fog) => through_fog(fog, color, travelled + hit.t),
             None => color,
         }
+    }
+
+    /// What a ray whose walk in a quotient space gave up sees: the space's
+    /// average ambient and emission over the rest of the way to distance
+    /// 12, and through its openness what lies beyond, fogged to where the
+    /// walk stopped (`space_fill.rs`). `None` for every other miss.
+    fn beyond_space(&self, traced: &Traced) -> Option<Rgb> {
+        let (m, open, at) = self.scene.beyond_space(traced)?;
+        let color = m.ambient.tint(self.scene.ambient)
+            + m.emission
+            + open.tint(self.scene.leaving(&traced.ray));
+        Some(match &self.scene.fog {
+            Some(fog) => through_fog(fog, color, at),
+            None => color,
+        })
     }
 
     /// What `light`, emitting from `from` as a point source, gives the
