@@ -5,8 +5,12 @@ import subprocess
 import sys
 import time
 
+# The child takes Ctrl-C as an interactive Python does. A process started
+# by a non-interactive shell's background job (a CI runner's, `nohup ... &`)
+# inherits SIGINT ignored, and Python then installs no handler of its own.
 CHILD = r"""
-import sys, time
+import signal, sys, time
+signal.signal(signal.SIGINT, signal.default_int_handler)
 import hscene
 scene = hscene.Scene.from_str('''
 Globals { resolution = (2000, 2000); samples = 64; to = (0, 0, 0.3); fov = 90; recursion_depth = 8; }
