@@ -43,7 +43,7 @@ pub use integrator::IntegratorKind;
 pub use lens::{Lens, MAX_APERTURE, MAX_FOCUS, confusion_angle};
 pub use material::{ImageTexture, Material, MaterialId, Pattern, Texture};
 pub use object::{Object, move_object};
-pub use placement::{first_too_far, light_in_frame, traceable_in_frame};
+pub use placement::{first_too_far, light_in_frame, surely_traceable_near, traceable_in_frame};
 pub use scene::{Fog, Light, PointRecord, Scene, Settings};
 pub use shape::{BoxedSurface, MESH_TRIANGLES_PER_PRIMITIVE, Shape, Surfaces, mesh_budget_cost};
 pub use sky::{Sky, equirectangular};

@@ -8,7 +8,7 @@
 
 use super::Lowerer;
 use crate::diagnostic::{Code, Diagnostic};
-use crate::ir::{Camera, light_in_frame, traceable_in_frame};
+use crate::ir::{Camera, light_in_frame, surely_traceable_near, traceable_in_frame};
 use crate::view::canonical_frame;
 
 const HELP: &str = "f64 holds points up to about 36 from the eye, and the eye and this may each be 36 from the origin on opposite sides: move one nearer the other";
@@ -23,9 +23,12 @@ impl Lowerer<'_> {
         let Some(frame) = canonical_frame(camera) else {
             return;
         };
+        let eye = camera.eye.to_hyperboloid();
         let mut found = Vec::new();
         for (object, span) in &self.objects {
-            if !traceable_in_frame(&object.shape, &frame.stages) {
+            if !surely_traceable_near(&object.shape, eye)
+                && !traceable_in_frame(&object.shape, &frame.stages)
+            {
                 found.push(
                     Diagnostic::new(
                         Code::NumericFailure,
