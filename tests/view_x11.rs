@@ -420,3 +420,49 @@ fn p_shows_progress_in_the_title_and_escape_cancels_it() {
         .collect();
     assert!(left.is_empty(), "files left behind: {left:?}");
 }
+
+/// `Home` takes the eye back to the scene's camera after a flight: the view
+/// is the first one again (it used to do nothing, the shown scene's camera
+/// being kept at the pose).
+#[test]
+fn home_returns_to_the_scenes_camera() {
+    if !x11_tools() {
+        return;
+    }
+    let display = Display::start(2);
+    let dir = tempfile::tempdir().unwrap();
+    let scene: PathBuf = dir.path().join("home.hsc");
+    std::fs::write(&scene, scene_text(START_CAMERA, "(0.9, 0.2, 0.1)")).unwrap();
+    let child = Command::new(env!("CARGO_BIN_EXE_hscene"))
+        .args([
+            "view",
+            scene.to_str().unwrap(),
+            "--samples",
+            &SAMPLES.to_string(),
+        ])
+        .current_dir(dir.path())
+        .env("DISPLAY", &display.name)
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let _viewer = Killed(child);
+    let id = display.window();
+    let converged = format!("{SAMPLES}/{SAMPLES} spp");
+    display.wait_title(&id, &converged);
+    let first = display.screenshot(&id, dir.path(), "first");
+    display.keys(&id, &["w", "w", "Right"]);
+    sleep(Duration::from_millis(300));
+    display.wait_title(&id, &converged);
+    let moved = display.screenshot(&id, dir.path(), "moved");
+    assert!(
+        difference(&first, &moved) > 2.0,
+        "the view did not change after the move"
+    );
+    display.keys(&id, &["Home"]);
+    sleep(Duration::from_millis(300));
+    display.wait_title(&id, &converged);
+    let home = display.screenshot(&id, dir.path(), "home");
+    let d = difference(&first, &home);
+    assert!(d < 0.5, "after Home the view is {d} levels from the first");
+}

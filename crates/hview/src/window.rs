@@ -185,8 +185,12 @@ impl App<'_> {
         self.stalled = false;
     }
 
+    /// Back to the scene's own camera for the frame shown. Not the shown
+    /// scene's camera: the loop keeps that one at the pose, so `Home` did
+    /// nothing.
     fn reset(&mut self) {
-        if let Some(p) = Pose::of(&self.scene.camera) {
+        let own = self.base.frame(self.frame_index).ok().map(|s| s.camera);
+        if let Some(p) = own.as_ref().and_then(Pose::of) {
             self.pose = p;
         }
         self.flown = false;
