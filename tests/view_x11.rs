@@ -223,6 +223,26 @@ fn x11_tools() -> bool {
     true
 }
 
+/// Writes the starting scene (red ball, `START_CAMERA`) to `scene` and
+/// starts `hscene view` on it in `display`, its output streams piped.
+fn view_start_scene(display: &Display, scene: &Path) -> Killed {
+    std::fs::write(scene, scene_text(START_CAMERA, "(0.9, 0.2, 0.1)")).unwrap();
+    let child = Command::new(env!("CARGO_BIN_EXE_hscene"))
+        .args([
+            "view",
+            scene.to_str().unwrap(),
+            "--samples",
+            &SAMPLES.to_string(),
+        ])
+        .current_dir(scene.parent().unwrap())
+        .env("DISPLAY", &display.name)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    Killed(child)
+}
+
 #[test]
 fn the_window_flies_converges_to_the_render_and_follows_edits() {
     if !x11_tools() {
@@ -231,21 +251,7 @@ fn the_window_flies_converges_to_the_render_and_follows_edits() {
     let display = Display::start(0);
     let dir = tempfile::tempdir().unwrap();
     let scene: PathBuf = dir.path().join("live.hsc");
-    std::fs::write(&scene, scene_text(START_CAMERA, "(0.9, 0.2, 0.1)")).unwrap();
-    let child = Command::new(env!("CARGO_BIN_EXE_hscene"))
-        .args([
-            "view",
-            scene.to_str().unwrap(),
-            "--samples",
-            &SAMPLES.to_string(),
-        ])
-        .current_dir(dir.path())
-        .env("DISPLAY", &display.name)
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    let mut viewer = Killed(child);
+    let mut viewer = view_start_scene(&display, &scene);
     let id = display.window();
     let converged = format!("{SAMPLES}/{SAMPLES} spp");
 
@@ -432,21 +438,7 @@ fn home_returns_to_the_scenes_camera() {
     let display = Display::start(2);
     let dir = tempfile::tempdir().unwrap();
     let scene: PathBuf = dir.path().join("home.hsc");
-    std::fs::write(&scene, scene_text(START_CAMERA, "(0.9, 0.2, 0.1)")).unwrap();
-    let child = Command::new(env!("CARGO_BIN_EXE_hscene"))
-        .args([
-            "view",
-            scene.to_str().unwrap(),
-            "--samples",
-            &SAMPLES.to_string(),
-        ])
-        .current_dir(dir.path())
-        .env("DISPLAY", &display.name)
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    let _viewer = Killed(child);
+    let _viewer = view_start_scene(&display, &scene);
     let id = display.window();
     let converged = format!("{SAMPLES}/{SAMPLES} spp");
     display.wait_title(&id, &converged);
