@@ -91,6 +91,7 @@ pub fn fill_horizons(prepared: &mut PreparedScene, scene: &Scene, stages: &[Isom
             to_local: o.to_local,
             ball: None,
             faces: Vec::new(),
+            faces_by_part: false,
             horizon: Vec::new(),
             mapping: None,
         };

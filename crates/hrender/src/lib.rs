@@ -35,6 +35,7 @@ mod image_texture;
 mod integrator;
 mod light_sampling;
 mod light_select;
+mod light_tree;
 mod material;
 mod nets;
 mod noise;

@@ -36,6 +36,8 @@ use hgeom::glam::DVec4;
 use hgeom::lorentz;
 use hscene_ir::Rgb;
 
+use crate::light_tree::{LightTree, UnitBound};
+
 /// A light unit's own kind of bound.
 #[derive(Clone, Copy, Debug)]
 enum Shape {
@@ -144,6 +146,31 @@ impl LightUnit {
         })
     }
 
+    /// Its bounding ball and its importance times its fall-off, for the
+    /// tree (`light_tree.rs`).
+    fn bound(&self) -> UnitBound {
+        let (power, cap, sinh_reach) = match self.shape {
+            Shape::Point {
+                near_sinh2,
+                cosh_reach,
+            } => (
+                self.strength,
+                self.strength / near_sinh2.max(MIN_SINH2),
+                (cosh_reach * cosh_reach - 1.0).max(0.0).sqrt(),
+            ),
+            // `sinh² a / sinh² d < 1` outside the sphere.
+            Shape::Sphere { sinh2 } => (self.strength * sinh2, self.strength, f64::INFINITY),
+            Shape::Triangle { area } => (self.strength * area, self.strength * TAU, f64::INFINITY),
+        };
+        UnitBound {
+            centre: self.centre,
+            radius: self.sinh_r.asinh(),
+            power,
+            cap,
+            sinh_reach,
+        }
+    }
+
     /// What the unit can bring to the point `p` with shading normal `n`
     /// (up to a common factor), 0 only when it brings nothing.
     #[inline]
@@ -186,11 +213,36 @@ impl LightUnit {
     }
 }
 
-/// All the light units of a scene, and the draw among them.
+/// All the light units of a scene, and the draw among them: a linear pass
+/// over *groups*, each one unit or the triangles of one emissive mesh
+/// under a bounding-ball tree (`light_tree.rs`), then, in a tree, a walk
+/// down it. A linear pass over every unit looks at each at each vertex;
+/// a tree over a light's images in a quotient space, or over lights far
+/// apart, judges whole branches by their balls, which H³'s exponential
+/// fall-off makes too coarse (measured: twice the noise of the linear
+/// pass on a space's light images), so only a mesh's triangles, close
+/// together, share one.
 #[derive(Debug, Default)]
 pub struct LightSelector {
     units: Vec<LightUnit>,
+    groups: Vec<Group>,
+    /// The group of each unit.
+    group_of: Vec<u32>,
 }
+
+#[derive(Debug)]
+enum Group {
+    /// One unit.
+    Single(usize),
+    /// Units of one object under a tree.
+    Tree {
+        tree: LightTree,
+        object: Option<usize>,
+    },
+}
+
+/// The fewest triangles of one emitter that get a tree.
+pub const TREE_MIN_UNITS: usize = 64;
 
 /// A unit drawn at a vertex.
 #[derive(Clone, Copy, Debug)]
@@ -202,9 +254,46 @@ pub struct Choice {
 }
 
 impl LightSelector {
-    /// The selector over `units`.
-    pub fn new(units: Vec<LightUnit>) -> LightSelector {
-        LightSelector { units }
+    /// The selector over `units`, those of each range of `trees` (first
+    /// unit, count: the triangles of one object) under a tree when there
+    /// are at least [`TREE_MIN_UNITS`] of them.
+    pub fn new(units: Vec<LightUnit>, trees: &[(usize, usize)]) -> LightSelector {
+        let mut groups = Vec::new();
+        let mut group_of = vec![0u32; units.len()];
+        let mut k = 0;
+        let mut ranges = trees
+            .iter()
+            .filter(|(_, len)| *len >= TREE_MIN_UNITS)
+            .copied()
+            .peekable();
+        while k < units.len() {
+            let g = groups.len() as u32;
+            match ranges.peek() {
+                Some(&(first, len)) if first == k && first + len <= units.len() => {
+                    ranges.next();
+                    let bounds: Vec<UnitBound> = units[first..first + len]
+                        .iter()
+                        .map(LightUnit::bound)
+                        .collect();
+                    groups.push(Group::Tree {
+                        tree: LightTree::build(&bounds, first),
+                        object: units[first].object,
+                    });
+                    group_of[first..first + len].fill(g);
+                    k += len;
+                }
+                _ => {
+                    groups.push(Group::Single(k));
+                    group_of[k] = g;
+                    k += 1;
+                }
+            }
+        }
+        LightSelector {
+            units,
+            groups,
+            group_of,
+        }
     }
 
     /// The importance of unit `k` at `p` (normal `n`) for a vertex on
@@ -218,16 +307,27 @@ impl LightSelector {
         u.importance(p, n)
     }
 
-    /// The sum of every unit's importance at the vertex.
+    /// The importance of group `g` at the vertex.
+    #[inline]
+    fn group_importance(&self, g: &Group, p: DVec4, n: DVec4, own: usize) -> f64 {
+        match g {
+            Group::Single(k) => self.importance(*k, p, n, own),
+            Group::Tree { object, .. } if *object == Some(own) => 0.0,
+            Group::Tree { tree, .. } => tree.root_importance(p, n),
+        }
+    }
+
+    /// The sum of every group's importance at the vertex.
     pub fn total(&self, p: DVec4, n: DVec4, own: usize) -> f64 {
-        (0..self.units.len())
-            .map(|k| self.importance(k, p, n, own))
+        self.groups
+            .iter()
+            .map(|g| self.group_importance(g, p, n, own))
             .sum()
     }
 
-    /// One unit drawn with the uniform `u` in proportion to its importance,
-    /// given the vertex's `total` ([`LightSelector::total`]); `None` when no
-    /// unit can contribute.
+    /// One unit drawn with the uniform `u` in proportion to its group's
+    /// importance (then down the group's tree), given the vertex's `total`
+    /// ([`LightSelector::total`]); `None` when no unit can contribute.
     pub fn select(&self, p: DVec4, n: DVec4, own: usize, total: f64, u: f64) -> Option<Choice> {
         if !(total > 0.0 && total.is_finite()) {
             return None;
@@ -235,23 +335,29 @@ impl LightSelector {
         let target = u * total;
         let mut sum = 0.0;
         let mut last = None;
-        for k in 0..self.units.len() {
-            let w = self.importance(k, p, n, own);
+        for g in &self.groups {
+            let w = self.group_importance(g, p, n, own);
             if w > 0.0 {
                 sum += w;
-                last = Some((k, w));
+                last = Some((g, w));
                 if target < sum {
                     break;
                 }
             }
         }
         // Rounding may leave `target` at or past the running sum: the last
-        // unit with any importance takes it.
-        let (unit, w) = last?;
-        Some(Choice {
-            unit,
-            pmf: w / total,
-        })
+        // group with any importance takes it.
+        let (g, w) = last?;
+        let pmf = w / total;
+        match g {
+            Group::Single(unit) => Some(Choice { unit: *unit, pmf }),
+            Group::Tree { tree, .. } => {
+                // Where `target` fell within the group, as a new uniform.
+                let rest = ((target - (sum - w)) / w).clamp(0.0, 1.0 - f64::EPSILON);
+                tree.select(p, n, rest, |k| self.importance(k, p, n, own))
+                    .map(|(unit, q)| Choice { unit, pmf: pmf * q })
+            }
+        }
     }
 
     /// The probability that a vertex with the given `total` draws unit `k`.
@@ -260,7 +366,23 @@ impl LightSelector {
         if !(total > 0.0 && total.is_finite()) {
             return 0.0;
         }
-        self.importance(k, p, n, own) / total
+        let Some(g) = self
+            .group_of
+            .get(k)
+            .and_then(|&g| self.groups.get(g as usize))
+        else {
+            return 0.0;
+        };
+        match g {
+            Group::Single(_) => self.importance(k, p, n, own) / total,
+            Group::Tree { tree, .. } => {
+                let w = self.group_importance(g, p, n, own);
+                if !(w > 0.0) {
+                    return 0.0;
+                }
+                (w / total) * tree.pmf(k, p, n, |j| self.importance(j, p, n, own))
+            }
+        }
     }
 }
 
@@ -270,6 +392,7 @@ mod tests {
     use crate::sampling::SampleStream;
     use hgeom::Point;
     use hgeom::glam::DVec3;
+    use std::f64::consts::PI;
 
     fn at(dir: DVec3, d: f64) -> DVec4 {
         Point::at_distance_from_origin(dir, d)
@@ -277,8 +400,9 @@ mod tests {
             .to_hyperboloid()
     }
 
-    /// Sixty-four units of every kind around the origin.
-    fn many() -> LightSelector {
+    /// 64 units of every kind around the origin, then `mesh` triangles of
+    /// one emitter (object 1000) near one another, under a tree.
+    fn many(mesh: usize) -> LightSelector {
         let mut stream = SampleStream::new(5);
         let mut units = Vec::new();
         let dir = |s: &mut SampleStream| {
@@ -304,14 +428,54 @@ mod tests {
                 }
             });
         }
-        LightSelector::new(units)
+        // The mesh: a latitude-longitude sphere of radius 0.3 (as a
+        // scanned lamp would be), two triangles a cell.
+        let first = units.len();
+        let centre = DVec3::new(0.3, -0.2, 0.5);
+        let (rows, columns) = (10, mesh / 20);
+        let corner = |i: usize, j: usize| {
+            let (theta, phi) = (PI * i as f64 / rows as f64, TAU * j as f64 / columns as f64);
+            let c = centre
+                + 0.3
+                    * DVec3::new(
+                        theta.sin() * phi.cos(),
+                        theta.sin() * phi.sin(),
+                        theta.cos(),
+                    );
+            at(c, c.length())
+        };
+        let colour = Rgb::new(2.0, 1.0, 0.5);
+        for i in 0..rows {
+            for j in 0..columns {
+                let (a, b, c, d) = (
+                    corner(i, j),
+                    corner(i + 1, j),
+                    corner(i + 1, j + 1),
+                    corner(i, j + 1),
+                );
+                // The poles' cells have one corner twice: a degenerate
+                // triangle keeps its place as a unit that is never drawn.
+                for v in [[a, b, c], [a, c, d]] {
+                    units.push(
+                        LightUnit::triangle(v, colour, 1000).unwrap_or_else(|| {
+                            LightUnit::sphere(v[0], 0.0, Rgb::BLACK, Some(1000))
+                        }),
+                    );
+                }
+            }
+        }
+        LightSelector::new(units, &[(first, mesh)])
     }
 
-    /// The probabilities of the units sum to 1 at every vertex, and the
-    /// draw picks each unit as often as its probability says.
-    #[test]
-    fn the_pmf_sums_to_one_and_is_what_is_drawn() {
-        let sel = many();
+    /// The draw picks each unit as often as its probability says, every
+    /// unit that can bring light has a positive probability, and the
+    /// probabilities sum to at most 1 (exactly 1 without a tree, where no
+    /// branch can come up empty): for 64 single units, and with a mesh of
+    /// 600 triangles under a tree.
+    fn check_draws(mesh: usize) {
+        let sel = many(mesh);
+        let count = 64 + mesh;
+        assert_eq!(sel.units.len(), count);
         let p = at(DVec3::new(0.1, 0.2, 0.3), 0.3);
         let n = hgeom::ray::hyperboloid_direction(
             &Point::from_hyperboloid(p).expect("a point"),
@@ -319,23 +483,35 @@ mod tests {
         );
         let own = 7;
         let total = sel.total(p, n, own);
-        let sum: f64 = (0..64).map(|k| sel.pmf(k, p, n, own, total)).sum();
-        assert!((sum - 1.0).abs() < 1e-12, "{sum}");
-        assert_eq!(sel.pmf(7, p, n, own, total), 0.0, "the vertex's own object");
+        let pmf: Vec<f64> = (0..count).map(|k| sel.pmf(k, p, n, own, total)).collect();
+        let sum: f64 = pmf.iter().sum();
+        // A branch whose ball pokes above the tangent plane while its
+        // units lie below comes up empty: a lost draw, never a bias.
+        assert!(sum <= 1.0 + 1e-12 && sum > 0.7, "{sum}");
+        if mesh == 0 {
+            assert!((sum - 1.0).abs() < 1e-12, "{sum}");
+        }
+        assert_eq!(pmf[7], 0.0, "the vertex's own object");
+        for (k, q) in pmf.iter().enumerate() {
+            assert_eq!(*q > 0.0, sel.importance(k, p, n, own) > 0.0, "unit {k}");
+        }
         // Units below the tangent plane are never drawn.
-        assert!((0..64).any(|k| sel.pmf(k, p, n, own, total) == 0.0 && k != 7));
-        let draws = 200_000;
-        let mut counts = [0u32; 64];
+        assert!((0..count).any(|k| pmf[k] == 0.0 && k != 7));
+        let draws = 400_000;
+        let mut counts = vec![0u32; count];
         let mut stream = SampleStream::new(9);
+        let mut none = 0u32;
         for _ in 0..draws {
-            let c = sel
-                .select(p, n, own, total, stream.next_unit())
-                .expect("some unit is above the plane");
-            assert!((c.pmf - sel.pmf(c.unit, p, n, own, total)).abs() < 1e-15);
-            counts[c.unit] += 1;
+            match sel.select(p, n, own, total, stream.next_unit()) {
+                Some(c) => {
+                    assert!((c.pmf - pmf[c.unit]).abs() <= 1e-12 * pmf[c.unit]);
+                    counts[c.unit] += 1;
+                }
+                None => none += 1,
+            }
         }
         for (k, &count) in counts.iter().enumerate() {
-            let q = sel.pmf(k, p, n, own, total);
+            let q = pmf[k];
             let expect = q * f64::from(draws);
             let sigma = (expect * (1.0 - q)).sqrt().max(1.0);
             assert!(
@@ -343,6 +519,52 @@ mod tests {
                 "unit {k}: {count} vs {expect}"
             );
         }
+        let expect_none = (1.0 - sum) * f64::from(draws);
+        assert!((f64::from(none) - expect_none).abs() < 5.0 * expect_none.sqrt().max(1.0));
+    }
+
+    #[test]
+    fn the_pmf_is_what_is_drawn() {
+        check_draws(0);
+    }
+
+    #[test]
+    fn the_pmf_is_what_is_drawn_down_a_meshs_tree() {
+        check_draws(600);
+    }
+
+    /// Drawing down a mesh's tree is unbiased: the mean of a unit's
+    /// importance over its probability is the sum of the importances
+    /// (the estimate of any light the units bring has the right mean).
+    #[test]
+    fn drawing_down_a_tree_is_unbiased() {
+        let sel = many(2000);
+        let p = at(DVec3::new(-0.2, 0.1, 0.1), 0.2);
+        let n = hgeom::ray::hyperboloid_direction(
+            &Point::from_hyperboloid(p).expect("a point"),
+            DVec3::new(0.3, 0.1, 1.0),
+        );
+        let own = 0;
+        let total = sel.total(p, n, own);
+        let exact: f64 = (0..sel.units.len())
+            .map(|k| sel.importance(k, p, n, own))
+            .sum();
+        let draws = 400_000;
+        let mut stream = SampleStream::new(3);
+        let (mut sum, mut sum2) = (0.0, 0.0);
+        for _ in 0..draws {
+            if let Some(c) = sel.select(p, n, own, total, stream.next_unit()) {
+                let x = sel.importance(c.unit, p, n, own) / c.pmf;
+                sum += x;
+                sum2 += x * x;
+            }
+        }
+        let mean = sum / f64::from(draws);
+        let sigma = ((sum2 / f64::from(draws) - mean * mean) / f64::from(draws)).sqrt();
+        assert!(
+            (mean - exact).abs() < 5.0 * sigma,
+            "{mean} vs {exact} ± {sigma}"
+        );
     }
 
     /// A point light's importance is its exact irradiance on a surface

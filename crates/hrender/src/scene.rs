@@ -46,10 +46,15 @@ pub struct PreparedObject {
     /// canonical frame: an emissive one is a light that can be sampled by
     /// solid angle.
     pub ball: Option<(DVec4, f64)>,
-    /// For an emissive object with flat faces (a polygon, a polyhedron),
-    /// its faces as triangles in the canonical frame: the path integrator
-    /// samples them by solid angle. Empty for every other object.
+    /// For an emissive object with flat faces (a polygon, a polyhedron, a
+    /// triangle mesh), its faces as triangles in the canonical frame: the
+    /// path integrator samples them by solid angle. Empty for every other
+    /// object.
     pub faces: Vec<[DVec4; 3]>,
+    /// A hit's `part` is the index of its triangle in `faces` (a mesh's,
+    /// in the mesh's order); otherwise (fans of a polygon's or a
+    /// polyhedron's faces) the triangle holding a hit is found by its plane.
+    pub faces_by_part: bool,
     /// For a honeycomb, what its horizon hits draw: its average
     /// appearance along the rest of the way to distance 12 and how open
     /// that rest is, by its length (`horizon_fill.rs`). Empty for every
@@ -124,7 +129,8 @@ impl PreparedObject {
     /// [`PreparedObject::surfaces_of`], what an emitter needs of the moved
     /// shape: its centre and radius if it is an h-sphere, and with
     /// `faces`, its flat faces cut into triangles (fans; a face with an
-    /// ideal vertex has no finite area and is left out).
+    /// ideal vertex has no finite area and is left out), or a mesh's
+    /// triangles.
     pub(crate) fn moved(
         shape: &ir::Shape,
         stages: &[Isometry],
@@ -160,6 +166,17 @@ impl PreparedObject {
         let triangles = |s: &ir::Shape| -> Vec<[DVec4; 3]> {
             if !faces {
                 return Vec::new();
+            }
+            // A mesh's triangles in its own order, which its hits' `part`
+            // counts in.
+            if let Some(mesh) = s.mesh() {
+                let points: Vec<DVec4> =
+                    mesh.vertices().iter().map(|p| p.to_hyperboloid()).collect();
+                return mesh
+                    .triangles()
+                    .iter()
+                    .map(|t| t.map(|k| points[k as usize]))
+                    .collect();
             }
             s.faces()
                 .iter()
@@ -390,6 +407,7 @@ impl PreparedScene {
                         .fold(o.placement, |f, iso| iso.compose(&f))
                         .inverse(),
                     ball,
+                    faces_by_part: o.shape.mesh().is_some(),
                     faces,
                     horizon: Vec::new(),
                     mapping: if textured(scene, o) {

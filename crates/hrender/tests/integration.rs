@@ -18,6 +18,7 @@ mod horizon_sky;
 mod image_textures;
 mod light_strength;
 mod many_lights;
+mod mesh_lights;
 mod mesh_smooth;
 mod one_pixel;
 mod optics;

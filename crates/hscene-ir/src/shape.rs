@@ -424,6 +424,14 @@ fn rod_encloses_origin(rod: &Rod, tanh_r: f64, to_origin: &Isometry) -> bool {
 }
 
 impl Shape {
+    /// The triangle mesh, if the shape is one.
+    pub fn mesh(&self) -> Option<&TriangleMesh> {
+        match self {
+            Shape::Mesh(m) => Some(m),
+            _ => None,
+        }
+    }
+
     /// The honeycomb, if the shape is one.
     pub fn honeycomb(&self) -> Option<&Honeycomb> {
         match self {

@@ -4,9 +4,9 @@
 //! multiple-importance weights of emission that the paths' own bounces
 //! find, which must use the same selection probability.
 
-use hgeom::Ray;
 use hgeom::glam::DVec4;
 use hgeom::lorentz::{self, Separation};
+use hgeom::{Hit, Ray};
 use hscene_ir::Rgb;
 
 use super::path::{FaceEmitter, LastScatter, PathTracer, ShadingPoint, Source, power_heuristic};
@@ -190,10 +190,10 @@ impl PathTracer<'_> {
     }
 
     /// The power-heuristic weight of emission from the faces of object
-    /// `index` at `point`, reached by a direction the last vertex's lobes
+    /// `index` met by `hit`, reached by a direction the last vertex's lobes
     /// drew: light sampling would have drawn it from the one triangle that
     /// holds the point, with that triangle's selection probability.
-    pub(super) fn face_weight(&self, index: usize, point: DVec4, last: LastScatter) -> f64 {
+    pub(super) fn face_weight(&self, index: usize, hit: &Hit, last: LastScatter) -> f64 {
         let Some(last) = last else {
             return 1.0;
         };
@@ -203,10 +203,21 @@ impl PathTracer<'_> {
         if last.on == index {
             return 1.0;
         }
+        let point = hit.point;
         let Some(d) = lorentz::unit_tangent_towards(last.from, point) else {
             return 1.0;
         };
-        match holding_triangle(e, last.from, point, d) {
+        let holding = if e.by_part {
+            // A mesh says which triangle it met.
+            let t = hit.part as usize;
+            e.triangles
+                .get(t)
+                .and_then(|(tri, _)| SphericalTriangle::new(last.from, *tri))
+                .map(|solid| (t, solid.solid_angle()))
+        } else {
+            holding_triangle(e, last.from, point, d)
+        };
+        match holding {
             Some((t, solid_angle)) => {
                 let pmf =
                     self.selector

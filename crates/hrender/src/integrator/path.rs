@@ -67,6 +67,8 @@ pub(super) struct FaceEmitter {
     pub(super) triangles: Vec<([DVec4; 3], DVec4)>,
     /// The light unit of its first triangle; the others follow in order.
     pub(super) first_unit: usize,
+    /// A hit's `part` is the index of its triangle (a mesh).
+    pub(super) by_part: bool,
 }
 
 /// What a light unit of the selector is, in the integrator's own lists.
@@ -153,16 +155,20 @@ impl<'s> PathTracer<'s> {
         for (index, object) in sampled.iter().enumerate() {
             let m = &scene.materials[object.material];
             if !object.faces.is_empty() && !m.emission.is_black() {
+                // Every triangle keeps its place (a mesh's hits count
+                // them); a degenerate one gets no normal and, below, a unit
+                // that is never drawn.
                 let triangles = object
                     .faces
                     .iter()
-                    .filter_map(|t| Some((*t, plane_normal(*t)?)))
+                    .map(|t| (*t, plane_normal(*t).unwrap_or(DVec4::ZERO)))
                     .collect();
                 faces.push(FaceEmitter {
                     object: index,
                     radiance: m.emission,
                     triangles,
                     first_unit: 0,
+                    by_part: object.faces_by_part,
                 });
             }
             if let (Some((centre, radius)), false) = (object.ball, m.emission.is_black()) {
@@ -193,11 +199,16 @@ impl<'s> PathTracer<'s> {
                 sources.push(Source::Triangle(f, t));
             }
         }
+        // A mesh's many triangles go under a tree of their own.
+        let trees: Vec<(usize, usize)> = faces
+            .iter()
+            .map(|e| (e.first_unit, e.triangles.len()))
+            .collect();
         PathTracer {
             scene,
             emitters,
             faces,
-            selector: LightSelector::new(units),
+            selector: LightSelector::new(units, &trees),
             sources,
             smooth_vertices: MAX_PATH_LENGTH,
         }
@@ -311,7 +322,7 @@ impl Integrator for PathTracer<'_> {
             if !m.emission.is_black() {
                 let w = match self.emitter_of(index) {
                     Some(k) => self.emission_weight(k, last),
-                    None => self.face_weight(index, hit.point, last),
+                    None => self.face_weight(index, &hit, last),
                 };
                 radiance += beta.tint(m.emission) * w;
             }
