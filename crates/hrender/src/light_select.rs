@@ -5,8 +5,9 @@
 //! Sampling every light at every vertex costs one shadow ray per light: a
 //! path in a scene of 64 lights traced 167 of them. Instead each vertex
 //! draws one *light unit* (a point light, a spherical emitter, or one
-//! triangle of an emissive polygon or polyhedron) with probability
-//! `importance / total` and divides what it brings by that probability:
+//! triangle of an emissive polygon, polyhedron or mesh) with probability
+//! `importance / total` (down a tree for an emitter of many triangles,
+//! `light_tree.rs`) and divides what it brings by that probability:
 //! the estimate stays unbiased as long as every unit that could bring
 //! light gets a positive importance, and it is cheap because an importance
 //! is a few multiplications (no transcendental function, no ray).

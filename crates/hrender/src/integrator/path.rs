@@ -12,10 +12,11 @@
 //! solid angle ([`SphereCone`]).
 //!
 //! At each vertex: emission (weighted against light sampling by the power
-//! heuristic), next-event estimation to every point light, every
-//! spherical emitter (area lights and emissive h-spheres, by the cone they
-//! subtend) and every triangle of an emissive polygon or polyhedron (by
-//! the spherical triangle it subtends), then one
+//! heuristic), next-event estimation to one light unit drawn by
+//! [`LightSelector`]: a point light, a spherical emitter (an area light or
+//! an emissive h-sphere, by the cone it subtends) or a triangle of an
+//! emissive polygon, polyhedron or mesh (by the spherical triangle it
+//! subtends), then one
 //! direction from the material's lobes ([`Bsdf`]); Russian roulette after
 //! three bounces (a path survives with the probability of its largest
 //! throughput channel, when below 1), at most [`MAX_PATH_LENGTH`] bounces.
