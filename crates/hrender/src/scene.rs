@@ -411,6 +411,7 @@ impl PreparedScene {
         for (index, m) in scene.materials.iter().enumerate() {
             let bad_scale = m
                 .texture
+                .as_ref()
                 .map(|t| t.scale)
                 .filter(|s| !(*s > 0.0 && s.is_finite()));
             if let Some(scale) = bad_scale {
