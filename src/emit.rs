@@ -211,7 +211,7 @@ fn material(i: usize, m: &Material) -> Value {
         "refraction": m.refraction,
         "emission": rgb(m.emission),
         "absorption": rgb(m.absorption),
-        "checker": m.texture.map(|t| json!({
+        "checker": m.texture.as_ref().map(|t| json!({
             "size": t.scale,
             "diffuse": rgb(t.diffuse),
             "ambient": rgb(t.ambient),

@@ -33,8 +33,8 @@ pub fn format_diagnostics(
             out.push_str(&short_line(&name, &index, d));
             continue;
         }
-        let (line, column) = index.line_col(d.span.start);
-        let (end_line, end_column) = index.line_col(d.span.end);
+        let (line, column) = index.line_col(d.span.start());
+        let (end_line, end_column) = index.line_col(d.span.end());
         let obj = serde_json::json!({
             "file": name,
             "line": line,

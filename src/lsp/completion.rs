@@ -38,14 +38,14 @@ fn context(text: &str, offset: usize) -> Context<'_> {
     let tokens = tokenize(text);
     let before: Vec<_> = tokens
         .iter()
-        .filter(|t| t.span.start < offset && !t.kind.is_comment())
+        .filter(|t| t.span.start() < offset && !t.kind.is_comment())
         .collect();
     // A reference the cursor is in (or just after).
     if let Some(last) = before.last()
         && last.kind == TokenKind::Reference
-        && offset <= last.span.end
+        && offset <= last.span.end()
     {
-        return Context::Reference(match text.as_bytes()[last.span.start] {
+        return Context::Reference(match text.as_bytes()[last.span.start()] {
             b'%' => RefSigil::Percent,
             b'#' => RefSigil::Hash,
             _ => RefSigil::At,
@@ -55,7 +55,7 @@ fn context(text: &str, offset: usize) -> Context<'_> {
     let mut pending_name: Option<&str> = None;
     let mut parens = 0usize;
     for t in &before {
-        let s = &text[t.span.start..t.span.end];
+        let s = &text[t.span.start()..t.span.end()];
         match t.kind {
             TokenKind::Ident if section.is_none() => pending_name = Some(s),
             TokenKind::LBrace => section = pending_name.take().or(Some("")),
@@ -73,7 +73,7 @@ fn context(text: &str, offset: usize) -> Context<'_> {
     let prev = before
         .iter()
         .rev()
-        .find(|t| !(t.kind == TokenKind::Ident && t.span.end >= offset));
+        .find(|t| !(t.kind == TokenKind::Ident && t.span.end() >= offset));
     match (section, prev.map(|t| t.kind)) {
         (None, _) => Context::TopLevel,
         (Some(s), Some(TokenKind::LBrace | TokenKind::Semi)) => Context::StatementStart(s),

@@ -97,13 +97,13 @@ struct Related<'s> {
 impl<'s> Related<'s> {
     fn new(symbols: &'s SymbolIndex) -> Self {
         let mut uses: Vec<usize> = (0..symbols.uses.len()).collect();
-        uses.sort_by_key(|&i| symbols.uses[i].reference.span.start);
+        uses.sort_by_key(|&i| symbols.uses[i].reference.span.start());
         let mut names: Vec<&Ident> = symbols
             .definitions
             .iter()
             .filter_map(|def| def.name.as_ref())
             .collect();
-        names.sort_by_key(|n| n.span.start);
+        names.sort_by_key(|n| n.span.start());
         let mut by_text: HashMap<&str, Vec<Span>> = HashMap::new();
         for n in &names {
             by_text.entry(n.text.as_str()).or_default().push(n.span);
@@ -120,12 +120,15 @@ impl<'s> Related<'s> {
     /// other declarations of the name, else the declarations the
     /// references inside the diagnostic name.
     fn of(&self, d: &hscene_lang::Diagnostic) -> Vec<(Span, String)> {
-        let inside = |s: Span| d.span.start <= s.start && s.end <= d.span.end;
+        let inside = |s: Span| d.span.start() <= s.start() && s.end() <= d.span.end();
         if d.code == Code::DuplicateName {
             // The first declared name, in source order, inside the
             // diagnostic or holding it.
-            let at = self.names.partition_point(|n| n.span.start < d.span.start);
-            let holds = |n: &&Ident| n.span.start <= d.span.start && d.span.end <= n.span.end;
+            let at = self
+                .names
+                .partition_point(|n| n.span.start() < d.span.start());
+            let holds =
+                |n: &&Ident| n.span.start() <= d.span.start() && d.span.end() <= n.span.end();
             let before = at.checked_sub(1).map(|i| self.names[i]).filter(holds);
             let here = self
                 .names
@@ -144,11 +147,11 @@ impl<'s> Related<'s> {
         let uses = &self.symbols.uses;
         let first = self
             .uses
-            .partition_point(|&i| uses[i].reference.span.start < d.span.start);
+            .partition_point(|&i| uses[i].reference.span.start() < d.span.start());
         self.uses[first..]
             .iter()
             .map(|&i| &uses[i])
-            .take_while(|u| u.reference.span.start <= d.span.end)
+            .take_while(|u| u.reference.span.start() <= d.span.end())
             .filter(|u| inside(u.reference.span))
             .filter_map(|u| {
                 let def = &self.symbols.definitions[u.definition?];

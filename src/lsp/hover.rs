@@ -69,7 +69,7 @@ fn describe(doc: &Document, def: &Definition) -> String {
         let _ = write!(out, " (number {k})");
     }
     out.push_str("\n\n");
-    let declaration = doc.text[def.span.start..def.span.end].trim();
+    let declaration = doc.text[def.span.start()..def.span.end()].trim();
     let _ = writeln!(out, "```hscene\n{declaration}\n```");
     let Some(scene) = &doc.compiled.scene else {
         out.push_str("\nThe scene has errors: final positions are not known.\n");

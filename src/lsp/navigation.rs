@@ -82,7 +82,7 @@ pub fn rename(docs: &Documents, p: RenameParams) -> Result<Option<WorkspaceEdit>
     for u in symbols.uses_of(d) {
         if matches!(u.reference.target, RefTarget::Name(_)) {
             // Keep the sigil; replace the name after it.
-            let name = Span::new(u.reference.span.start + 1, u.reference.span.end);
+            let name = Span::new(u.reference.span.start() + 1, u.reference.span.end());
             edits.push(TextEdit::new(range(&doc.lines, name), new.to_owned()));
         }
     }

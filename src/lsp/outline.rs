@@ -21,7 +21,9 @@ pub fn document_symbols(
                 .symbols
                 .definitions
                 .iter()
-                .filter(|d| section.span.start <= d.span.start && d.span.end <= section.span.end)
+                .filter(|d| {
+                    section.span.start() <= d.span.start() && d.span.end() <= section.span.end()
+                })
                 .map(|d| {
                     let selection = d.name.as_ref().map_or(d.span, |n| n.span);
                     #[allow(deprecated)] // `deprecated` is a required field of the type.

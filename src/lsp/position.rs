@@ -20,7 +20,7 @@ fn to_u32(n: usize) -> u32 {
 
 /// The range of a span.
 pub fn range(lines: &LineIndex, span: Span) -> Range {
-    Range::new(position(lines, span.start), position(lines, span.end))
+    Range::new(position(lines, span.start()), position(lines, span.end()))
 }
 
 /// The byte offset of a position. A line past the end gives the end of the

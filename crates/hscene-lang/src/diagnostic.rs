@@ -12,18 +12,46 @@
 use std::fmt;
 
 /// A byte range `start..end` (end exclusive) into the scene source.
+///
+/// The offsets are stored as `u32`: a span is in every node of the syntax
+/// tree, and as two `usize` the spans were 48 of a clause's 112 bytes in a
+/// scene of many statements (docs/performance.md). [`crate::parse`]
+/// refuses a source longer than [`MAX_SOURCE_LEN`], so every offset it
+/// makes fits.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 pub struct Span {
-    /// Byte offset of the first byte.
-    pub start: usize,
-    /// Byte offset one past the last byte.
-    pub end: usize,
+    start: u32,
+    end: u32,
 }
 
+/// The longest source parsed, in bytes: its offsets are held in a `u32`
+/// ([`Span`]). 4 GiB less one byte, far beyond the command line's 16 MiB.
+pub const MAX_SOURCE_LEN: usize = u32::MAX as usize;
+
 impl Span {
-    /// A span from `start` to `end` (end exclusive).
+    /// A span from `start` to `end` (end exclusive). An offset past
+    /// [`MAX_SOURCE_LEN`] (which no parsed source has) is clamped to it.
     pub fn new(start: usize, end: usize) -> Self {
-        Span { start, end }
+        let clamp = |x: usize| u32::try_from(x).unwrap_or(u32::MAX);
+        Span {
+            start: clamp(start),
+            end: clamp(end),
+        }
+    }
+
+    /// Byte offset of the first byte.
+    pub fn start(self) -> usize {
+        self.start as usize
+    }
+
+    /// Byte offset one past the last byte.
+    pub fn end(self) -> usize {
+        self.end as usize
+    }
+
+    /// `start..end`, to slice the source with.
+    pub fn range(self) -> std::ops::Range<usize> {
+        self.start()..self.end()
     }
 
     /// The smallest span covering both `self` and `other`.
@@ -36,7 +64,7 @@ impl Span {
 
     /// Length in bytes.
     pub fn len(self) -> usize {
-        self.end.saturating_sub(self.start)
+        self.end.saturating_sub(self.start) as usize
     }
 
     /// Whether the span covers no bytes.
@@ -285,7 +313,7 @@ impl miette::Diagnostic for Diagnostic {
 
     fn labels(&self) -> Option<Box<dyn Iterator<Item = miette::LabeledSpan> + '_>> {
         let text = self.label.clone().unwrap_or_else(|| self.message.clone());
-        let span = miette::SourceSpan::new(self.span.start.into(), self.span.len());
+        let span = miette::SourceSpan::new(self.span.start().into(), self.span.len());
         Some(Box::new(std::iter::once(
             miette::LabeledSpan::new_primary_with_span(Some(text), span),
         )))

@@ -129,7 +129,7 @@ struct Writer<'a> {
 
 impl Writer<'_> {
     fn text(&self, t: &Token) -> &str {
-        &self.source[t.span.start..t.span.end]
+        &self.source[t.span.start()..t.span.end()]
     }
 
     fn token(&mut self, i: usize) {
@@ -392,7 +392,7 @@ mod tests {
         let texts = |s: &str| -> Vec<String> {
             tokenize(s)
                 .iter()
-                .map(|t| s[t.span.start..t.span.end].to_owned())
+                .map(|t| s[t.span.start()..t.span.end()].to_owned())
                 .collect()
         };
         assert_eq!(texts(src), texts(&out));

@@ -89,7 +89,7 @@ pub fn compile_with(source: &str, options: &Options) -> Compiled {
     let mut inputs = Vec::new();
     let scene = lower::lower(parsed.file, source, options, &mut list, &mut inputs);
     let (mut diagnostics, omitted) = list.into_parts();
-    diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
+    diagnostics.sort_by_key(|d| (d.span.start(), d.span.end()));
     let mut seen = std::collections::HashSet::new();
     inputs.retain(|p| seen.insert(p.clone()));
     Compiled {

@@ -122,7 +122,7 @@ impl LineIndex {
         let Some(&start) = self.line_starts.get(line) else {
             return self.source.len();
         };
-        let end = self.line_bounds(start).end;
+        let end = self.line_bounds(start).end();
         let (_, a) = self.extra_before(start);
         let (_, b) = self.extra_before(end);
         if a == b {

@@ -334,7 +334,7 @@ impl Lowerer<'_> {
             } else if let Some(first) = seen.get(name) {
                 let (line, col) = lines
                     .get_or_insert_with(|| LineIndex::new(source))
-                    .line_col(first.start);
+                    .line_col(first.start());
                 self.report(
                     Diagnostic::new(
                         Code::DuplicateSection,

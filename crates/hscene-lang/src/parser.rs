@@ -31,7 +31,7 @@ mod tree;
 
 use pest_derive::Parser;
 
-use crate::diagnostic::Diagnostic;
+use crate::diagnostic::{Code, Diagnostic, MAX_SOURCE_LEN, Span};
 use crate::diagnostic_list::DiagnosticList;
 use crate::syntax::SourceFile;
 
@@ -79,6 +79,17 @@ fn parse_with_pest_only(source: &str) -> Parsed {
 }
 
 fn parse_with(source: &str, direct: bool) -> Parsed {
+    if let Some(refused) = too_long(source.len()) {
+        // Nothing is scanned: no offset past `MAX_SOURCE_LEN` fits a span.
+        return Parsed {
+            file: SourceFile {
+                sections: Vec::new(),
+                incomplete: true,
+            },
+            diagnostics: vec![refused],
+            omitted: crate::Omitted::default(),
+        };
+    }
     let mut p = Scanner {
         src: source,
         pos: 0,
@@ -89,12 +100,24 @@ fn parse_with(source: &str, direct: bool) -> Parsed {
     };
     let file = p.file();
     let (mut diagnostics, omitted) = p.diagnostics.into_parts();
-    diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
+    diagnostics.sort_by_key(|d| (d.span.start(), d.span.end()));
     Parsed {
         file,
         diagnostics,
         omitted,
     }
+}
+
+/// The error for a source too long for its offsets to fit a [`Span`]
+/// ([`MAX_SOURCE_LEN`]); `None` for one that fits.
+fn too_long(len: usize) -> Option<Diagnostic> {
+    (len > MAX_SOURCE_LEN).then(|| {
+        Diagnostic::new(
+            Code::Syntax,
+            Span::new(0, 0),
+            format!("the scene is {len} bytes; at most {MAX_SOURCE_LEN} (4 GiB) can be read"),
+        )
+    })
 }
 
 /// The state of one parse: where the scanner is, and what it has found
@@ -121,11 +144,22 @@ mod tests {
     use pest::Parser as _;
 
     use super::*;
-    use crate::diagnostic::Code;
     use crate::parser::fixtures::{
         clean, codes, number, numbers, only_statement, reference, section, text, tuple,
     };
     use crate::syntax::{Clause, RefSigil, RefTarget};
+
+    #[test]
+    fn a_source_whose_offsets_fit_a_span_is_read_and_a_longer_one_refused() {
+        assert!(too_long(0).is_none());
+        assert!(too_long(MAX_SOURCE_LEN).is_none());
+        let refused = too_long(MAX_SOURCE_LEN + 1).map(|d| (d.code, d.span));
+        assert_eq!(refused, Some((Code::Syntax, Span::new(0, 0))));
+        // The largest offset survives the round trip through a span.
+        let end = Span::new(0, MAX_SOURCE_LEN);
+        assert_eq!(end.end(), MAX_SOURCE_LEN);
+        assert_eq!(end.len(), MAX_SOURCE_LEN);
+    }
 
     const APPENDIX: &str = include_str!("../../../scenes/thesis-appendix-a.hsc");
 
@@ -360,11 +394,11 @@ Transformations { hline (%1,%5); %1->Rotate(%2,-0.7); %2->Translate(%1); }
         assert!(
             p.diagnostics
                 .windows(2)
-                .all(|w| w[0].span.start <= w[1].span.start)
+                .all(|w| w[0].span.start() <= w[1].span.start())
         );
         let idx = crate::line_index::LineIndex::new(src);
-        assert_eq!(idx.line_col(p.diagnostics[0].span.start), (2, 28));
-        assert_eq!(idx.line_col(p.diagnostics[1].span.start), (3, 1));
+        assert_eq!(idx.line_col(p.diagnostics[0].span.start()), (2, 28));
+        assert_eq!(idx.line_col(p.diagnostics[1].span.start()), (3, 1));
     }
 
     mod props {
@@ -375,27 +409,27 @@ Transformations { hline (%1,%5); %1->Rotate(%2,-0.7); %2->Translate(%1); }
             let p = parse(src);
             for d in &p.diagnostics {
                 assert!(
-                    d.span.start <= d.span.end && d.span.end <= src.len(),
+                    d.span.start() <= d.span.end() && d.span.end() <= src.len(),
                     "{d:?}"
                 );
-                assert!(src.is_char_boundary(d.span.start), "{d:?}");
-                assert!(src.is_char_boundary(d.span.end), "{d:?}");
+                assert!(src.is_char_boundary(d.span.start()), "{d:?}");
+                assert!(src.is_char_boundary(d.span.end()), "{d:?}");
             }
             for s in &p.file.sections {
-                assert!(s.span.end <= src.len());
-                assert_eq!(&src[s.name.span.start..s.name.span.end], s.name.text);
+                assert!(s.span.end() <= src.len());
+                assert_eq!(&src[s.name.span.start()..s.name.span.end()], s.name.text);
                 for st in &s.statements {
                     // A statement that lacked its `;` at the end of a line
                     // ends at its last token.
-                    let text = &src[st.span.start..st.span.end];
-                    let after = src[st.span.end..].trim_start_matches([' ', '\t', '\r']);
+                    let text = &src[st.span.start()..st.span.end()];
+                    let after = src[st.span.end()..].trim_start_matches([' ', '\t', '\r']);
                     assert!(
                         text.ends_with(';') || after.starts_with(['\n', '/']),
                         "{text:?}"
                     );
                 }
                 for b in &s.broken {
-                    assert!(b.span.start <= b.span.end && b.span.end <= src.len());
+                    assert!(b.span.start() <= b.span.end() && b.span.end() <= src.len());
                 }
             }
         }

@@ -69,7 +69,7 @@ pub fn human_report(
 
 /// `path:line:col: severity: message [CODE]` and a line end.
 pub fn short_line(name: &str, index: &LineIndex, d: &Diagnostic) -> String {
-    let (line, col) = index.line_col(d.span.start);
+    let (line, col) = index.line_col(d.span.start());
     format!(
         "{name}:{line}:{col}: {}: {} [{}]\n",
         d.severity.as_str(),
@@ -106,9 +106,9 @@ pub fn omitted_note(
 /// lines are at most [`MAX_GRAPHICAL_LINE`] bytes long and it covers at
 /// most [`MAX_GRAPHICAL_LINES`] lines.
 fn fits_graphical(index: &LineIndex, d: &Diagnostic) -> bool {
-    let first = index.line_bounds(d.span.start);
-    let last = index.line_bounds(d.span.end);
-    let lines = index.line_col(last.start).0 - index.line_col(first.start).0 + 1;
+    let first = index.line_bounds(d.span.start());
+    let last = index.line_bounds(d.span.end());
+    let lines = index.line_col(last.start()).0 - index.line_col(first.start()).0 + 1;
     first.len() <= MAX_GRAPHICAL_LINE
         && last.len() <= MAX_GRAPHICAL_LINE
         && lines <= MAX_GRAPHICAL_LINES

@@ -132,7 +132,7 @@ impl SymbolIndex {
             let mut broken = section.broken.iter().peekable();
             loop {
                 let take_good = match (good.peek(), broken.peek()) {
-                    (Some(g), Some(b)) => g.span.start < b.span.start,
+                    (Some(g), Some(b)) => g.span.start() < b.span.start(),
                     (Some(_), None) => true,
                     (None, Some(_)) => false,
                     (None, None) => break,
@@ -294,7 +294,7 @@ impl SymbolIndex {
     /// What is at byte `offset` (a declaration's name or a reference; the
     /// offset just after one counts, as a cursor at its end).
     pub fn at(&self, offset: usize) -> Option<Hit> {
-        let covers = |s: Span| s.start <= offset && offset <= s.end;
+        let covers = |s: Span| s.start() <= offset && offset <= s.end();
         if let Some(i) = self.uses.iter().position(|u| covers(u.reference.span)) {
             return Some(Hit::Use(i));
         }
@@ -363,7 +363,7 @@ mod tests {
     }
 
     fn text(s: Span) -> &'static str {
-        &SRC[s.start..s.end]
+        &SRC[s.start()..s.end()]
     }
 
     #[test]

@@ -182,7 +182,13 @@ mod tests {
     fn kinds(src: &str) -> Vec<(TokenKind, &str, usize)> {
         tokenize(src)
             .into_iter()
-            .map(|t| (t.kind, &src[t.span.start..t.span.end], t.newlines_before))
+            .map(|t| {
+                (
+                    t.kind,
+                    &src[t.span.start()..t.span.end()],
+                    t.newlines_before,
+                )
+            })
             .collect()
     }
 

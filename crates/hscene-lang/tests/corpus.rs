@@ -14,17 +14,20 @@ fn check(name: &str, data: &[u8]) {
     let mut prev = (0, 0);
     for d in &compiled.diagnostics {
         assert!(
-            d.span.start <= d.span.end && d.span.end <= src.len(),
+            d.span.start() <= d.span.end() && d.span.end() <= src.len(),
             "{name}: {d:?}"
         );
         assert!(
-            src.is_char_boundary(d.span.start) && src.is_char_boundary(d.span.end),
+            src.is_char_boundary(d.span.start()) && src.is_char_boundary(d.span.end()),
             "{name}: {d:?}"
         );
-        assert!((d.span.start, d.span.end) >= prev, "{name}: out of order");
-        prev = (d.span.start, d.span.end);
-        let start = index.line_col(d.span.start);
-        let end = index.line_col(d.span.end);
+        assert!(
+            (d.span.start(), d.span.end()) >= prev,
+            "{name}: out of order"
+        );
+        prev = (d.span.start(), d.span.end());
+        let start = index.line_col(d.span.start());
+        let end = index.line_col(d.span.end());
         assert!(
             start.0 >= 1 && start.1 >= 1 && end >= start,
             "{name}: {d:?}"

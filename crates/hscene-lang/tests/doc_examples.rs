@@ -83,7 +83,7 @@ fn every_hsc_example_in_the_language_reference_compiles() {
                     "{} {} at {:?}",
                     d.code,
                     d.message,
-                    &b.text[d.span.start..d.span.end]
+                    &b.text[d.span.start()..d.span.end()]
                 )
             })
             .collect();

@@ -25,7 +25,7 @@ fn token_texts(s: &str) -> Vec<&str> {
     tokenize(s)
         .iter()
         .map(|t| {
-            let text = &s[t.span.start..t.span.end];
+            let text = &s[t.span.start()..t.span.end()];
             // Line comments lose trailing blanks only.
             if t.kind == hscene_lang::tokens::TokenKind::LineComment {
                 text.trim_end()

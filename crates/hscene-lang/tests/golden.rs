@@ -69,8 +69,8 @@ fn render_here(src: &str, compiled: &Compiled) -> String {
     )
     .unwrap();
     for d in &compiled.diagnostics {
-        let (l1, c1) = index.line_col(d.span.start);
-        let (l2, c2) = index.line_col(d.span.end);
+        let (l1, c1) = index.line_col(d.span.start());
+        let (l2, c2) = index.line_col(d.span.end());
         writeln!(out).unwrap();
         writeln!(
             out,

@@ -136,7 +136,7 @@ fn symbols_of_other_geometries_are_errors_on_the_symbol() {
         let d = errors[0];
         assert_eq!(d.code.as_str(), "HSC0313", "{symbol}");
         assert_eq!(d.severity, Severity::Error);
-        assert_eq!(&src[d.span.start..d.span.end], symbol);
+        assert_eq!(&src[d.span.start()..d.span.end()], symbol);
         assert!(d.message.contains(word), "{symbol}: {}", d.message);
     }
 }

@@ -58,13 +58,13 @@ fn compile_checked(src: &str) -> Compiled {
 fn check_invariants(src: &str, c: &Compiled) {
     for d in &c.diagnostics {
         assert!(
-            d.span.start <= d.span.end && d.span.end <= src.len(),
+            d.span.start() <= d.span.end() && d.span.end() <= src.len(),
             "span {:?} out of the source (len {}) for {d:?}",
             d.span,
             src.len()
         );
         assert!(
-            src.is_char_boundary(d.span.start) && src.is_char_boundary(d.span.end),
+            src.is_char_boundary(d.span.start()) && src.is_char_boundary(d.span.end()),
             "span {:?} not on char boundaries for {d:?}",
             d.span
         );
@@ -73,7 +73,7 @@ fn check_invariants(src: &str, c: &Compiled) {
     let keys: Vec<(usize, usize)> = c
         .diagnostics
         .iter()
-        .map(|d| (d.span.start, d.span.end))
+        .map(|d| (d.span.start(), d.span.end()))
         .collect();
     assert!(
         keys.windows(2).all(|w| w[0] <= w[1]),
@@ -126,7 +126,7 @@ fn expect_diag(
     let d = matching[0].clone();
     assert_eq!(d.severity, severity, "{d:?}");
     assert_eq!(
-        &src[d.span.start..d.span.end],
+        &src[d.span.start()..d.span.end()],
         snippet,
         "{code} covers the wrong text in {src:?}"
     );
@@ -819,8 +819,8 @@ fn point_outside_the_absolute() {
     let src = "// a point outside the ball\nPoints {\n    (0,0,1.2);\n}\n";
     let (c, d) = expect_only(src, "HSC0301", Severity::Error, "(0,0,1.2)", 0);
     assert!(d.message.contains("1.2"), "{}", d.message);
-    assert_eq!(LineIndex::new(src).line_col(d.span.start), (3, 5));
-    assert_eq!(LineIndex::new(src).line_col(d.span.end), (3, 14));
+    assert_eq!(LineIndex::new(src).line_col(d.span.start()), (3, 5));
+    assert_eq!(LineIndex::new(src).line_col(d.span.end()), (3, 14));
     assert!(c.scene.is_none());
 }
 
@@ -974,7 +974,7 @@ fn expect_polygon_diag(src: &str, code: &str, list: &str) -> Diagnostic {
     assert_eq!(d.code.as_str(), code, "{d:?}");
     let list_span = span_of(src, list, 0);
     assert!(
-        list_span.start <= d.span.start && d.span.end <= list_span.end,
+        list_span.start() <= d.span.start() && d.span.end() <= list_span.end(),
         "{code} should point into {list}: {d:?}"
     );
     d
@@ -988,7 +988,7 @@ fn non_planar_polygon() {
 BRDFs { diffuse = (1,1,1); }
 Objects { Polygon (%1,%2,%3,%4), #1; }";
     let d = expect_polygon_diag(src, "HSC0305", "(%1,%2,%3,%4)");
-    let text = &src[d.span.start..d.span.end];
+    let text = &src[d.span.start()..d.span.end()];
     assert!(["%1", "%2", "%3", "%4"].contains(&text), "{d:?}");
     assert_eq!(d.severity, Severity::Error);
     // The same four points in the h-plane through the first three are fine.
@@ -1249,7 +1249,7 @@ Objects { Sphere %2, -1, #1; }
         .diagnostics
         .iter()
         .filter(|d| d.is_error())
-        .map(|d| (d.code.as_str(), &src[d.span.start..d.span.end]))
+        .map(|d| (d.code.as_str(), &src[d.span.start()..d.span.end()]))
         .collect();
     assert_eq!(
         errors,
@@ -1263,7 +1263,7 @@ Objects { Sphere %2, -1, #1; }
         "{:#?}",
         c.diagnostics
     );
-    let starts: Vec<usize> = c.diagnostics.iter().map(|d| d.span.start).collect();
+    let starts: Vec<usize> = c.diagnostics.iter().map(|d| d.span.start()).collect();
     assert!(starts.windows(2).all(|w| w[0] <= w[1]), "{starts:?}");
 }
 
@@ -1415,10 +1415,10 @@ fn structured_scene() -> impl Strategy<Value = String> {
 fn check_compile(src: &str) -> Result<(), TestCaseError> {
     let c = compile(src);
     for d in &c.diagnostics {
-        prop_assert!(d.span.start <= d.span.end, "{:?}", d);
-        prop_assert!(d.span.end <= src.len(), "{:?}", d);
-        prop_assert!(src.is_char_boundary(d.span.start), "{:?}", d);
-        prop_assert!(src.is_char_boundary(d.span.end), "{:?}", d);
+        prop_assert!(d.span.start() <= d.span.end(), "{:?}", d);
+        prop_assert!(d.span.end() <= src.len(), "{:?}", d);
+        prop_assert!(src.is_char_boundary(d.span.start()), "{:?}", d);
+        prop_assert!(src.is_char_boundary(d.span.end()), "{:?}", d);
         prop_assert!(!d.message.is_empty());
     }
     let has_error = c.diagnostics.iter().any(Diagnostic::is_error);
@@ -1581,7 +1581,7 @@ Objects { Sphere %1, 0.05, #1; Sphere %2, 0.05, #1; }";
     let d = &c.diagnostics[0];
     assert_eq!(d.code.as_str(), "HSC0001");
     assert!(d.span.is_empty());
-    assert_eq!(LineIndex::new(src).line_col(d.span.start), (1, 19));
+    assert_eq!(LineIndex::new(src).line_col(d.span.start()), (1, 19));
     assert!(c.scene.is_none());
     // An index too large is one error, not also an undefined point.
     let src = "Points { (0,0,0.1); } BRDFs { diffuse = (1,1,1); }

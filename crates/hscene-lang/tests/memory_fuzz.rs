@@ -151,3 +151,20 @@ fn fuzz_front_end_memory() {
         clock.runs()
     );
 }
+
+/// The nodes a scene of many statements is made of stay as small as the
+/// memory work left them (docs/performance.md, "Memory of scenes of many
+/// objects"): a tuple of three numbers holds three values, a material's
+/// statement five clauses, and the lowered scene one material per
+/// statement. A field that grows one of them grows every such scene.
+#[test]
+fn syntax_nodes_and_materials_stay_small() {
+    use hscene_lang::syntax::{Clause, Ident, Statement, Value};
+    use std::mem::size_of;
+    assert_eq!(size_of::<hscene_lang::Span>(), 8);
+    assert_eq!(size_of::<Ident>(), 32);
+    assert_eq!(size_of::<Value>(), 40);
+    assert_eq!(size_of::<Clause>(), 88);
+    assert_eq!(size_of::<Statement>(), 56);
+    assert_eq!(size_of::<hscene_lang::ir::Material>(), 192);
+}

@@ -85,7 +85,7 @@ fn expect(src: &str, code: &str, severity: Severity, snippet: &str, nth: usize) 
         d.span,
         Span::new(start, start + snippet.len()),
         "{code} covers {:?}, expected {snippet:?}",
-        &src[d.span.start..d.span.end]
+        &src[d.span.start()..d.span.end()]
     );
     let others: Vec<&Diagnostic> = c
         .diagnostics
@@ -1149,7 +1149,7 @@ proptest! {
     fn objects_and_moves_never_panic(src in object_scene()) {
         let c = compile(&src);
         for d in &c.diagnostics {
-            prop_assert!(d.span.start <= d.span.end && d.span.end <= src.len());
+            prop_assert!(d.span.start() <= d.span.end() && d.span.end() <= src.len());
             prop_assert_eq!(d.severity, d.code.severity());
         }
         prop_assert_eq!(c.scene.is_some(), !c.has_errors());

@@ -18,20 +18,20 @@ fn compile_checked(src: &str) -> Compiled {
     let mut prev = (0, 0);
     for d in &c.diagnostics {
         assert!(
-            d.span.start <= d.span.end && d.span.end <= src.len(),
+            d.span.start() <= d.span.end() && d.span.end() <= src.len(),
             "{d:?}"
         );
         assert!(
-            src.is_char_boundary(d.span.start) && src.is_char_boundary(d.span.end),
+            src.is_char_boundary(d.span.start()) && src.is_char_boundary(d.span.end()),
             "{d:?}"
         );
         assert!(
-            (d.span.start, d.span.end) >= prev,
+            (d.span.start(), d.span.end()) >= prev,
             "diagnostics out of order"
         );
-        prev = (d.span.start, d.span.end);
-        let (l1, c1) = index.line_col(d.span.start);
-        let (l2, c2) = index.line_col(d.span.end);
+        prev = (d.span.start(), d.span.end());
+        let (l1, c1) = index.line_col(d.span.start());
+        let (l2, c2) = index.line_col(d.span.end());
         assert!(l1 >= 1 && c1 >= 1 && (l2, c2) >= (l1, c1));
         assert!(!d.message.is_empty());
     }
@@ -71,7 +71,7 @@ fn hundred_thousand_parentheses_in_a_statement() {
     let d = &c.diagnostics[0];
     assert_eq!(d.code, Code::NestingTooDeep);
     let start = "Points { ".len() + 64;
-    assert_eq!((d.span.start, d.span.end), (start, start + 1));
+    assert_eq!((d.span.start(), d.span.end()), (start, start + 1));
 }
 
 #[test]
@@ -232,9 +232,9 @@ fn a_megabyte_long_statement_with_an_error_at_the_end() {
     assert_eq!(c.diagnostics.len(), 1, "{:?}", c.diagnostics);
     let d = &c.diagnostics[0];
     assert_eq!(d.code, Code::Syntax);
-    assert_eq!(&src[d.span.start..d.span.end], ")");
+    assert_eq!(&src[d.span.start()..d.span.end()], ")");
     assert_eq!(
-        LineIndex::new(&src).line_col(d.span.start),
+        LineIndex::new(&src).line_col(d.span.start()),
         (1, src.len() - 3)
     );
 }
@@ -298,7 +298,7 @@ fn a_megabyte_on_one_line_without_newlines() {
     let src = format!("Points {{ {}(2,0,0); }}", "/*é*/".repeat(N));
     let c = compile_checked(&src);
     assert_eq!(c.diagnostics.len(), 1);
-    let (line, col) = LineIndex::new(&src).line_col(c.diagnostics[0].span.start);
+    let (line, col) = LineIndex::new(&src).line_col(c.diagnostics[0].span.start());
     assert_eq!((line, col), (1, "Points { ".len() + 5 * N + 1));
 }
 

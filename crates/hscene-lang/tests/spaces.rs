@@ -17,7 +17,7 @@ fn diagnostics(globals: &str, rest: &str) -> Vec<(String, Severity, String)> {
             (
                 d.code.as_str().to_string(),
                 d.severity,
-                src[d.span.start..d.span.end].to_string(),
+                src[d.span.start()..d.span.end()].to_string(),
             )
         })
         .collect()
@@ -59,7 +59,7 @@ fn an_unknown_space_is_refused_with_the_known_ones() {
         .iter()
         .find(|d| d.severity == Severity::Error)
         .expect("an error");
-    assert_eq!(&src[d.span.start..d.span.end], "poincare_sphere");
+    assert_eq!(&src[d.span.start()..d.span.end()], "poincare_sphere");
     assert!(d.message.contains("unknown space"), "{}", d.message);
     let help = d.help.clone().unwrap_or_default();
     for name in hgeom::SPACE_NAMES {
@@ -217,7 +217,7 @@ fn a_space_file_that_glues_no_manifold_is_refused_at_its_name() {
         .find(|d| d.is_error())
         .expect("an error");
     assert_eq!(d.code.as_str(), "HSC0506");
-    assert_eq!(&src[d.span.start..d.span.end], "\"broken.json\"");
+    assert_eq!(&src[d.span.start()..d.span.end()], "\"broken.json\"");
     assert!(d.message.contains("glue no manifold"), "{}", d.message);
 }
 

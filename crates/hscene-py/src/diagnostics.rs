@@ -67,8 +67,8 @@ pub fn list(source: &str, compiled: &Compiled) -> Vec<Diagnostic> {
         .diagnostics
         .iter()
         .map(|d| {
-            let (line, column) = index.line_col(d.span.start);
-            let (end_line, end_column) = index.line_col(d.span.end);
+            let (line, column) = index.line_col(d.span.start());
+            let (end_line, end_column) = index.line_col(d.span.end());
             Diagnostic {
                 code: d.code.as_str().to_string(),
                 severity: d.severity.as_str().to_string(),

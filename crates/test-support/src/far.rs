@@ -109,7 +109,7 @@ pub fn warnings(source: &str) -> Vec<(usize, String)> {
         .diagnostics
         .iter()
         .map(|d| {
-            let line = source[..d.span.start].matches('\n').count() + 1;
+            let line = source[..d.span.start()].matches('\n').count() + 1;
             (line, format!("{:?}: {}", d.code, d.message))
         })
         .filter(|(line, _)| *line <= scene_lines)

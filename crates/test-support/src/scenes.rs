@@ -154,12 +154,12 @@ pub fn area_light(at: Point, intensity: f64, radius: f64, samples: u32) -> Light
 /// take `colour` as their ambient and diffuse reflectance.
 pub fn checkered(material: Material, scale: f64, colour: Rgb) -> Material {
     Material {
-        texture: Some(Texture {
+        texture: Some(Box::new(Texture {
             pattern: Pattern::Checker,
             scale,
             diffuse: colour,
             ambient: colour,
-        }),
+        })),
         ..material
     }
 }

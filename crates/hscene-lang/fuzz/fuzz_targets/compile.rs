@@ -23,15 +23,15 @@ fuzz_target!(|data: &[u8]| {
     let index = LineIndex::new(&src);
     let mut prev = (0, 0);
     for d in &compiled.diagnostics {
-        assert!(d.span.start <= d.span.end && d.span.end <= src.len());
-        assert!(src.is_char_boundary(d.span.start) && src.is_char_boundary(d.span.end));
+        assert!(d.span.start() <= d.span.end() && d.span.end() <= src.len());
+        assert!(src.is_char_boundary(d.span.start()) && src.is_char_boundary(d.span.end()));
         assert!(
-            (d.span.start, d.span.end) >= prev,
+            (d.span.start(), d.span.end()) >= prev,
             "diagnostics out of order"
         );
-        prev = (d.span.start, d.span.end);
-        let start = index.line_col(d.span.start);
-        let end = index.line_col(d.span.end);
+        prev = (d.span.start(), d.span.end());
+        let start = index.line_col(d.span.start());
+        let end = index.line_col(d.span.end());
         assert!(start.0 >= 1 && start.1 >= 1 && end >= start);
         assert!(end.0 <= index.line_count());
         assert_eq!(d.severity, d.code.severity());

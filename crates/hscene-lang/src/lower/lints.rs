@@ -85,15 +85,15 @@ impl Lowerer<'_> {
             .diags
             .iter()
             .filter(|d| d.is_error())
-            .map(|d| d.span.start)
+            .map(|d| d.span.start())
             .collect();
         if error_starts.is_empty() {
             return;
         }
         error_starts.sort_unstable();
         let has_error = |span: Span| {
-            let i = error_starts.partition_point(|&s| s < span.start);
-            error_starts.get(i).is_some_and(|&s| s < span.end)
+            let i = error_starts.partition_point(|&s| s < span.start());
+            error_starts.get(i).is_some_and(|&s| s < span.end())
         };
         let mut refs: Vec<&Reference> = Vec::new();
         refs.extend(section.broken.iter().flat_map(|b| &b.references));

@@ -95,7 +95,7 @@ impl Lowerer<'_> {
             .reserve(section.statements.len() + section.broken.len());
         let mut broken = section.broken.iter().peekable();
         for st in &section.statements {
-            while let Some(b) = broken.next_if(|b| b.span.start < st.span.start) {
+            while let Some(b) = broken.next_if(|b| b.span.start() < st.span.start()) {
                 self.broken_material(b);
             }
             let mut m = default_material(st.label.as_ref().map(|l| l.text.to_string()));
@@ -139,11 +139,13 @@ impl Lowerer<'_> {
                 ),
                 _ => {}
             }
-            m.texture = checker.scale.map(|scale| Texture {
-                pattern: Pattern::Checker,
-                scale,
-                diffuse: checker.diffuse.unwrap_or(scaled(m.diffuse, 0.25)),
-                ambient: checker.ambient.unwrap_or(scaled(m.ambient, 0.25)),
+            m.texture = checker.scale.map(|scale| {
+                Box::new(Texture {
+                    pattern: Pattern::Checker,
+                    scale,
+                    diffuse: checker.diffuse.unwrap_or(scaled(m.diffuse, 0.25)),
+                    ambient: checker.ambient.unwrap_or(scaled(m.ambient, 0.25)),
+                })
             });
             if m.texture.is_none()
                 && let Some(key) = FIELDS
@@ -223,11 +225,11 @@ impl Lowerer<'_> {
             Field::Texture => {
                 if let Some((path, image)) = self.image_file(value, "a texture") {
                     let rotate = m.image.as_ref().map_or(0.0, |t| t.rotate);
-                    m.image = Some(ImageTexture {
+                    m.image = Some(Box::new(ImageTexture {
                         path,
                         image,
                         rotate,
-                    });
+                    }));
                 }
             }
             Field::TextureRotate => {

@@ -182,7 +182,7 @@ impl Lowerer<'_> {
             // Lights are lowered before objects: blame whichever declaration
             // comes later in the file.
             let first = self.targets.entries()[first].span;
-            let later = if first.start > name.span.start {
+            let later = if first.start() > name.span.start() {
                 first
             } else {
                 name.span

@@ -32,7 +32,7 @@ impl Lowerer<'_> {
     pub(super) fn points_section(&mut self, section: &Section) {
         let mut broken = section.broken.iter().peekable();
         for st in &section.statements {
-            while let Some(b) = broken.next_if(|b| b.span.start < st.span.start) {
+            while let Some(b) = broken.next_if(|b| b.span.start() < st.span.start()) {
                 self.broken_point(b);
             }
             // `..., distance = d` after the coordinates: by direction and

@@ -26,7 +26,7 @@ pub(super) fn only_statement(src: &str) -> Statement {
 }
 
 pub(super) fn text(src: &str, span: Span) -> &str {
-    &src[span.start..span.end]
+    &src[span.start()..span.end()]
 }
 
 pub(super) fn number(v: &Value) -> f64 {

@@ -126,7 +126,7 @@ impl Scanner<'_> {
 
     pub(super) fn ident(&self, tok: ScanToken) -> Ident {
         Ident {
-            text: self.src[tok.span.start..tok.span.end].into(),
+            text: self.src[tok.span.start()..tok.span.end()].into(),
             span: tok.span,
         }
     }

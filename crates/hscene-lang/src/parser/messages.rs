@@ -143,7 +143,7 @@ impl Scanner<'_> {
         } else {
             format!("expected {expected}, found {found}")
         };
-        let word = &self.src[span.start..span.end];
+        let word = &self.src[span.start()..span.end()];
         if crate::numbers::is_non_finite_word(word) {
             self.diagnostics
                 .push(crate::numbers::non_finite(span, word));
@@ -157,7 +157,7 @@ impl Scanner<'_> {
         } else if !expected.is_empty() {
             diag = diag.with_label(format!("expected {expected}"));
         }
-        if let Some(path) = unquoted_path(self.src, span.start) {
+        if let Some(path) = unquoted_path(self.src, span.start()) {
             diag = diag.with_help(format!("a file name is a string: quote it, \"{path}\""));
         }
         let letter = self.src[at.min(end)..end]

@@ -29,12 +29,12 @@ pub(super) struct Stmt {
 impl Stmt {
     fn push(&mut self, tok: ScanToken) {
         if self.start.is_none() {
-            self.start = Some(tok.span.start);
-            self.prev_end = tok.span.start;
+            self.start = Some(tok.span.start());
+            self.prev_end = tok.span.start();
         } else {
             self.prev_end = self.end;
         }
-        self.end = tok.span.end;
+        self.end = tok.span.end();
         self.last = Some(tok);
         match tok.kind {
             ScanKind::LParen => {
@@ -85,7 +85,7 @@ impl Scanner<'_> {
                 }
                 (ScanKind::LBrace, None) => {
                     let span = junk.take().map_or(tok.span, |j| j.to(tok.span));
-                    let found = self.found_at(span.start, false);
+                    let found = self.found_at(span.start(), false);
                     self.diagnostics.push(
                         Diagnostic::new(
                             Code::Syntax,
@@ -125,7 +125,7 @@ impl Scanner<'_> {
     fn report_junk(&mut self, junk: Option<Span>) {
         if let Some(span) = junk {
             self.incomplete = true;
-            let found = self.found_at(span.start, false);
+            let found = self.found_at(span.start(), false);
             self.diagnostics.push(
                 Diagnostic::new(
                     Code::Syntax,
@@ -144,7 +144,7 @@ impl Scanner<'_> {
     fn section(&mut self, name: Option<Ident>, open: Span) -> (Option<Section>, Option<Header>) {
         let mut statements = Body::default();
         let mut stmt = Stmt::default();
-        let mut end = open.end;
+        let mut end = open.end();
         let (close_end, next) = loop {
             let Some(tok) = self.next_token() else {
                 if !self.comment_unterminated {
@@ -157,26 +157,26 @@ impl Scanner<'_> {
             match tok.kind {
                 ScanKind::Semi => {
                     stmt.push(tok);
-                    self.flush(&stmt, tok.span.end, &mut statements);
-                    end = tok.span.end;
+                    self.flush(&stmt, tok.span.end(), &mut statements);
+                    end = tok.span.end();
                     stmt = Stmt::default();
                 }
                 ScanKind::RBrace if stmt.braces == 0 => {
                     self.flush(&stmt, stmt.end, &mut statements);
-                    break (tok.span.end, None);
+                    break (tok.span.end(), None);
                 }
                 ScanKind::LBrace
                     if stmt.braces == 0
                         && stmt.parens == 0
                         && stmt.last.is_some_and(|t| t.kind == ScanKind::Ident)
-                        && !self.symbol_at(tok.span.end) =>
+                        && !self.symbol_at(tok.span.end()) =>
                 {
                     // `Name {` inside a body: this section lacks its `}`.
                     let Some(last) = stmt.last else {
                         break (end, None);
                     };
                     let new_name = self.ident(last);
-                    if stmt.start.is_some_and(|s| s < last.span.start) {
+                    if stmt.start.is_some_and(|s| s < last.span.start()) {
                         self.flush(&stmt, stmt.prev_end, &mut statements);
                         end = stmt.prev_end;
                     }
@@ -466,7 +466,7 @@ mod tests {
         // The span is the first `(` past the limit.
         assert_eq!(p.diagnostics[0].span.len(), 1);
         assert_eq!(
-            p.diagnostics[0].span.start,
+            p.diagnostics[0].span.start(),
             src.find('(').unwrap() + MAX_NESTING
         );
         assert_eq!(p.file.sections[0].statements.len(), 2);

@@ -101,7 +101,7 @@ impl Scanner<'_> {
             .into_iter()
             .map(|(_, span)| span)
             .find(|span| {
-                let text = &self.src[span.start..span.end];
+                let text = &self.src[span.start()..span.end()];
                 text.starts_with('"') && (text.len() == 1 || !text.ends_with('"'))
             })
     }
@@ -134,7 +134,7 @@ impl Scanner<'_> {
         let prev_end = self
             .tokens(start, at)
             .last()
-            .map(|(_, span)| span.end)
+            .map(|(_, span)| span.end())
             .filter(|&e| e <= at)?;
         if !self.src[prev_end..at].contains('\n') {
             return None;
@@ -143,7 +143,7 @@ impl Scanner<'_> {
         let pairs = SceneGrammar::parse(Rule::statement_only, &text).ok()?;
         let mut statement = self.build_statement(pairs, start)?;
         // The `;` is not in the source: the statement ends at its last token.
-        statement.span.end = prev_end;
+        statement.span = Span::new(statement.span.start(), prev_end);
         let found = self.found_at(at, false);
         self.diagnostics.push(
             Diagnostic::new(
@@ -173,7 +173,7 @@ impl Scanner<'_> {
 
     fn broken(&self, start: usize, end: usize) -> BrokenStatement {
         let tokens = self.tokens(start, end);
-        let text = |span: Span| &self.src[span.start..span.end];
+        let text = |span: Span| &self.src[span.start()..span.end()];
         let (name, labelled) = match tokens.as_slice() {
             [(ScanKind::Ident, name), (ScanKind::Other, sep), ..]
                 if matches!(text(*sep), ":" | "=") =>
@@ -261,12 +261,12 @@ Objects {
         let idx = crate::line_index::LineIndex::new(src);
         let d = &p.diagnostics;
         assert_eq!(d[0].message, "expected `,` or `;`, found `#1`");
-        assert_eq!(idx.line_col(d[0].span.start), (3, 19));
+        assert_eq!(idx.line_col(d[0].span.start()), (3, 19));
         assert_eq!(text(src, d[0].span), "#1");
         assert_eq!(d[1].message, "expected `)` or `,`, found `;`");
-        assert_eq!(idx.line_col(d[1].span.start), (5, 23));
+        assert_eq!(idx.line_col(d[1].span.start()), (5, 23));
         assert_eq!(d[2].message, "expected a value, found `=`");
-        assert_eq!(idx.line_col(d[2].span.start), (7, 14));
+        assert_eq!(idx.line_col(d[2].span.start()), (7, 14));
     }
 
     #[test]

@@ -219,7 +219,7 @@ impl Lowerer<'_> {
             }
         }
         if let (Some((_, w)), Some((_, e))) = (out.wireframe, out.edges) {
-            let second = if w.start < e.start { e } else { w };
+            let second = if w.start() < e.start() { e } else { w };
             let help = if accepted.contains(&ObjectOption::Faces) {
                 "for a honeycomb they are the same option (the edges' radius; its faces are drawn by `faces` or `face_colors`): keep one"
             } else {
