@@ -5,75 +5,15 @@
 use hrender::{IntegratorKind, RenderOptions};
 use hscene_ir::Scene;
 
-/// An icosphere (an icosahedron with each face cut in four, twice): 320
-/// triangles wound counter-clockwise seen from outside, as an OBJ file.
+/// The icosphere of 320 triangles (the test support's, subdivided twice),
+/// wound counter-clockwise seen from outside, as an OBJ file.
 fn icosphere_obj() -> String {
-    let t = (1.0 + 5f64.sqrt()) / 2.0;
-    let mut v: Vec<[f64; 3]> = [
-        [-1.0, t, 0.0],
-        [1.0, t, 0.0],
-        [-1.0, -t, 0.0],
-        [1.0, -t, 0.0],
-        [0.0, -1.0, t],
-        [0.0, 1.0, t],
-        [0.0, -1.0, -t],
-        [0.0, 1.0, -t],
-        [t, 0.0, -1.0],
-        [t, 0.0, 1.0],
-        [-t, 0.0, -1.0],
-        [-t, 0.0, 1.0],
-    ]
-    .to_vec();
-    let mut f: Vec<[usize; 3]> = vec![
-        [0, 11, 5],
-        [0, 5, 1],
-        [0, 1, 7],
-        [0, 7, 10],
-        [0, 10, 11],
-        [1, 5, 9],
-        [5, 11, 4],
-        [11, 10, 2],
-        [10, 7, 6],
-        [7, 1, 8],
-        [3, 9, 4],
-        [3, 4, 2],
-        [3, 2, 6],
-        [3, 6, 8],
-        [3, 8, 9],
-        [4, 9, 5],
-        [2, 4, 11],
-        [6, 2, 10],
-        [8, 6, 7],
-        [9, 8, 1],
-    ];
-    let unit = |p: [f64; 3]| {
-        let l = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt();
-        [p[0] / l, p[1] / l, p[2] / l]
-    };
-    for p in &mut v {
-        *p = unit(*p);
-    }
-    for _ in 0..2 {
-        let mut midpoints = std::collections::HashMap::new();
-        let mut mid = |a: usize, b: usize, v: &mut Vec<[f64; 3]>| {
-            *midpoints.entry((a.min(b), a.max(b))).or_insert_with(|| {
-                let (p, q) = (v[a], v[b]);
-                v.push(unit([p[0] + q[0], p[1] + q[1], p[2] + q[2]]));
-                v.len() - 1
-            })
-        };
-        let mut next = Vec::new();
-        for [a, b, c] in f {
-            let (ab, bc, ca) = (mid(a, b, &mut v), mid(b, c, &mut v), mid(c, a, &mut v));
-            next.extend([[a, ab, ca], [b, bc, ab], [c, ca, bc], [ab, bc, ca]]);
-        }
-        f = next;
-    }
+    let (vertices, triangles) = hscene_test_support::icosphere(2);
     let mut obj = String::new();
-    for p in &v {
-        obj += &format!("v {} {} {}\n", p[0], p[1], p[2]);
+    for p in &vertices {
+        obj += &format!("v {} {} {}\n", p.x, p.y, p.z);
     }
-    for t in &f {
+    for t in &triangles {
         obj += &format!("f {} {} {}\n", t[0] + 1, t[1] + 1, t[2] + 1);
     }
     obj
