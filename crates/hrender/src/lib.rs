@@ -42,6 +42,7 @@ mod noise;
 mod output;
 mod output_check;
 mod prepare;
+mod prepared_object;
 mod ray_budget;
 mod render_loop;
 mod sampling;
