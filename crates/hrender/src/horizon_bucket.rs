@@ -34,3 +34,8 @@ pub fn bucket_of(hit: &Hit, buckets: usize) -> usize {
 pub fn bucket_for_rest(rest: f64, buckets: usize) -> usize {
     ((rest.max(0.0) / STEP).round() as usize).min(buckets.saturating_sub(1))
 }
+
+/// True for the `part` of a honeycomb's horizon hit.
+pub(crate) fn is_horizon(part: u32) -> bool {
+    hgeom::decode_honeycomb_part(part).0 == hgeom::HoneycombPart::Horizon
+}

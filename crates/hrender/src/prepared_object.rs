@@ -7,9 +7,8 @@ use hgeom::{Hit, Isometry, Ray};
 use hscene_ir::view::PixelFootprint;
 use hscene_ir::{self as ir, PartMaterials, Rgb, Surfaces};
 
-use crate::horizon_bucket::{HorizonFill, bucket_of};
+use crate::horizon_bucket::{HorizonFill, bucket_of, is_horizon};
 use crate::image_texture::TextureMapping;
-use crate::scene::is_horizon;
 
 /// An object ready for tracing.
 pub struct PreparedObject {

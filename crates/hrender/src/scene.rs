@@ -19,6 +19,7 @@ use smallvec::SmallVec;
 
 use crate::accel::{Accel, Leaf, Step};
 use crate::error::RenderError;
+use crate::horizon_bucket::is_horizon;
 use crate::image_texture::TextureMapping;
 pub use crate::prepared_object::PreparedObject;
 
@@ -504,11 +505,6 @@ fn textured(scene: &Scene, o: &ir::Object) -> bool {
                 .get(m.index())
                 .is_some_and(|m| m.image.is_some())
         })
-}
-
-/// True for the `part` of a honeycomb's horizon hit.
-pub(crate) fn is_horizon(part: u32) -> bool {
-    hgeom::decode_honeycomb_part(part).0 == hgeom::HoneycombPart::Horizon
 }
 
 /// The hierarchy over every surface of every object: one leaf per Klein

@@ -4,7 +4,8 @@
 use hgeom::Ray;
 use hscene_ir::MAX_SPACE_CROSSINGS;
 
-use crate::scene::{Nearest, PreparedScene, is_horizon};
+use crate::horizon_bucket::is_horizon;
+use crate::scene::{Nearest, PreparedScene};
 
 /// What a ray met, and the ray as it was when it met it.
 #[derive(Clone, Copy, Debug)]
