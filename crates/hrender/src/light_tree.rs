@@ -46,6 +46,30 @@ pub const MAX_LEAF: usize = 8;
 /// The smallest `sinh` of a distance a node's importance divides by.
 const MIN_SINH: f64 = 1e-3;
 
+/// The first item whose running sum of weights exceeds `target` (a
+/// uniform number times their total): with its weight and the running sum
+/// through it. Items of weight 0 are never drawn; rounding may leave
+/// `target` at or past the whole sum, and then the last item with any
+/// weight takes it. The selector's pass over its groups and a leaf's over
+/// its units both draw with it.
+pub(crate) fn draw_by_weight<T>(
+    items: impl IntoIterator<Item = (T, f64)>,
+    target: f64,
+) -> Option<(T, f64, f64)> {
+    let mut sum = 0.0;
+    let mut last = None;
+    for (item, w) in items {
+        if w > 0.0 {
+            sum += w;
+            last = Some((item, w));
+            if target < sum {
+                break;
+            }
+        }
+    }
+    last.map(|(item, w)| (item, w, sum))
+}
+
 /// The bounding ball and power of one unit, as the tree is built from.
 #[derive(Clone, Copy, Debug)]
 pub struct UnitBound {
@@ -265,22 +289,9 @@ impl LightTree {
                     if !(total > 0.0 && total.is_finite()) {
                         return None;
                     }
-                    let target = u * total;
-                    let mut sum = 0.0;
-                    let mut last = None;
-                    for &k in members {
-                        let w = unit(k);
-                        if w > 0.0 {
-                            sum += w;
-                            last = Some((k as usize + self.offset, w));
-                            if target < sum {
-                                break;
-                            }
-                        }
-                    }
-                    // Rounding may leave `target` at or past the running
-                    // sum: the last unit with any importance takes it.
-                    let (k, w) = last?;
+                    let (k, w, _) =
+                        draw_by_weight(members.iter().map(|&k| (k, unit(k))), u * total)?;
+                    let k = k as usize + self.offset;
                     return Some((k, pmf * (w / total)));
                 }
             }
