@@ -203,10 +203,6 @@ impl PathTracer<'_> {
         if last.on == index {
             return 1.0;
         }
-        let point = hit.point;
-        let Some(d) = lorentz::unit_tangent_towards(last.from, point) else {
-            return 1.0;
-        };
         let holding = if e.by_part {
             // A mesh says which triangle it met.
             let t = hit.part as usize;
@@ -215,7 +211,11 @@ impl PathTracer<'_> {
                 .and_then(|(tri, _)| SphericalTriangle::new(last.from, *tri))
                 .map(|solid| (t, solid.solid_angle()))
         } else {
-            holding_triangle(e, last.from, point, d)
+            // Otherwise the triangle is found by the hit's direction.
+            let Some(d) = lorentz::unit_tangent_towards(last.from, hit.point) else {
+                return 1.0;
+            };
+            holding_triangle(e, last.from, hit.point, d)
         };
         match holding {
             Some((t, solid_angle)) => {
